@@ -1,0 +1,57 @@
+#pragma once
+// Our own multilevel graph bisector: heavy-edge matching, greedy graph
+// growing, boundary Fiduccia-Mattheyses refinement, connectivity repair.
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/graph.hpp"
+
+namespace madd {
+
+struct BisectOptions {
+  double target_fraction = 0.5;  // desired share of total vertex weight on side 0
+  double imbalance = 0.03;       // allowed relative deviation from the target (0.03 = 3%)
+  std::uint64_t seed = 1;
+  bool sorted_heavy_edge = false;  // visit vertices by heaviest edge instead of random order
+  int refinement_passes = 8;       // FM passes per level (at most)
+  bool connected = true;           // repair so both sides are connected when the graph is
+  // Pairs of vertices that must end on the same side (e.g. both ends of an
+  // edge that must not be cut; Sec. 4.3 of the MADD paper).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keep_together;
+};
+
+struct Bisection {
+  std::vector<std::uint8_t> side;  // 0 or 1 per vertex
+  double cut = 0.0;                // total weight of edges between the sides
+  double weight[2] = {0.0, 0.0};   // vertex weight on each side
+  bool connected[2] = {true, true};  // each side induces a connected subgraph
+};
+
+// Bisects `graph`. Deterministic for a given graph and options. When the graph
+// is connected and options.connected, both sides are connected; if balance and
+// connectivity conflict, connectivity wins and the achieved weights say so.
+// Graphs with fewer than two vertices give all vertices side 0.
+Bisection bisect(const Graph& graph, const BisectOptions& options = {});
+
+// Recomputes cut, side weights and side connectivity from scratch and
+// compares them with what `bisection` claims.
+Verification verify_bisection(const Graph& graph, const Bisection& bisection);
+
+struct PartitionOptions {
+  double imbalance = 0.03;  // per bisection level
+  std::uint64_t seed = 1;
+  bool connected = false;   // --contig
+};
+
+struct Partition {
+  std::vector<std::uint32_t> part;  // 0..k-1 per vertex
+  double cut = 0.0;
+  std::vector<double> part_weights;
+};
+
+// K-way partition by recursive bisection (the k > 2 mode of `madd partition`).
+Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions& options = {});
+
+} // namespace madd

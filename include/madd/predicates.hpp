@@ -1,0 +1,19 @@
+#pragma once
+// Adaptive-exact geometric predicates, after Shewchuk, "Adaptive Precision
+// Floating-Point Arithmetic and Fast Robust Geometric Predicates" (1997).
+// These two functions are the only place in madd where a geometric sign is
+// decided. The sign of the result is always exact; its magnitude is an
+// approximation of the determinant.
+#include "madd/geometry.hpp"
+
+namespace madd {
+
+// Positive if a, b, c are in counter-clockwise order, negative if clockwise,
+// zero if collinear.
+double orient2d(Point a, Point b, Point c) noexcept;
+
+// Positive if d lies inside the circle through a, b, c (which must be in
+// counter-clockwise order), negative if outside, zero if on it.
+double incircle(Point a, Point b, Point c, Point d) noexcept;
+
+} // namespace madd

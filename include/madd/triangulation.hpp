@@ -1,0 +1,51 @@
+#pragma once
+// Our own constrained Delaunay triangulator (robust predicates, no recursion
+// whose depth grows with the input).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd {
+
+// Triangles are counter-clockwise index triples into `points`. Edge i of a
+// triangle is the edge opposite its vertex i; neighbours[t][i] is the triangle
+// across it (no_index on the outside), and segment_of[t][i] is the input
+// segment the edge lies on (no_index when unconstrained).
+struct Triangulation {
+  std::vector<Point> points;  // the input points, same indices as the input
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::array<std::uint32_t, 3>> neighbours;
+  std::vector<std::array<std::uint32_t, 3>> segment_of;
+
+  std::size_t triangle_count() const noexcept { return triangles.size(); }
+  bool is_constrained(std::uint32_t t, int edge) const noexcept { return segment_of[t][edge] != no_index; }
+  Point circumcentre_of(std::uint32_t t) const noexcept {
+    const auto& v = triangles[t];
+    return circumcentre(points[v[0]], points[v[1]], points[v[2]]);
+  }
+  friend bool operator==(const Triangulation&, const Triangulation&) = default;
+};
+
+// Delaunay triangulation of a point set (its convex hull). Duplicate points
+// are an error (InvalidInputError). Fewer than three non-collinear points give
+// no triangles. Deterministic, O(n log n) expected.
+Triangulation delaunay(std::span<const Point> points);
+
+// Constrained Delaunay triangulation of a validated PSLG, with everything
+// outside the outer boundary and inside holes removed (flood from the hull
+// and the hole points across unconstrained edges only, as Triangle does).
+// A segment passing exactly through a vertex is split there.
+Triangulation triangulate(const Pslg& pslg);
+
+// Independent check of the invariants: orientation, symmetric adjacency, the
+// empty-circle property of every unconstrained interior edge (exact incircle),
+// and, when `pslg` is given, every segment present as a chain of edges and the
+// total area equal to domain_area(pslg).
+Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg = nullptr);
+
+} // namespace madd
