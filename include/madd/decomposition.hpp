@@ -1,0 +1,60 @@
+#pragma once
+// The MADD decomposition (paper Sec. 3-5): options, the result value, and the
+// one free function that does the whole job.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd {
+
+// Table III of the paper, plus the engineering knobs. Angles are in degrees
+// here (the paper's `f` is a fraction of pi: f = min_angle_deg / 180).
+struct Options {
+  std::uint32_t subdomains = 2;     // N
+  double min_angle_deg = 60.0;      // Phi0, criterion C1
+  double refine = 3.0;              // r: uniform refinement factor of the boundary
+  double imbalance = 0.75;          // i: acceptable imbalance during the split (0.6-0.9; see docs/)
+  unsigned threads = 0;             // 0 = hardware concurrency
+  std::uint64_t seed = 1;
+  int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split
+};
+
+// One subdomain, a face of the global subdivision. rings[0] is the outer
+// boundary (counter-clockwise), the others are holes (clockwise). Each ring is
+// a closed cycle of indices into Decomposition::points (first not repeated);
+// ring_segments[r][k] is the segment from rings[r][k] to rings[r][k+1].
+struct Subdomain {
+  std::vector<std::vector<std::uint32_t>> rings;
+  std::vector<std::vector<std::uint32_t>> ring_segments;
+  double area = 0.0;
+  double weight = 0.0;              // density weight (equals area when not grading)
+  Point interior_point;             // strictly inside the subdomain
+  std::vector<Point> hole_points;   // one strictly inside each hole ring
+  friend bool operator==(const Subdomain&, const Subdomain&) = default;
+};
+
+// A conforming planar subdivision of the domain: every vertex and segment,
+// shared by the subdomains on both sides. No T-junctions.
+struct Decomposition {
+  std::vector<Point> points;        // the input's points first, same indices, then new ones
+  std::vector<Segment> segments;    // marker 0 = separator; boundary pieces keep the input
+                                    // marker, or 1 where it was 0 or absent
+  std::vector<std::uint32_t> segment_origin;  // input segment a piece comes from, no_index for separators
+  std::vector<Point> holes;         // the input's hole points
+  std::vector<Subdomain> subdomains;
+  double min_angle_deg = 60.0;      // the Phi0 it was built with
+  friend bool operator==(const Decomposition&, const Decomposition&) = default;
+
+  bool is_separator(std::uint32_t segment) const { return segment_origin[segment] == no_index; }
+};
+
+// Decomposes a validated domain into options.subdomains connected subdomains
+// (Algorithm 4). Every new angle is >= options.min_angle_deg. Deterministic:
+// the result is identical for any thread count. Throws DecompositionError
+// naming the subdomain that could not be split; never returns a partial result.
+Decomposition decompose(const Pslg& domain, const Options& options = {});
+
+} // namespace madd
