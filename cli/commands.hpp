@@ -1,0 +1,40 @@
+#pragma once
+// The CLI's subcommands and exit codes. Each subcommand lives in its own
+// cli/cmd_<name>.cpp and registers itself; main.cpp only dispatches.
+#include <string>
+
+namespace madd::cli {
+
+// Exit codes, documented in `madd --help` and docs/cli.md.
+enum ExitCode : int {
+  exit_ok = 0,
+  exit_usage = 2,          // bad command line
+  exit_bad_input = 3,      // unreadable or invalid input file
+  exit_decompose_failed = 4,  // no valid decomposition exists at these settings
+  exit_io = 5,             // an output could not be written
+  exit_limit = 6,          // --time-limit or --max-memory reached
+  exit_internal = 70,      // a bug: an unexpected exception or failed self-check
+};
+
+using CommandFn = int (*)(int argc, char** argv);
+
+struct Command {
+  const char* name;
+  const char* summary;  // one line for `madd --help`
+  CommandFn run;        // argv[0] is the command name; getopt-style parsing inside
+};
+
+struct CommandRegistration {
+  explicit CommandRegistration(Command command);
+};
+
+// Runs `body`, mapping madd's typed errors to exit codes and printing one
+// "madd: message" line on stderr. Every subcommand wraps its work in this.
+int run_guarded(const char* command, int (*body)(void*), void* context);
+
+// Prints "madd <command>: message" on stderr and returns exit_usage.
+int usage_error(const char* command, const std::string& message);
+
+const char* version_string() noexcept;
+
+} // namespace madd::cli

@@ -1,0 +1,108 @@
+// madd's entry point: global options, then dispatch to a subcommand.
+// Decomposition is the default mode: `madd [options] INPUT.poly`.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <map>
+#include <new>
+#include <string>
+
+#include "commands.hpp"
+#include "madd/error.hpp"
+
+namespace madd::cli {
+
+namespace {
+std::map<std::string, Command>& commands() {
+  static std::map<std::string, Command> registry;
+  return registry;
+}
+
+void print_help() {
+  std::printf(
+      "madd %s - Medial Axis Domain Decomposition for parallel mesh generation\n\n"
+      "usage: madd [options] INPUT.poly          decompose (the default mode; see madd decompose --help)\n"
+      "       madd COMMAND [options] ARGS...\n"
+      "       madd --help | --version\n\n"
+      "commands:\n",
+      version_string());
+  for (const auto& [name, command] : commands()) std::printf("  %-12s %s\n", name.c_str(), command.summary);
+  std::printf(
+      "\nEach command takes --help.\n\n"
+      "exit codes:\n"
+      "  0   success\n"
+      "  2   usage error (bad command line)\n"
+      "  3   bad input (unreadable, malformed or invalid file; the message says path:line:column)\n"
+      "  4   decomposition failed (no split meets the minimum angle; names the subdomain)\n"
+      "  5   an output file could not be written\n"
+      "  6   a resource limit was reached\n"
+      "  70  internal error (a bug: please report it with the input)\n");
+}
+} // namespace
+
+CommandRegistration::CommandRegistration(Command command) { commands()[command.name] = command; }
+
+const char* version_string() noexcept {
+#ifdef MADD_CLI_VERSION
+  return MADD_CLI_VERSION;
+#else
+  return "0.1.0";
+#endif
+}
+
+int usage_error(const char* command, const std::string& message) {
+  std::fprintf(stderr, "madd %s: %s\n(try 'madd %s --help')\n", command, message.c_str(), command);
+  return exit_usage;
+}
+
+int run_guarded(const char* command, int (*body)(void*), void* context) {
+  try {
+    return body(context);
+  } catch (const ParseError& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_bad_input;
+  } catch (const InvalidInputError& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_bad_input;
+  } catch (const DecompositionError& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_decompose_failed;
+  } catch (const LimitError& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_limit;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_io;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "madd %s: error: out of memory\n", command);
+    return exit_limit;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "madd %s: internal error: %s\n", command, e.what());
+    return exit_internal;
+  }
+}
+
+} // namespace madd::cli
+
+int main(int argc, char** argv) {
+  using namespace madd::cli;
+  auto& registry = commands();
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    print_help();
+    return argc < 2 ? exit_usage : exit_ok;
+  }
+  if (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-V") == 0) {
+    std::printf("madd %s\n", version_string());
+    return exit_ok;
+  }
+  auto it = registry.find(argv[1]);
+  if (it != registry.end()) return it->second.run(argc - 1, argv + 1);
+  // Default mode: decomposition with the whole command line as its arguments.
+  auto decompose = registry.find("decompose");
+  if (decompose == registry.end()) {
+    std::fprintf(stderr, "madd: unknown command '%s' (try 'madd --help')\n", argv[1]);
+    return exit_usage;
+  }
+  argv[0] = const_cast<char*>("decompose");
+  return decompose->second.run(argc, argv);
+}
