@@ -1,0 +1,71 @@
+// Heavy-edge matching and the coarsening loop of the multilevel bisector.
+#include "coarsen.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace madd::detail {
+
+namespace {
+
+// Visit order for the sorted variant: heaviest incident edge first; ties keep
+// the random order, so the result still depends only on the seed.
+std::vector<std::uint32_t> sorted_order(const Graph& graph, std::vector<std::uint32_t> order) {
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  std::vector<double> heaviest(n, 0.0);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    for (std::uint32_t i = graph.offsets[v]; i < graph.offsets[v + 1]; ++i)
+      heaviest[v] = std::max(heaviest[v], graph.edge_weights[i]);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return heaviest[a] > heaviest[b]; });
+  return order;
+}
+
+} // namespace
+
+Matching heavy_edge_matching(const Graph& graph, SplitMix64& rng, bool sorted, double max_vertex_weight) {
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  std::vector<std::uint32_t> order = random_permutation(n, rng);
+  if (sorted) order = sorted_order(graph, std::move(order));
+  Matching m;
+  m.map.assign(n, no_vertex);
+  for (const std::uint32_t v : order) {
+    if (m.map[v] != no_vertex) continue;
+    std::uint32_t best = no_vertex;
+    double best_weight = -1.0;
+    const double room = max_vertex_weight - graph.vertex_weights[v];
+    for (std::uint32_t i = graph.offsets[v]; i < graph.offsets[v + 1]; ++i) {
+      const std::uint32_t u = graph.adjacency[i];
+      if (m.map[u] != no_vertex || graph.edge_weights[i] <= best_weight) continue;
+      if (graph.vertex_weights[u] > room) continue;
+      best = u;
+      best_weight = graph.edge_weights[i];
+    }
+    m.map[v] = m.coarse_count;
+    if (best != no_vertex) m.map[best] = m.coarse_count;
+    ++m.coarse_count;
+  }
+  return m;
+}
+
+Hierarchy coarsen(const Graph& graph, SplitMix64& rng, const CoarsenOptions& options) {
+  Hierarchy h;
+  const double total = std::accumulate(graph.vertex_weights.begin(), graph.vertex_weights.end(), 0.0);
+  // METIS's bound: no coarse vertex heavier than 1.5 W / coarsen_to, so the
+  // coarsest graph still has enough pieces to balance.
+  const double max_vertex_weight = 1.5 * total / static_cast<double>(std::max(options.coarsen_to, 1u));
+  const Graph* current = &graph;
+  while (current->vertex_count() > options.coarsen_to) {
+    const auto n = static_cast<double>(current->vertex_count());
+    Matching m = heavy_edge_matching(*current, rng, options.sorted_heavy_edge, max_vertex_weight);
+    if (m.coarse_count == current->vertex_count()) break;  // nothing matched
+    h.graphs.push_back(contract(*current, m.map, m.coarse_count));
+    h.maps.push_back(std::move(m.map));
+    current = &h.graphs.back();
+    if (static_cast<double>(m.coarse_count) > (1.0 - options.min_shrink) * n) break;
+  }
+  return h;
+}
+
+} // namespace madd::detail
