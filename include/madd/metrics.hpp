@@ -1,0 +1,83 @@
+#pragma once
+// The quality figures of a decomposition (criteria C1-C3 of the paper, Sec. 1
+// and Sec. 7; docs/QUALITY.md) and the independent validity check.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd {
+
+// Wall time of one phase of a run ("read", "decompose", "verify", "write"...).
+struct PhaseTime {
+  std::string name;
+  double seconds = 0.0;
+  friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
+};
+
+// Every figure of QUALITY.md. Angles in degrees. A figure that does not exist
+// for this decomposition (no new angle when N = 1, no separator) is NaN.
+// Quantiles follow Python's statistics.quantiles(n=10) ("exclusive" method),
+// as shared/tools/ddcheck.py does, so both tools print the same numbers.
+struct Metrics {
+  std::uint32_t subdomains = 0;
+  std::uint32_t points = 0;
+  std::uint32_t segments = 0;
+  std::uint32_t separator_segments = 0;
+  double domain_area = 0.0;            // sum of the subdomains' ring areas
+  double mean_area = 0.0;
+  double min_angle_bound_deg = 0.0;    // the Phi0 the decomposition was built with
+
+  // C1: interior angles at subdomain corners where at least one edge is a separator.
+  std::uint32_t new_angles = 0;
+  double angle_min = 0.0;
+  double angle_p10 = 0.0;
+  double angle_median = 0.0;
+  double angle_p90 = 0.0;
+  // The new angles whose corner lies on the original boundary.
+  std::uint32_t boundary_angles = 0;
+  double boundary_angle_min = 0.0;
+  double boundary_angle_median = 0.0;
+
+  // C2: separator size.
+  double separator_length = 0.0;
+  double separator_length_norm = 0.0;          // / sqrt(domain area)
+  double mean_separator_per_subdomain = 0.0;   // each subdomain's separator boundary, averaged
+  double max_separator_over_area_norm = 0.0;   // max_s sep_len(s)/area(s) * sqrt(mean area)
+
+  // C3: balance.
+  double max_area_over_mean = 0.0;
+  double min_area_over_mean = 0.0;
+  double max_weight_over_mean = 0.0;
+  double min_weight_over_mean = 0.0;
+
+  // Shortest new segment (separator, or piece of a split boundary segment) / sqrt(mean area).
+  double shortest_new_segment_norm = 0.0;
+
+  std::vector<PhaseTime> times;
+};
+
+// Computes every figure from the decomposition alone (areas from the rings).
+// Precondition: the rings are well formed (verify_decomposition passes).
+Metrics metrics(const Decomposition& decomposition, std::vector<PhaseTime> times = {});
+
+// Quantile q (1..9) of 10 over `sorted` values, Python's "exclusive" method.
+// NaN when fewer than two values.
+double decile(const std::vector<double>& sorted, int q);
+
+// Recomputes every invariant of a decomposition of `domain` into
+// `expected_count` subdomains: full cover (area sum = domain_area, rel 1e-9),
+// no two segments crossing, overlapping or touching except at shared endpoints
+// (exact, orient2d, uniform grid), one CCW outer ring per subdomain with CW
+// holes inside it, conforming (each separator in two rings in opposite
+// directions, each boundary piece in one, no T-junctions), boundary pieces
+// exactly covering the input segments with the right markers, every new angle
+// >= decomposition.min_angle_deg - 1e-9 deg, interior and hole points strictly
+// inside. Never throws on a malformed decomposition: it reports problems.
+Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,
+                                  std::uint32_t expected_count);
+
+} // namespace madd

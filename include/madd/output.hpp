@@ -1,0 +1,57 @@
+#pragma once
+// The views of a Decomposition as files (docs/formats.md, outputs 1-5). Every
+// format_* function returns the whole text, so a caller can produce all its
+// outputs before writing any; the write_* functions never leave partial output.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/metrics.hpp"
+
+namespace madd {
+
+// Output 1: the whole subdivision as one Triangle .poly (1-based ids, %.17g):
+// every point, every segment (boundary pieces keep their marker, separators 0),
+// the original holes, and one region per subdomain at its interior_point with
+// attribute = subdomain number and max area -1, so `triangle -pA` labels triangles.
+std::string format_decomposition_poly(const Decomposition& decomposition, std::string_view header_comment = {});
+
+// Output 2, one file: subdomain `k` as a standalone .poly (1-based ids, its
+// ring vertices and segments with their global markers, one hole point per
+// hole ring). Shared points are written with the same %.17g text everywhere.
+// Precondition: k < decomposition.subdomains.size().
+std::string format_subdomain_poly(const Decomposition& decomposition, std::uint32_t k);
+
+// File name of subdomain k in output 2: "<stem>-<k>.poly" with k zero-padded
+// to the number of digits of count-1.
+std::string split_file_name(std::string_view stem, std::uint32_t k, std::uint32_t count);
+
+// Output 2: writes every subdomain's .poly into directory `dir` (created when
+// missing). All files are staged in a temporary sibling directory first; on
+// any failure nothing in `dir` changes. Files of an earlier run named
+// "<stem>-<digits>.poly" that this run does not produce are removed, so the
+// directory holds exactly this decomposition. Throws Error on I/O failure.
+void write_split(const Decomposition& decomposition, const std::string& dir, std::string_view stem);
+
+// Output 3: the paper's subdomain file (Sec. 6): points, segments with
+// markers, subdomains (number, area, weight, bounding segment ids ring by
+// ring), and each subdomain's hole points. Layout in docs/formats.md.
+std::string format_subdomain_file(const Decomposition& decomposition);
+
+struct SvgOptions {
+  double width = 1000.0;             // pixels of the longer side; the aspect ratio is kept
+  bool numbers = false;              // write each subdomain's number at its interior point
+  double mark_angles_below_deg = 0;  // circle every new angle below this (0 = none)
+};
+
+// Output 4: an SVG picture: one <path> per subdomain (fill-rule evenodd, so
+// holes stay empty), the original boundary thick, separators thin, y pointing
+// up as in the input. Size is linear in the decomposition (compact numbers).
+std::string format_svg(const Decomposition& decomposition, const SvgOptions& options = {});
+
+// Output 5: every figure of `m` as one JSON object (NaN figures as null).
+std::string format_report_json(const Metrics& m);
+
+} // namespace madd

@@ -1,0 +1,56 @@
+#pragma once
+// Ring geometry shared by metrics() and verify_decomposition().
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+
+namespace madd::detail {
+
+// Signed area of a closed ring of point indices (positive when CCW), summed
+// relative to the first vertex to keep the products small.
+inline double ring_signed_area(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring) {
+  if (ring.size() < 3) return 0.0;
+  const Point o = points[ring[0]];
+  double twice = 0.0;
+  for (std::size_t k = 1; k + 1 < ring.size(); ++k) twice += cross(points[ring[k]] - o, points[ring[k + 1]] - o);
+  return 0.5 * twice;
+}
+
+// Interior angle in degrees, in [0, 360), at `at` of a ring walked with the
+// interior on its left (outer rings CCW, hole rings CW): the counter-clockwise
+// turn from the outgoing edge to the reversed incoming edge.
+inline double interior_angle_deg(Point prev, Point at, Point next) {
+  const Point out = next - at;
+  const Point back = prev - at;
+  double a = std::atan2(cross(out, back), dot(out, back));
+  if (a < 0.0) a += 2.0 * std::numbers::pi;
+  return degrees(a);
+}
+
+// Calls f(subdomain, ring, k, angle_deg) for every corner k of every ring
+// where the incoming or the outgoing segment is a separator (a "new angle").
+template <class F>
+void for_each_new_angle(const Decomposition& d, F&& f) {
+  for (std::uint32_t s = 0; s < d.subdomains.size(); ++s) {
+    const Subdomain& sub = d.subdomains[s];
+    for (std::uint32_t r = 0; r < sub.rings.size(); ++r) {
+      const auto& ring = sub.rings[r];
+      const auto& segs = sub.ring_segments[r];
+      const std::size_t n = ring.size();
+      if (n < 3 || segs.size() != n) continue;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t in = segs[(k + n - 1) % n];
+        const std::uint32_t out = segs[k];
+        if (!d.is_separator(in) && !d.is_separator(out)) continue;
+        const double angle =
+            interior_angle_deg(d.points[ring[(k + n - 1) % n]], d.points[ring[k]], d.points[ring[(k + 1) % n]]);
+        f(s, r, static_cast<std::uint32_t>(k), angle);
+      }
+    }
+  }
+}
+
+} // namespace madd::detail

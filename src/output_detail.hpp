@@ -1,0 +1,22 @@
+#pragma once
+// Number formatting shared by the output writers.
+#include <charconv>
+#include <cstdint>
+#include <string>
+
+namespace madd::detail {
+
+// Appends v as %.17g would (round-trips exactly), without the locale.
+inline void append_g17(std::string& out, double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17);
+  out.append(buffer, result.ptr);
+}
+
+inline void append_int(std::string& out, std::int64_t v) {
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  out.append(buffer, result.ptr);
+}
+
+} // namespace madd::detail

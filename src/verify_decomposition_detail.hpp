@@ -1,0 +1,41 @@
+#pragma once
+// Internals of verify_decomposition(), split by concern.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd::detail {
+
+// Collects problems up to a cap, so that a badly broken decomposition gives a
+// readable report instead of millions of lines.
+class ProblemLog {
+public:
+  explicit ProblemLog(Verification& out, std::size_t cap = 40) : out_(out), cap_(cap) {}
+  void add(std::string problem);
+  void finish();  // appends "... and K more" when problems were dropped
+  std::size_t count() const noexcept { return count_; }
+
+private:
+  Verification& out_;
+  std::size_t cap_;
+  std::size_t count_ = 0;
+};
+
+// Reports every pair of segments that cross, overlap, or touch anywhere other
+// than a shared endpoint (including a vertex in the interior of a segment:
+// a T-junction). Exact (orient2d); a uniform grid keeps it near-linear.
+void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
+                             ProblemLog& log);
+
+// Exact point-in-ring test: 1 strictly inside, 0 on the ring, -1 outside
+// (nonzero winding number, orient2d for every sign).
+int locate_in_ring(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring, Point p);
+
+// "(x, y)" with full precision, for messages.
+std::string point_text(Point p);
+std::string number_text(double v);
+
+} // namespace madd::detail
