@@ -1,0 +1,274 @@
+// `madd decompose [options] INPUT.poly` (also the default mode): read a
+// domain, decompose it (paper Algorithm 4), self-check, write the outputs.
+#include <getopt.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "madd/decomposition.hpp"
+#include "madd/metrics.hpp"
+#include "madd/output.hpp"
+#include "madd/poly_io.hpp"
+
+namespace madd::cli {
+namespace {
+
+constexpr const char* decompose_help =
+    "usage: madd [decompose] [options] INPUT.poly\n\n"
+    "Splits the domain of INPUT.poly (Triangle .poly: outer boundary and holes) into N\n"
+    "subdomains with the Medial Axis Domain Decomposition: every new angle >= the minimum\n"
+    "angle, short separators, balanced areas. The result is self-checked before anything\n"
+    "is written.\n\n"
+    "decomposition:\n"
+    "  -n, --subdomains N     number of subdomains (default 2)\n"
+    "      --min-angle DEG    smallest angle a separator may make (Phi0; default 60, < 90)\n"
+    "  -r, --refine R         uniform boundary refinement factor (default 3)\n"
+    "  -i, --imbalance I      acceptable imbalance during a split, 0 < I <= 1 (default 0.75)\n"
+    "  -j, --threads J        worker threads, 0 = all cores (default 0); the result is identical\n"
+    "      --seed S           random seed (default 1)\n\n"
+    "outputs (none by default; see docs/formats.md):\n"
+    "  -o FILE.poly           the whole decomposition as one .poly, one region per subdomain\n"
+    "      --split DIR        one .poly per subdomain: DIR/<stem>-<k>.poly\n"
+    "      --subdomains-file FILE  the paper's subdomain file\n"
+    "      --svg FILE.svg     a picture\n"
+    "      --svg-numbers      write subdomain numbers in the picture\n"
+    "      --svg-mark-angles DEG   circle the new angles below DEG in the picture\n"
+    "      --report[=FILE]    the quality figures as JSON (on stdout without FILE)\n\n"
+    "  -q, --quiet            print nothing on success\n"
+    "  -v, --verbose          print every quality figure and the phase times\n"
+    "  -h, --help             this text\n\n"
+    "exit codes: 0 success, 2 usage error, 3 bad input, 4 no valid decomposition at these\n"
+    "settings (names the subdomain), 5 an output could not be written, 70 internal error\n"
+    "(the self-check failed; nothing was written)\n";
+
+struct DecomposeArgs {
+  std::string input;
+  Options options;
+  std::string poly_out, split_dir, subdomains_out, svg_out, report_out;
+  bool report = false;
+  SvgOptions svg;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The input's file name without directories and without .poly/.node.
+std::string stem_of(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  for (const char* ext : {".poly", ".node"}) {
+    const std::string e = ext;
+    if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
+      return name.substr(0, name.size() - e.size());
+  }
+  return name;
+}
+
+// A one-line progress note on stderr, only for a terminal (DESIGN.md).
+class Progress {
+public:
+  explicit Progress(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
+  void say(const std::string& text) {
+    if (enabled_) std::fprintf(stderr, "\r\033[Kmadd: %s", text.c_str());
+  }
+  void done() {
+    if (enabled_) std::fputs("\r\033[K", stderr);
+  }
+
+private:
+  bool enabled_;
+};
+
+void print_summary(std::FILE* out, const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
+  std::fprintf(out, "%s: %zu subdomains, %zu points, %zu segments (%u separator)\n", args.input.c_str(),
+               d.subdomains.size(), d.points.size(), d.segments.size(), m.separator_segments);
+  std::fprintf(out, "  C1 new angles: min %.2f deg (bound %.2f), median %.2f, at boundary median %.2f\n", m.angle_min,
+               m.min_angle_bound_deg, m.angle_median, m.boundary_angle_median);
+  std::fprintf(out, "  C2 separator length %.6g (%.4g x sqrt(area))\n", m.separator_length, m.separator_length_norm);
+  std::fprintf(out, "  C3 area max/mean %.4f, min/mean %.4f\n", m.max_area_over_mean, m.min_area_over_mean);
+  if (args.verbose) {
+    std::fprintf(out, "  new angles %u: p10 %.4f, p90 %.4f; at boundary %u, min %.4f\n", m.new_angles, m.angle_p10,
+                 m.angle_p90, m.boundary_angles, m.boundary_angle_min);
+    std::fprintf(out, "  separator per subdomain %.6g, max sep/area x sqrt(mean area) %.4f\n",
+                 m.mean_separator_per_subdomain, m.max_separator_over_area_norm);
+    std::fprintf(out, "  weight max/mean %.4f, min/mean %.4f; shortest new segment / sqrt(mean area) %.4g\n",
+                 m.max_weight_over_mean, m.min_weight_over_mean, m.shortest_new_segment_norm);
+    for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-10s %.3f s\n", t.name.c_str(), t.seconds);
+  }
+  for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.report_out})
+    if (!file->empty()) std::fprintf(out, "  wrote %s\n", file->c_str());
+  if (!args.split_dir.empty())
+    std::fprintf(out, "  wrote %s/%s\n", args.split_dir.c_str(),
+                 split_file_name(stem_of(args.input), 0, static_cast<std::uint32_t>(d.subdomains.size())).c_str());
+}
+
+// Every output is formatted in memory first, then written file by file
+// (each atomically); the split directory is staged as a whole.
+void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
+  const std::string poly = args.poly_out.empty() ? std::string() : format_decomposition_poly(d, "made by madd from " + args.input);
+  const std::string table = args.subdomains_out.empty() ? std::string() : format_subdomain_file(d);
+  const std::string svg = args.svg_out.empty() ? std::string() : format_svg(d, args.svg);
+  const std::string report = args.report ? format_report_json(m) : std::string();
+  if (!args.poly_out.empty()) write_file_atomically(args.poly_out, poly);
+  if (!args.subdomains_out.empty()) write_file_atomically(args.subdomains_out, table);
+  if (!args.svg_out.empty()) write_file_atomically(args.svg_out, svg);
+  if (!args.split_dir.empty()) write_split(d, args.split_dir, stem_of(args.input));
+  if (args.report && !args.report_out.empty()) write_file_atomically(args.report_out, report);
+  if (args.report && args.report_out.empty()) {
+    std::fputs(report.c_str(), stdout);
+    std::fflush(stdout);
+  }
+}
+
+int decompose_body(void* context) {
+  const auto& args = *static_cast<DecomposeArgs*>(context);
+  Progress progress(!args.quiet);
+  std::vector<PhaseTime> times;
+  auto start = std::chrono::steady_clock::now();
+  progress.say("reading " + args.input);
+  const Pslg domain = read_domain(args.input);
+  times.push_back({"read", seconds_since(start)});
+
+  start = std::chrono::steady_clock::now();
+  progress.say("decomposing into " + std::to_string(args.options.subdomains) + " subdomains");
+  const Decomposition d = decompose(domain, args.options);
+  times.push_back({"decompose", seconds_since(start)});
+
+  start = std::chrono::steady_clock::now();
+  progress.say("verifying");
+  const Verification check = verify_decomposition(d, domain, args.options.subdomains);
+  times.push_back({"verify", seconds_since(start)});
+  if (!check.ok()) {
+    progress.done();
+    std::fprintf(stderr, "madd decompose: internal error: the decomposition of %s failed its self-check "
+                 "(nothing written):\n", args.input.c_str());
+    for (const std::string& problem : check.problems) std::fprintf(stderr, "  %s\n", problem.c_str());
+    return exit_internal;
+  }
+  const Metrics m = metrics(d, times);
+  progress.say("writing");
+  write_outputs(args, d, m);
+  progress.done();
+  const bool report_on_stdout = args.report && args.report_out.empty();
+  if (!args.quiet) print_summary(report_on_stdout ? stderr : stdout, args, d, m);
+  return exit_ok;
+}
+
+bool parse_number(const char* text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text, &end);
+  return end != text && *end == '\0' && std::isfinite(value);
+}
+
+bool parse_count(const char* text, unsigned long long limit, unsigned long long& value) {
+  if (text[0] < '0' || text[0] > '9') return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoull(text, &end, 10);
+  return *end == '\0' && errno == 0 && value <= limit;
+}
+
+enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
+                      opt_svg_mark, opt_report };
+
+// Applies one option to args; returns an error message, or empty on success.
+std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
+  double x = 0;
+  unsigned long long k = 0;
+  switch (c) {
+  case 'n':
+    if (!parse_count(arg, 0xFFFFFFFFull, k) || k == 0) return "--subdomains needs a whole number >= 1";
+    args.options.subdomains = static_cast<std::uint32_t>(k);
+    return {};
+  case opt_min_angle:
+    if (!parse_number(arg, x) || x < 0 || x >= 90) return "--min-angle needs degrees in [0, 90)";
+    args.options.min_angle_deg = x;
+    return {};
+  case 'r':
+    if (!parse_number(arg, x) || x <= 0) return "--refine needs a number > 0";
+    args.options.refine = x;
+    return {};
+  case 'i':
+    if (!parse_number(arg, x) || x <= 0 || x > 1) return "--imbalance needs a number in (0, 1]";
+    args.options.imbalance = x;
+    return {};
+  case 'j':
+    if (!parse_count(arg, 4096, k)) return "--threads needs a whole number in [0, 4096]";
+    args.options.threads = static_cast<unsigned>(k);
+    return {};
+  case opt_seed:
+    if (!parse_count(arg, ~0ull, k)) return "--seed needs a whole number";
+    args.options.seed = k;
+    return {};
+  case 'o': args.poly_out = arg; return {};
+  case opt_split: args.split_dir = arg; return {};
+  case opt_subdomains_file: args.subdomains_out = arg; return {};
+  case opt_svg: args.svg_out = arg; return {};
+  case opt_svg_numbers: args.svg.numbers = true; return {};
+  case opt_svg_mark:
+    if (!parse_number(arg, x) || x <= 0 || x > 180) return "--svg-mark-angles needs degrees in (0, 180]";
+    args.svg.mark_angles_below_deg = x;
+    return {};
+  case opt_report:
+    args.report = true;
+    args.report_out = arg != nullptr ? arg : "";
+    return {};
+  case 'q': args.quiet = true; return {};
+  case 'v': args.verbose = true; return {};
+  default: return "unknown option";
+  }
+}
+
+int run_decompose(int argc, char** argv) {
+  static const option long_options[] = {
+      {"subdomains", required_argument, nullptr, 'n'},
+      {"min-angle", required_argument, nullptr, opt_min_angle},
+      {"refine", required_argument, nullptr, 'r'},
+      {"imbalance", required_argument, nullptr, 'i'},
+      {"threads", required_argument, nullptr, 'j'},
+      {"seed", required_argument, nullptr, opt_seed},
+      {"output", required_argument, nullptr, 'o'},
+      {"split", required_argument, nullptr, opt_split},
+      {"subdomains-file", required_argument, nullptr, opt_subdomains_file},
+      {"svg", required_argument, nullptr, opt_svg},
+      {"svg-numbers", no_argument, nullptr, opt_svg_numbers},
+      {"svg-mark-angles", required_argument, nullptr, opt_svg_mark},
+      {"report", optional_argument, nullptr, opt_report},
+      {"quiet", no_argument, nullptr, 'q'},
+      {"verbose", no_argument, nullptr, 'v'},
+      {"help", no_argument, nullptr, 'h'},
+      {nullptr, 0, nullptr, 0}};
+  DecomposeArgs args;
+  optind = 0;
+  opterr = 0;
+  int c;
+  while ((c = getopt_long(argc, argv, ":n:r:i:j:o:qvh", long_options, nullptr)) != -1) {
+    if (c == 'h') {
+      std::fputs(decompose_help, stdout);
+      return exit_ok;
+    }
+    if (c == '?') return usage_error("decompose", std::string("unknown option '") + argv[optind - 1] + "'");
+    if (c == ':') return usage_error("decompose", std::string("option '") + argv[optind - 1] + "' needs a value");
+    const std::string problem = apply_option(c, optarg, args);
+    if (!problem.empty()) return usage_error("decompose", problem + (optarg ? std::string(", got '") + optarg + "'" : ""));
+  }
+  if (optind + 1 != argc) return usage_error("decompose", "expected exactly one input file");
+  args.input = argv[optind];
+  if (args.quiet && args.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");
+  return run_guarded("decompose", decompose_body, &args);
+}
+
+const CommandRegistration registration({"decompose", "split a domain into N subdomains (the default mode)",
+                                        run_decompose});
+
+} // namespace
+} // namespace madd::cli
