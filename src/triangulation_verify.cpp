@@ -1,0 +1,142 @@
+// verify_triangulation: recomputes every invariant of a Triangulation from
+// scratch, sharing no code with the builder, so a builder bug cannot hide.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "madd/predicates.hpp"
+#include "madd/triangulation.hpp"
+
+namespace madd {
+
+namespace {
+
+struct DirectedEdge {
+  std::uint32_t from, to, tri, edge;
+  bool operator<(const DirectedEdge& o) const noexcept {
+    return from < o.from || (from == o.from && (to < o.to || (to == o.to && tri < o.tri)));
+  }
+};
+
+constexpr std::size_t max_reported = 20;
+
+void report(Verification& v, const std::string& problem) {
+  if (v.problems.size() < max_reported) v.add(problem);
+}
+
+std::string tri_name(std::size_t t) { return "triangle " + std::to_string(t); }
+
+bool check_shapes(const Triangulation& tri, Verification& v) {
+  const std::size_t nt = tri.triangles.size();
+  if (tri.neighbours.size() != nt || tri.segment_of.size() != nt) {
+    v.add("triangles, neighbours and segment_of differ in size");
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto& c = tri.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      if (c[i] >= tri.points.size()) {
+        report(v, tri_name(t) + " has an out-of-range vertex");
+        ok = false;
+      }
+      if (tri.neighbours[t][i] != no_index && tri.neighbours[t][i] >= nt) {
+        report(v, tri_name(t) + " has an out-of-range neighbour");
+        ok = false;
+      }
+    }
+  }
+  return ok;
+}
+
+void check_orientation(const Triangulation& tri, Verification& v) {
+  for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
+    const auto& c = tri.triangles[t];
+    if (!(orient2d(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]) > 0)) {
+      report(v, tri_name(t) + " is not strictly counter-clockwise");
+    }
+  }
+}
+
+// Each directed edge appears once; an edge is shared by exactly the two
+// triangles that name each other as neighbours, with equal segment_of.
+void check_adjacency(const Triangulation& tri, Verification& v) {
+  std::vector<DirectedEdge> edges;
+  edges.reserve(3 * tri.triangles.size());
+  for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
+    const auto& c = tri.triangles[t];
+    for (std::uint32_t i = 0; i < 3; ++i) edges.push_back({c[(i + 1) % 3], c[(i + 2) % 3], t, i});
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t k = 1; k < edges.size(); ++k) {
+    if (edges[k].from == edges[k - 1].from && edges[k].to == edges[k - 1].to) {
+      report(v, "edge " + std::to_string(edges[k].from) + "-" + std::to_string(edges[k].to) + " is used twice");
+    }
+  }
+  for (const DirectedEdge& e : edges) {
+    const DirectedEdge key{e.to, e.from, 0, 0};
+    auto it = std::lower_bound(edges.begin(), edges.end(), key);
+    const bool has_twin = it != edges.end() && it->from == e.to && it->to == e.from;
+    const std::uint32_t nb = tri.neighbours[e.tri][e.edge];
+    if (!has_twin) {
+      if (nb != no_index) report(v, tri_name(e.tri) + " names a neighbour across an unshared edge");
+      continue;
+    }
+    if (nb != it->tri || tri.neighbours[it->tri][it->edge] != e.tri) {
+      report(v, tri_name(e.tri) + " and " + tri_name(it->tri) + " share an edge but are not mutual neighbours");
+    } else if (tri.segment_of[e.tri][e.edge] != tri.segment_of[it->tri][it->edge]) {
+      report(v, tri_name(e.tri) + " and " + tri_name(it->tri) + " disagree on segment_of");
+    }
+  }
+}
+
+// Empty circle: across every unconstrained interior edge the opposite vertex
+// is not strictly inside the circumcircle.
+void check_delaunay(const Triangulation& tri, Verification& v) {
+  for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
+    const auto& c = tri.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = tri.neighbours[t][i];
+      if (u == no_index || tri.segment_of[t][i] != no_index) continue;
+      const auto& d = tri.triangles[u];
+      const std::uint32_t a = c[(i + 1) % 3], b = c[(i + 2) % 3];
+      for (const std::uint32_t w : d) {
+        if (w == a || w == b) continue;
+        if (incircle(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]], tri.points[w]) > 0) {
+          report(v, "edge " + std::to_string(a) + "-" + std::to_string(b) + " of " + tri_name(t) +
+                        " is not locally Delaunay");
+        }
+      }
+    }
+  }
+}
+
+} // namespace
+
+namespace detail {
+void check_segments(const Triangulation& tri, const Pslg& pslg, Verification& v);
+} // namespace detail
+
+Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg) {
+  Verification v;
+  if (!check_shapes(tri, v)) return v;
+  check_orientation(tri, v);
+  check_adjacency(tri, v);
+  check_delaunay(tri, v);
+  if (pslg != nullptr) {
+    if (pslg->points != tri.points) v.add("the triangulation's points differ from the PSLG's");
+    detail::check_segments(tri, *pslg, v);
+    long double area = 0;
+    for (const auto& c : tri.triangles) {
+      area += static_cast<long double>(signed_area(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]));
+    }
+    const double expected = domain_area(*pslg);
+    const double got = static_cast<double>(area);
+    if (!(std::abs(got - expected) <= 1e-9 * std::max(std::abs(expected), 1e-300))) {
+      v.add("total area " + std::to_string(got) + " differs from the domain area " + std::to_string(expected));
+    }
+  }
+  return v;
+}
+
+} // namespace madd

@@ -1,0 +1,341 @@
+// Tests for delaunay(), triangulate() and verify_triangulation(): brute-force
+// checks on small inputs, degenerate inputs, constrained domains with holes.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/poly_io.hpp"
+#include "madd/predicates.hpp"
+#include "madd/triangulation.hpp"
+
+namespace {
+
+using madd::Point;
+
+std::vector<Point> random_points(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> pts(n);
+  for (auto& p : pts) p = {u(rng), u(rng)};
+  return pts;
+}
+
+// Number of input points on the convex hull boundary (collinear ones
+// included), by Andrew's monotone chain with exact orientation.
+std::size_t hull_point_count(std::vector<Point> pts) {
+  std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::vector<Point> h;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = h.size();
+    for (const Point& p : pts) {
+      while (h.size() >= base + 2 && madd::orient2d(h[h.size() - 2], h.back(), p) < 0) h.pop_back();
+      h.push_back(p);
+    }
+    h.pop_back();
+    std::reverse(pts.begin(), pts.end());
+  }
+  return h.size();
+}
+
+std::string problems(const madd::Verification& v) {
+  std::string s;
+  for (const auto& p : v.problems) s += p + "\n";
+  return s;
+}
+
+// Every triangle's circumcircle is empty of every input point (exact incircle),
+// and the triangle count is 2n - h - 2.
+void check_brute_force_delaunay(const std::vector<Point>& pts, const madd::Triangulation& tri) {
+  for (const auto& t : tri.triangles) {
+    for (const Point& p : pts) {
+      REQUIRE(madd::incircle(pts[t[0]], pts[t[1]], pts[t[2]], p) <= 0);
+    }
+  }
+  CHECK(tri.triangle_count() == 2 * pts.size() - hull_point_count(pts) - 2);
+}
+
+double total_area(const madd::Triangulation& tri) {
+  double a = 0;
+  for (const auto& t : tri.triangles) a += madd::signed_area(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]]);
+  return a;
+}
+
+// Closed ring of points appended to `pslg`, each edge one segment.
+void add_ring(madd::Pslg& pslg, const std::vector<Point>& ring, int marker) {
+  const auto base = static_cast<std::uint32_t>(pslg.points.size());
+  const auto n = static_cast<std::uint32_t>(ring.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    pslg.points.push_back(ring[i]);
+    pslg.segments.push_back({base + i, base + (i + 1) % n, marker});
+  }
+}
+
+std::vector<Point> circle(std::size_t n, Point c, double r, double phase, bool cw) {
+  std::vector<Point> pts(n);
+  const double s = cw ? -1.0 : 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = phase + s * 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+    pts[i] = {c.x + r * std::cos(a), c.y + r * std::sin(a)};
+  }
+  return pts;
+}
+
+// A random star-shaped polygon with `k` circular holes (like gen_poly.py star).
+madd::Pslg star_with_holes(std::size_t n, std::size_t k, std::size_t m, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  madd::Pslg pslg;
+  std::vector<Point> outer(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * (static_cast<double>(i) + 0.1 + 0.8 * u(rng)) / static_cast<double>(n);
+    const double r = 1 + 0.1 * std::cos(3 * t) + 0.05 * std::sin(5 * t) + 0.3 * (2 * std::numbers::pi / static_cast<double>(n)) * (u(rng) - 0.5);
+    outer[i] = {r * std::cos(t), r * std::sin(t)};
+  }
+  add_ring(pslg, outer, 1);
+  const double rh = 0.12 / std::sqrt(static_cast<double>(std::max<std::size_t>(k, 1)));
+  for (std::size_t h = 0; h < k; ++h) {
+    // Holes on a ring of radius 0.45, far enough apart not to touch.
+    const double a = 2 * std::numbers::pi * static_cast<double>(h) / static_cast<double>(k);
+    const Point c{0.45 * std::cos(a), 0.45 * std::sin(a)};
+    add_ring(pslg, circle(m, c, rh, u(rng), true), static_cast<int>(h + 2));
+    pslg.holes.push_back(c);
+  }
+  return pslg;
+}
+
+void check_constrained(const madd::Pslg& pslg) {
+  const madd::Triangulation tri = madd::triangulate(pslg);
+  const madd::Verification v = madd::verify_triangulation(tri, &pslg);
+  CHECK_MESSAGE(v.ok(), problems(v));
+  CHECK(tri == madd::triangulate(pslg));  // deterministic
+}
+
+} // namespace
+
+TEST_SUITE("triangulation") {
+  TEST_CASE("brute-force Delaunay on small random sets") {
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+      for (std::size_t n : {3u, 4u, 5u, 10u, 50u, 300u}) {
+        const auto pts = random_points(n, seed * 1000 + static_cast<unsigned>(n));
+        const madd::Triangulation tri = madd::delaunay(pts);
+        CAPTURE(n);
+        CAPTURE(seed);
+        CHECK_MESSAGE(madd::verify_triangulation(tri).ok(), problems(madd::verify_triangulation(tri)));
+        check_brute_force_delaunay(pts, tri);
+      }
+    }
+  }
+
+  TEST_CASE("large random sets verify and are deterministic") {
+    for (std::size_t n : {1000u, 20000u, 100000u}) {
+      const auto pts = random_points(n, 77);
+      const madd::Triangulation tri = madd::delaunay(pts);
+      const auto v = madd::verify_triangulation(tri);
+      CHECK_MESSAGE(v.ok(), problems(v));
+      CHECK(tri.triangle_count() == 2 * n - hull_point_count(pts) - 2);
+      CHECK(tri == madd::delaunay(pts));
+    }
+  }
+
+  TEST_CASE("integer lattice (massively cocircular)") {
+    for (int side : {2, 3, 7, 40}) {
+      std::vector<Point> pts;
+      for (int i = 0; i < side; ++i)
+        for (int j = 0; j < side; ++j) pts.push_back({static_cast<double>(i), static_cast<double>(j)});
+      const madd::Triangulation tri = madd::delaunay(pts);
+      const auto v = madd::verify_triangulation(tri);
+      CHECK_MESSAGE(v.ok(), problems(v));
+      CHECK(tri.triangle_count() == 2 * static_cast<std::size_t>((side - 1) * (side - 1)));
+      CHECK(total_area(tri) == doctest::Approx((side - 1) * (side - 1)));
+      check_brute_force_delaunay(pts, tri);
+    }
+  }
+
+  TEST_CASE("exactly cocircular integer points") {
+    // All integer points with x^2 + y^2 = 5525 (= 5^2 * 13 * 17): many, exactly on one circle.
+    std::vector<Point> pts;
+    for (int x = -75; x <= 75; ++x)
+      for (int y = -75; y <= 75; ++y)
+        if (x * x + y * y == 5525) pts.push_back({static_cast<double>(x), static_cast<double>(y)});
+    REQUIRE(pts.size() >= 16);
+    const madd::Triangulation tri = madd::delaunay(pts);
+    CHECK(madd::verify_triangulation(tri).ok());
+    CHECK(tri.triangle_count() == pts.size() - 2);
+    CHECK(tri == madd::delaunay(pts));
+  }
+
+  TEST_CASE("points on a circle and a regular polygon") {
+    const auto pts = circle(5000, {0.5, -2.0}, 3.0, 0.1, false);
+    const madd::Triangulation tri = madd::delaunay(pts);
+    const auto v = madd::verify_triangulation(tri);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    CHECK(tri.triangle_count() == 2 * pts.size() - hull_point_count(pts) - 2);
+    madd::Pslg poly;
+    add_ring(poly, circle(20000, {0, 0}, 1.0, 0.0, false), 1);
+    check_constrained(poly);
+  }
+
+  TEST_CASE("collinear points give no triangles") {
+    std::vector<Point> line;
+    for (int i = 0; i < 1000; ++i) line.push_back({0.5 * i, 3.0 - 0.25 * i});
+    std::shuffle(line.begin(), line.end(), std::mt19937(3));
+    CHECK(madd::delaunay(line).triangle_count() == 0);
+    CHECK(madd::delaunay(std::vector<Point>{}).triangle_count() == 0);
+    CHECK(madd::delaunay(std::vector<Point>{{1, 1}}).triangle_count() == 0);
+    CHECK(madd::delaunay(std::vector<Point>{{1, 1}, {2, 2}}).triangle_count() == 0);
+    line.push_back(line[17]);
+    CHECK_THROWS_AS(madd::delaunay(line), madd::InvalidInputError);
+  }
+
+  TEST_CASE("collinear prefix then a point off the line") {
+    std::vector<Point> pts;
+    for (int i = 0; i < 100; ++i) pts.push_back({static_cast<double>(i), 0.0});
+    pts.push_back({50.0, 1.0});
+    pts.push_back({50.0, -1.0});
+    const madd::Triangulation tri = madd::delaunay(pts);
+    CHECK(madd::verify_triangulation(tri).ok());
+    check_brute_force_delaunay(pts, tri);
+  }
+
+  TEST_CASE("duplicate points are rejected") {
+    auto pts = random_points(500, 9);
+    pts.push_back(pts[123]);
+    try {
+      (void)madd::delaunay(pts);
+      FAIL("no error");
+    } catch (const madd::InvalidInputError& e) {
+      CHECK(e.problem() == madd::InputProblem::duplicate_vertex);
+      CHECK(e.ids() == std::vector<std::int64_t>{123, 500});
+    }
+    CHECK_THROWS_AS(madd::delaunay(std::vector<Point>{{0, 0}, {0, 0}, {1, 0}}), madd::InvalidInputError);
+  }
+
+  TEST_CASE("near-degenerate perturbations of a few ulps") {
+    std::mt19937 rng(5);
+    std::vector<Point> pts;
+    for (int i = 0; i < 30; ++i) {
+      for (int j = 0; j < 30; ++j) {
+        double x = 1.0 + i * 0.125, y = 2.0 + j * 0.125;
+        for (int k = static_cast<int>(rng() % 4); k > 0; --k) x = std::nextafter(x, (rng() & 1) ? 10.0 : -10.0);
+        for (int k = static_cast<int>(rng() % 4); k > 0; --k) y = std::nextafter(y, (rng() & 1) ? 10.0 : -10.0);
+        pts.push_back({x, y});
+      }
+    }
+    // Nearly collinear too: a line with ulp noise.
+    for (int i = 0; i < 200; ++i) {
+      double y = 0.1 + 0.3 * (0.01 * i);
+      for (int k = static_cast<int>(rng() % 3); k > 0; --k) y = std::nextafter(y, 1.0);
+      pts.push_back({0.01 * i - 1.0, y});
+    }
+    const madd::Triangulation tri = madd::delaunay(pts);
+    const auto v = madd::verify_triangulation(tri);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    check_brute_force_delaunay(pts, tri);
+  }
+
+  TEST_CASE("square with a square hole") {
+    madd::Pslg pslg;
+    add_ring(pslg, {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, 1);
+    add_ring(pslg, {{1, 1}, {1, 3}, {3, 3}, {3, 1}}, 2);
+    pslg.holes.push_back({2, 2});
+    const madd::Triangulation tri = madd::triangulate(pslg);
+    CHECK(tri.triangle_count() == 8);
+    CHECK(total_area(tri) == doctest::Approx(12.0));
+    check_constrained(pslg);
+    for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+      for (int i = 0; i < 3; ++i) CHECK((tri.neighbours[t][i] == madd::no_index) == tri.is_constrained(t, i));
+    }
+  }
+
+  TEST_CASE("a segment through a vertex is split there") {
+    madd::Pslg pslg;
+    add_ring(pslg, {{0, 0}, {2, 0}, {2, 2}, {0, 2}}, 1);
+    pslg.points.push_back({1, 0});  // on segment 0
+    pslg.points.push_back({1, 2});  // on segment 2
+    const madd::Triangulation tri = madd::triangulate(pslg);
+    const auto v = madd::verify_triangulation(tri, &pslg);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    CHECK(total_area(tri) == doctest::Approx(4.0));
+    CHECK(tri.triangle_count() == 4);
+  }
+
+  TEST_CASE("long segments crossing many Delaunay edges") {
+    madd::Pslg pslg;
+    std::vector<Point> outer;
+    for (int i = 0; i < 100; ++i) outer.push_back({static_cast<double>(i), 0.0});
+    for (int i = 0; i < 100; ++i) outer.push_back({100.0, static_cast<double>(i)});
+    for (int i = 100; i > 0; --i) outer.push_back({static_cast<double>(i), 100.0});
+    for (int i = 100; i > 0; --i) outer.push_back({0.0, static_cast<double>(i)});
+    add_ring(pslg, outer, 1);
+    add_ring(pslg, {{5, 49.9}, {5, 50.1}, {95, 50.1}, {95, 49.9}}, 2);  // thin slot, clockwise
+    add_ring(pslg, {{49.95, 5}, {49.95, 45}, {50.05, 45}, {50.05, 5}}, 3);
+    pslg.holes.push_back({50, 50});
+    pslg.holes.push_back({50, 20});
+    check_constrained(pslg);
+    const madd::Triangulation tri = madd::triangulate(pslg);
+    CHECK(total_area(tri) == doctest::Approx(100.0 * 100.0 - 90 * 0.2 - 40 * 0.1));
+  }
+
+  TEST_CASE("random star polygons with holes") {
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      check_constrained(star_with_holes(200 * seed, seed + 1, 16 * seed, seed));
+    }
+    check_constrained(star_with_holes(20000, 9, 64, 42));
+  }
+
+  TEST_CASE("every data file triangulates and verifies") {
+    namespace fs = std::filesystem;
+    const fs::path dir = MADD_DATA_DIR;
+    if (!fs::exists(dir)) return;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().extension() != ".poly") continue;
+      CAPTURE(entry.path().string());
+      madd::Pslg pslg;
+      try {
+        pslg = madd::read_domain(entry.path().string());
+      } catch (const madd::Error&) {
+        continue;  // bad-input samples are the reader's business
+      }
+      check_constrained(pslg);
+    }
+  }
+
+  TEST_CASE("verify_triangulation catches broken triangulations") {
+    const auto pts = random_points(100, 4);
+    const madd::Triangulation good = madd::delaunay(pts);
+    REQUIRE(madd::verify_triangulation(good).ok());
+    madd::Triangulation flipped = good;
+    std::swap(flipped.triangles[5][0], flipped.triangles[5][1]);
+    CHECK_FALSE(madd::verify_triangulation(flipped).ok());
+    madd::Triangulation unlinked = good;
+    for (auto& n : unlinked.neighbours[7]) n = madd::no_index;
+    CHECK_FALSE(madd::verify_triangulation(unlinked).ok());
+    // A non-Delaunay but valid triangulation: flip one interior edge.
+    madd::Triangulation bad = good;
+    bool flipped_one = false;
+    for (std::uint32_t t = 0; t < bad.triangle_count() && !flipped_one; ++t) {
+      for (int i = 0; i < 3 && !flipped_one; ++i) {
+        const std::uint32_t u = bad.neighbours[t][i];
+        if (u == madd::no_index) continue;
+        const auto a = bad.triangles[t][i], b = bad.triangles[t][(i + 1) % 3], c = bad.triangles[t][(i + 2) % 3];
+        int j = 0;
+        while (bad.neighbours[u][j] != t) ++j;
+        const auto d = bad.triangles[u][j];
+        if (madd::orient2d(pts[a], pts[b], pts[d]) > 0 && madd::orient2d(pts[d], pts[c], pts[a]) > 0) {
+          bad.triangles[t] = {a, b, d};
+          bad.triangles[u] = {d, c, a};
+          flipped_one = true;
+        }
+      }
+    }
+    REQUIRE(flipped_one);
+    CHECK_FALSE(madd::verify_triangulation(bad).ok());
+  }
+}
