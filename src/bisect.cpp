@@ -68,8 +68,9 @@ std::vector<std::uint8_t> bisect_work_graph(const Graph& g, const BisectOptions&
   const auto n = static_cast<std::uint32_t>(g.vertex_count());
   if (n < 2) return std::vector<std::uint8_t>(n, 0);
   detail::SplitMix64 rng(o.seed);
-  std::vector<std::uint8_t> side = detail::multilevel_bisect(g, o, rng);
-  if (o.connected && detail::is_connected(g)) {
+  const bool connect = o.connected && detail::is_connected(g);
+  std::vector<std::uint8_t> side = detail::multilevel_bisect(g, o, rng, connect);
+  if (connect && !detail::sides_connected(g, side)) {  // a safety net: refine_level already repaired
     const double total = std::accumulate(g.vertex_weights.begin(), g.vertex_weights.end(), 0.0);
     detail::repair_connectivity(g, side, detail::make_balance(total, o.target_fraction, o.imbalance));
   }

@@ -62,8 +62,7 @@ bool flip_strays(const Graph& g, std::vector<std::uint8_t>& side) {
 // vertex, reaches all of the vertex's same-side neighbours.
 class Rebalancer {
 public:
-  Rebalancer(const Graph& g, std::vector<std::uint8_t>& side) : g_(&g), side_(&side) {
-    stamp_.assign(g.vertex_count(), 0);
+  Rebalancer(const Graph& g, std::vector<std::uint8_t>& side) : g_(&g), side_(&side), guard_(g.vertex_count()) {
     heap_.reset(static_cast<std::uint32_t>(g.vertex_count()));
   }
   void run(const Balance& b);
@@ -71,11 +70,9 @@ public:
 private:
   double gain(std::uint32_t v) const;
   bool touches(std::uint32_t v, std::uint8_t s) const;
-  bool removable(std::uint32_t v);
   const Graph* g_;
   std::vector<std::uint8_t>* side_;
-  std::vector<std::uint32_t> stamp_, queue_;
-  std::uint32_t clock_ = 0;
+  RemovalGuard guard_;
   GainHeap heap_;
 };
 
@@ -91,40 +88,6 @@ bool Rebalancer::touches(std::uint32_t v, std::uint8_t s) const {
   const Graph& g = *g_;
   for (std::uint32_t i = g.offsets[v]; i < g.offsets[v + 1]; ++i)
     if ((*side_)[g.adjacency[i]] == s) return true;
-  return false;
-}
-
-bool Rebalancer::removable(std::uint32_t v) {
-  const Graph& g = *g_;
-  const auto& side = *side_;
-  const std::uint8_t s = side[v];
-  ++clock_;
-  std::uint32_t need = 0, start = no_vertex;
-  for (std::uint32_t i = g.offsets[v]; i < g.offsets[v + 1]; ++i) {
-    const std::uint32_t u = g.adjacency[i];
-    if (side[u] != s || stamp_[u] == clock_) continue;
-    stamp_[u] = clock_;  // marks "a neighbour still to reach"
-    ++need;
-    start = u;
-  }
-  if (need <= 1) return need == 1;  // need == 0: v is alone on its side
-  const std::uint32_t seen = ++clock_;
-  constexpr std::size_t budget = 400;
-  queue_.assign(1, start);
-  std::uint32_t reached = 1;
-  stamp_[start] = seen;
-  stamp_[v] = seen;
-  for (std::size_t head = 0; head < queue_.size() && head < budget; ++head) {
-    const std::uint32_t x = queue_[head];
-    for (std::uint32_t i = g.offsets[x]; i < g.offsets[x + 1]; ++i) {
-      const std::uint32_t u = g.adjacency[i];
-      if (side[u] != s || stamp_[u] == seen) continue;
-      if (stamp_[u] == seen - 1) ++reached;
-      if (reached == need) return true;
-      stamp_[u] = seen;
-      queue_.push_back(u);
-    }
-  }
   return false;
 }
 
@@ -149,7 +112,7 @@ void Rebalancer::run(const Balance& b) {
     const double vw = g.vertex_weights[v];
     // Never overshoot into making the other side worse than this one is.
     if (w[t] + vw > b.max[t] && w[t] + vw - b.max[t] >= w[s] - b.max[s]) continue;
-    if (!removable(v)) continue;
+    if (!guard_.removable(g, side, v)) continue;
     side[v] = t;
     w[s] -= vw;
     w[t] += vw;

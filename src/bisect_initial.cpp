@@ -61,8 +61,16 @@ std::vector<std::uint8_t> grow_from(const Graph& g, std::uint32_t seed, const st
 
 } // namespace
 
+void refine_level(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
+                  bool connect) {
+  fm_refine(graph, side, balance, passes);
+  if (!connect || sides_connected(graph, side)) return;
+  repair_connectivity(graph, side, balance);
+  fm_refine(graph, side, balance, passes, true);
+}
+
 std::vector<std::uint8_t> grow_bisection(const Graph& graph, const Balance& balance, SplitMix64& rng, int tries,
-                                         int passes) {
+                                         int passes, bool connect) {
   const auto n = static_cast<std::uint32_t>(graph.vertex_count());
   if (n < 2) return std::vector<std::uint8_t>(n, 0);
   const std::vector<std::uint32_t> order = random_permutation(n, rng);
@@ -73,11 +81,11 @@ std::vector<std::uint8_t> grow_bisection(const Graph& graph, const Balance& bala
   for (int t = 0; t < std::max(tries, 1); ++t) {
     const std::uint32_t seed = order[static_cast<std::uint32_t>(t) % n];
     std::vector<std::uint8_t> side = grow_from(graph, seed, order, balance.target[0], heap);
-    fm_refine(graph, side, balance, passes);
+    refine_level(graph, side, balance, passes, connect);
     double w[2] = {0.0, 0.0};
     for (std::uint32_t v = 0; v < n; ++v) w[side[v]] += graph.vertex_weights[v];
-    if (w[0] == 0.0 && std::find(side.begin(), side.end(), 0) == side.end()) continue;
-    if (std::find(side.begin(), side.end(), 1) == side.end()) continue;
+    if (std::find(side.begin(), side.end(), 0) == side.end() || std::find(side.begin(), side.end(), 1) == side.end())
+      continue;
     const double infeas = balance.infeasibility(w);
     const double cut = cut_weight(graph, side);
     if (best.empty() || infeas < best_infeas || (infeas == best_infeas && cut < best_cut)) {
@@ -93,7 +101,8 @@ std::vector<std::uint8_t> grow_bisection(const Graph& graph, const Balance& bala
   return best;
 }
 
-std::vector<std::uint8_t> multilevel_bisect(const Graph& graph, const BisectOptions& options, SplitMix64& rng) {
+std::vector<std::uint8_t> multilevel_bisect(const Graph& graph, const BisectOptions& options, SplitMix64& rng,
+                                            bool connect) {
   CoarsenOptions co;
   co.sorted_heavy_edge = options.sorted_heavy_edge;
   const Hierarchy h = coarsen(graph, rng, co);
@@ -108,14 +117,14 @@ std::vector<std::uint8_t> multilevel_bisect(const Graph& graph, const BisectOpti
   const std::size_t depth = h.depth();
   const Graph& coarsest = depth == 0 ? graph : h.graphs.back();
   const int passes = std::max(options.refinement_passes, 1);
-  std::vector<std::uint8_t> side = grow_bisection(coarsest, level_balance(depth), rng, 8, passes);
+  std::vector<std::uint8_t> side = grow_bisection(coarsest, level_balance(depth), rng, 8, passes, connect);
   for (std::size_t level = depth; level-- > 0;) {
     const Graph& fine = level == 0 ? graph : h.graphs[level - 1];
     const std::vector<std::uint32_t>& map = h.maps[level];
     std::vector<std::uint8_t> projected(fine.vertex_count());
     for (std::size_t v = 0; v < projected.size(); ++v) projected[v] = side[map[v]];
     side = std::move(projected);
-    fm_refine(fine, side, level_balance(level), options.refinement_passes);
+    refine_level(fine, side, level_balance(level), options.refinement_passes, connect);
   }
   return side;
 }

@@ -73,8 +73,8 @@ namespace {
 // boundary set (vertices with a neighbour on the other side).
 class Refiner {
 public:
-  Refiner(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance)
-      : g_(&graph), side_(&side), bal_(&balance) {
+  Refiner(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, bool keep_connected)
+      : g_(&graph), side_(&side), bal_(&balance), keep_connected_(keep_connected), guard_(keep_connected ? graph.vertex_count() : 0) {
     const auto n = static_cast<std::uint32_t>(graph.vertex_count());
     internal_.assign(n, 0.0);
     external_.assign(n, 0.0);
@@ -134,6 +134,9 @@ private:
   const Graph* g_;
   std::vector<std::uint8_t>* side_;
   const Balance* bal_;
+  bool keep_connected_;
+  RemovalGuard guard_;
+  std::vector<std::uint32_t> skipped_;
   std::vector<double> internal_, external_;
   std::vector<std::uint32_t> ext_count_, boundary_, bpos_;
   std::vector<std::uint8_t> locked_;
@@ -224,6 +227,10 @@ bool Refiner::pass() {
     if (v == no_vertex) break;
     heaps_[(*side_)[v]].remove(v);
     locked_[v] = 1;
+    if (keep_connected_ && !guard_.removable(*g_, *side_, v)) {
+      skipped_.push_back(v);  // may become movable later; retried next pass
+      continue;
+    }
     move(v, true);
     moves_.push_back(v);
     const double infeas = b.infeasibility(weight_);
@@ -236,6 +243,8 @@ bool Refiner::pass() {
     }
   }
   for (const std::uint32_t v : moves_) locked_[v] = 0;
+  for (const std::uint32_t v : skipped_) locked_[v] = 0;
+  skipped_.clear();
   while (moves_.size() > best_len) {
     move(moves_.back(), false);
     moves_.pop_back();
@@ -245,9 +254,10 @@ bool Refiner::pass() {
 
 } // namespace
 
-void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes) {
+void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
+               bool keep_connected) {
   if (graph.vertex_count() < 2) return;
-  Refiner refiner(graph, side, balance);
+  Refiner refiner(graph, side, balance, keep_connected);
   for (int p = 0; p < passes; ++p) {
     if (!refiner.pass()) break;
   }

@@ -49,7 +49,10 @@ struct Balance {
 };
 
 // Refines `side` in place with at most `passes` boundary-FM passes. The result
-// is never worse than the input in (infeasibility, cut) order.
-void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes);
+// is never worse than the input in (infeasibility, cut) order. With
+// `keep_connected`, only moves that provably keep both sides connected are
+// made (RemovalGuard), so connected sides stay connected.
+void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
+               bool keep_connected = false);
 
 } // namespace madd::detail

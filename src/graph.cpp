@@ -154,6 +154,50 @@ Graph induced_subgraph(const Graph& graph, std::span<const std::uint32_t> vertic
   return sub;
 }
 
+bool RemovalGuard::removable(const Graph& g, std::span<const std::uint8_t> side, std::uint32_t v,
+                             std::size_t budget) {
+  const std::uint8_t s = side[v];
+  if (clock_ > 0xfffffff0u) {  // wrap-around: restart the stamps
+    std::fill(stamp_.begin(), stamp_.end(), 0u);
+    clock_ = 0;
+  }
+  const std::uint32_t target = ++clock_;  // "a neighbour still to reach"
+  std::uint32_t need = 0, start = no_vertex;
+  for (std::uint32_t i = g.offsets[v]; i < g.offsets[v + 1]; ++i) {
+    const std::uint32_t u = g.adjacency[i];
+    if (side[u] != s || stamp_[u] == target) continue;
+    stamp_[u] = target;
+    ++need;
+    start = u;
+  }
+  if (need <= 1) return need == 1;
+  const std::uint32_t seen = ++clock_;
+  queue_.assign(1, start);
+  std::uint32_t reached = 1;
+  stamp_[start] = seen;
+  stamp_[v] = seen;
+  for (std::size_t head = 0; head < queue_.size() && head < budget; ++head) {
+    const std::uint32_t x = queue_[head];
+    for (std::uint32_t i = g.offsets[x]; i < g.offsets[x + 1]; ++i) {
+      const std::uint32_t u = g.adjacency[i];
+      if (side[u] != s || stamp_[u] == seen) continue;
+      if (stamp_[u] == target && ++reached == need) return true;
+      stamp_[u] = seen;
+      queue_.push_back(u);
+    }
+  }
+  return false;
+}
+
+bool sides_connected(const Graph& graph, std::span<const std::uint8_t> side) {
+  const Components c = connected_components(graph, side.data());
+  if (c.count != 2) return false;
+  // Two components: connected sides unless both lie on one side.
+  for (std::size_t v = 0; v < side.size(); ++v)
+    if (side[v] != side[0]) return true;
+  return false;
+}
+
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, SplitMix64& rng) {
   std::vector<std::uint32_t> perm(n);
   std::iota(perm.begin(), perm.end(), 0u);

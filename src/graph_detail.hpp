@@ -32,6 +32,23 @@ Graph contract(const Graph& graph, std::span<const std::uint32_t> map, std::uint
 // The subgraph induced by `vertices` (renumbered 0..size-1 in that order).
 Graph induced_subgraph(const Graph& graph, std::span<const std::uint32_t> vertices);
 
+// Proves cheaply that taking vertex v off its side leaves that side connected:
+// a BFS inside the side, avoiding v, must reach all of v's same-side
+// neighbours within `budget` visited vertices. Conservative (false when
+// unsure); false when v has no same-side neighbour.
+class RemovalGuard {
+public:
+  explicit RemovalGuard(std::size_t vertex_count) : stamp_(vertex_count, 0) {}
+  bool removable(const Graph& graph, std::span<const std::uint8_t> side, std::uint32_t v, std::size_t budget = 400);
+
+private:
+  std::vector<std::uint32_t> stamp_, queue_;
+  std::uint32_t clock_ = 0;
+};
+
+// True when each side induces a connected, non-empty subgraph.
+bool sides_connected(const Graph& graph, std::span<const std::uint8_t> side);
+
 // splitmix64 (Steele, Lea, Flood 2014): a fixed, portable generator, so a seed
 // gives the same bisection on every standard library.
 class SplitMix64 {
