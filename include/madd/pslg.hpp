@@ -49,6 +49,7 @@ struct Pslg {
 // Empty vectors mean "unknown" (a Pslg built in memory).
 struct SourceMap {
   std::string path;
+  std::string point_path; // file of point_lines when not `path` (a companion .node); empty = `path`
   std::vector<std::uint32_t> point_lines;
   std::vector<std::uint32_t> segment_lines;
   std::vector<std::uint32_t> hole_lines;

@@ -1,0 +1,123 @@
+// Exact, grid-accelerated search for segments that cross, overlap or touch
+// other than at a shared endpoint (FORMATS.md, "Bad input").
+#include <algorithm>
+
+#include "madd/predicates.hpp"
+#include "validate_detail.hpp"
+
+namespace madd::detail {
+namespace {
+
+int sign(double v) noexcept { return (v > 0.0) - (v < 0.0); }
+int compare(double a, double b) noexcept { return (a > b) - (a < b); }
+
+// Lexicographic order; for collinear points it is the order along their line.
+bool lex_less(Point a, Point b) noexcept { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+// s = v-p and t = v-q share endpoint v: they conflict only when collinear and
+// leaving v in the same direction; then the nearer of p, q lies on the other.
+ContactResult shared_endpoint(Point v, Point p, Point q) {
+  if (orient2d(v, p, q) != 0.0) return {};
+  if (compare(p.x, v.x) != compare(q.x, v.x) || compare(p.y, v.y) != compare(q.y, v.y)) return {};
+  const bool p_nearer = lex_less(v, p) ? !lex_less(q, p) : !lex_less(p, q);
+  return {Contact::overlap, p_nearer ? p : q};
+}
+
+bool boxes_disjoint(Point a, Point b, Point c, Point d) noexcept {
+  return std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+         std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y);
+}
+
+ContactResult disjoint_endpoints(Point a, Point b, Point c, Point d) {
+  if (boxes_disjoint(a, b, c, d)) return {};
+  const int o1 = sign(orient2d(a, b, c)), o2 = sign(orient2d(a, b, d));
+  if (o1 != 0 && o1 == o2) return {};
+  const int o3 = sign(orient2d(c, d, a)), o4 = sign(orient2d(c, d, b));
+  if (o3 != 0 && o3 == o4) return {};
+  if (o1 == 0 && o2 == 0) {
+    // Collinear: the boxes intersect, so the lexicographic intervals overlap
+    // (their endpoints are distinct points, so never in a single point).
+    const Point s_min = lex_less(a, b) ? a : b, t_min = lex_less(c, d) ? c : d;
+    return {Contact::overlap, lex_less(s_min, t_min) ? t_min : s_min};
+  }
+  if (o1 == 0) return {Contact::touch, c};
+  if (o2 == 0) return {Contact::touch, d};
+  if (o3 == 0) return {Contact::touch, a};
+  if (o4 == 0) return {Contact::touch, b};
+  const Point ab = b - a, cd = d - c;
+  const double t = cross(c - a, cd) / cross(ab, cd);
+  return {Contact::cross, lerp(a, b, t)};
+}
+
+} // namespace
+
+ContactResult classify_contact(const std::vector<Point>& pts, const Segment& s, const Segment& t) {
+  if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return {Contact::overlap, pts[s.a]};
+  if (s.a == t.a) return shared_endpoint(pts[s.a], pts[s.b], pts[t.b]);
+  if (s.a == t.b) return shared_endpoint(pts[s.a], pts[s.b], pts[t.a]);
+  if (s.b == t.a) return shared_endpoint(pts[s.b], pts[s.a], pts[t.b]);
+  if (s.b == t.b) return shared_endpoint(pts[s.b], pts[s.a], pts[t.a]);
+  return disjoint_endpoints(pts[s.a], pts[s.b], pts[t.a], pts[t.b]);
+}
+
+namespace {
+
+// Keeps the conflict that comes first in file order: smallest later index,
+// then smallest earlier index, so the report does not depend on cell order.
+struct BestConflict {
+  std::optional<SegmentConflict> best;
+  bool worth_testing(std::uint32_t i, std::uint32_t j) const noexcept {
+    const std::uint32_t later = std::max(i, j), earlier = std::min(i, j);
+    return !best || later < best->later || (later == best->later && earlier < best->earlier);
+  }
+  void offer(const Pslg& p, std::uint32_t i, std::uint32_t j) {
+    if (!worth_testing(i, j)) return;
+    const ContactResult c = classify_contact(p.points, p.segments[i], p.segments[j]);
+    if (c.kind != Contact::none) best = SegmentConflict{std::max(i, j), std::min(i, j), c};
+  }
+};
+
+// All pairs of one cell, pruned by x-extent after sorting when the cell is
+// crowded (many short segments clustered in one cell of a coarse grid).
+void test_cell(const Pslg& p, std::span<const std::uint32_t> cell, std::vector<std::uint32_t>& scratch,
+               BestConflict& found) {
+  if (cell.size() <= 24) {
+    for (std::size_t u = 0; u < cell.size(); ++u)
+      for (std::size_t w = u + 1; w < cell.size(); ++w) found.offer(p, cell[u], cell[w]);
+    return;
+  }
+  const auto min_x = [&](std::uint32_t s) { return std::min(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
+  const auto max_x = [&](std::uint32_t s) { return std::max(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
+  scratch.assign(cell.begin(), cell.end());
+  std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
+  for (std::size_t u = 0; u < scratch.size(); ++u) {
+    const double reach = max_x(scratch[u]);
+    for (std::size_t w = u + 1; w < scratch.size() && min_x(scratch[w]) <= reach; ++w)
+      found.offer(p, scratch[u], scratch[w]);
+  }
+}
+
+} // namespace
+
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid) {
+  BestConflict found;
+  std::vector<std::uint32_t> scratch;
+  for (std::uint32_t r = 0; r < grid.rows(); ++r)
+    for (std::uint32_t c = 0; c < grid.cols(); ++c) test_cell(pslg, grid.cell(c, r), scratch, found);
+  return found.best;
+}
+
+std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {
+  if (!grid.contains(p)) return std::nullopt;
+  std::optional<std::uint32_t> first;
+  for (std::uint32_t s : grid.cell(grid.col_of(p.x), grid.row_of(p.y))) {
+    const Point a = pslg.points[pslg.segments[s].a], b = pslg.points[pslg.segments[s].b];
+    if (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x) || p.y < std::min(a.y, b.y) ||
+        p.y > std::max(a.y, b.y))
+      continue;
+    if (orient2d(a, b, p) == 0.0 && (!first || s < *first)) first = s;
+  }
+  return first;
+}
+
+} // namespace madd::detail
