@@ -50,13 +50,16 @@ private:
 
   Mesh& m_;
   const Pslg& pslg_;
-  std::vector<std::uint32_t> v2c_;  // per vertex: a corner (3t+i) holding it
+  std::vector<std::uint32_t> rank_;  // input index -> mesh vertex
+  std::vector<std::uint32_t> v2c_;   // per vertex: a corner (3t+i) holding it
   std::vector<std::uint32_t> crossed_;
   Path upper_, lower_;
   std::vector<Task> tasks_;
 };
 
 SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg) {
+  rank_.resize(mesh.order.size());
+  for (std::uint32_t r = 0; r < rank_.size(); ++r) rank_[mesh.order[r]] = r;
   v2c_.assign(mesh.points.size(), no_index);
   for (std::uint32_t c = 0; c < mesh.tv.size(); ++c) {
     if (mesh.tv[c] != mesh.ghost) v2c_[mesh.tv[c]] = c;
@@ -201,8 +204,8 @@ std::uint32_t SegmentInserter::fill(const Path& path, std::size_t& next_slot) {
 }
 
 void SegmentInserter::insert(std::uint32_t s) {
-  const std::uint32_t a0 = pslg_.segments[s].a, b = pslg_.segments[s].b;
-  std::uint32_t a = a0;
+  const std::uint32_t b = rank_[pslg_.segments[s].b];
+  std::uint32_t a = rank_[pslg_.segments[s].a];
   for (std::size_t guard = 0; a != b; ++guard) {
     if (guard > m_.points.size()) throw Error("triangulate: internal error: segment walk did not end");
     std::uint32_t corner = 0;

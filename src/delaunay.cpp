@@ -15,8 +15,9 @@ namespace madd::detail {
 
 namespace {
 
-[[noreturn]] void throw_duplicate(const Mesh& mesh, std::uint32_t a, std::uint32_t b) {
-  const Point p = mesh.points[a];
+// a and b are input indices.
+[[noreturn]] void throw_duplicate(std::span<const Point> input, std::uint32_t a, std::uint32_t b) {
+  const Point p = input[a];
   throw InvalidInputError(InputProblem::duplicate_vertex,
                           "duplicate vertex: points " + std::to_string(std::min(a, b)) + " and " +
                               std::to_string(std::max(a, b)) + " are both (" + std::to_string(p.x) + ", " +
@@ -33,7 +34,12 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
 
 class Inserter {
 public:
-  explicit Inserter(Mesh& mesh) : m_(mesh), link_(mesh.points.size() + 1) {}
+  // Every insertion adds two triangles (ghosts included): 2n - 2 in the end.
+  explicit Inserter(Mesh& mesh)
+      : m_(mesh), link_(mesh.points.size() + 1), in_cavity_(2 * mesh.points.size()) {
+    m_.tv.resize(3 * (2 * mesh.points.size() - 2));
+    m_.tn.resize(m_.tv.size());
+  }
 
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   void insert(std::uint32_t v);
@@ -53,15 +59,16 @@ private:
   std::vector<std::uint8_t> in_cavity_;
   std::vector<std::uint32_t> stack_, cavity_;
   std::vector<Rim> rim_;
+  std::uint32_t used_ = 0;  // triangles in use
   std::uint32_t last_ = 0;  // remembering walk: start where the last insertion ended
   std::uint32_t rng_ = 12345;
 };
 
 void Inserter::start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   const std::uint32_t g = m_.ghost;
-  m_.tv = {a, b, c, b, a, g, c, b, g, a, c, g};
-  m_.tn.assign(12, 0);
-  in_cavity_.assign(4, 0);
+  const std::uint32_t init[12] = {a, b, c, b, a, g, c, b, g, a, c, g};
+  std::copy(init, init + 12, m_.tv.begin());
+  used_ = 4;
   m_.link(2, 3 + 2);   // a->b : ghost (b,a,g)
   m_.link(0, 6 + 2);   // b->c : ghost (c,b,g)
   m_.link(1, 9 + 2);   // c->a : ghost (a,c,g)
@@ -117,7 +124,7 @@ std::uint32_t Inserter::locate(std::uint32_t v) {
     }
     if (!moved) {
       for (int k = 0; k < 3; ++k) {
-        if (m_.points[tv[k]] == p) throw_duplicate(m_, tv[k], v);
+        if (m_.points[tv[k]] == p) throw_duplicate(m_.points, m_.order[tv[k]], m_.order[v]);
       }
       return t;
     }
@@ -160,10 +167,7 @@ void Inserter::fill_cavity(std::uint32_t v) {
       s = cavity_[i];
       in_cavity_[s] = 0;
     } else {
-      s = m_.triangle_count();
-      m_.tv.resize(m_.tv.size() + 3);
-      m_.tn.resize(m_.tn.size() + 3);
-      in_cavity_.push_back(0);
+      s = used_++;
     }
     if (i == 0) first = s;
     const Rim& r = rim_[i];
@@ -190,11 +194,10 @@ void Inserter::insert(std::uint32_t v) {
 
 // Chooses the first three non-collinear points of `order` as the starting
 // triangle. Returns false when all points are collinear.
-bool pick_start(const Mesh& mesh, std::vector<std::uint32_t>& order) {
-  const auto& P = mesh.points;
+bool pick_start(std::span<const Point> P, std::vector<std::uint32_t>& order) {
   const std::size_t n = order.size();
   std::size_t j = 1;
-  while (j < n && P[order[j]] == P[order[0]]) throw_duplicate(mesh, order[0], order[j]);
+  while (j < n && P[order[j]] == P[order[0]]) throw_duplicate(P, order[0], order[j]);
   std::size_t k = j + 1;
   while (k < n && orient2d(P[order[0]], P[order[j]], P[order[k]]) == 0) ++k;
   if (k >= n) return false;
@@ -205,41 +208,39 @@ bool pick_start(const Mesh& mesh, std::vector<std::uint32_t>& order) {
 }
 
 // All points collinear: no triangle, but duplicates must still be reported.
-void check_collinear_duplicates(const Mesh& mesh) {
-  std::vector<std::uint32_t> idx(mesh.points.size());
+void check_collinear_duplicates(std::span<const Point> P) {
+  std::vector<std::uint32_t> idx(P.size());
   for (std::uint32_t i = 0; i < idx.size(); ++i) idx[i] = i;
-  const auto& P = mesh.points;
   std::sort(idx.begin(), idx.end(), [&](std::uint32_t a, std::uint32_t b) {
     return P[a].x < P[b].x || (P[a].x == P[b].x && (P[a].y < P[b].y || (P[a].y == P[b].y && a < b)));
   });
   for (std::size_t i = 1; i < idx.size(); ++i) {
-    if (P[idx[i]] == P[idx[i - 1]]) throw_duplicate(mesh, idx[i - 1], idx[i]);
+    if (P[idx[i]] == P[idx[i - 1]]) throw_duplicate(P, idx[i - 1], idx[i]);
   }
 }
 
 } // namespace
 
-bool build_delaunay(Mesh& mesh) {
-  mesh.ghost = static_cast<std::uint32_t>(mesh.points.size());
-  mesh.tv.clear();
-  mesh.tn.clear();
-  if (mesh.points.size() < 3) {
-    check_collinear_duplicates(mesh);
+bool build_delaunay(Mesh& mesh, std::span<const Point> input) {
+  mesh = Mesh{};
+  mesh.ghost = static_cast<std::uint32_t>(input.size());
+  if (input.size() < 3) {
+    check_collinear_duplicates(input);
     return false;
   }
-  std::vector<std::uint32_t> order = insertion_order(mesh.points);
-  if (!pick_start(mesh, order)) {
-    check_collinear_duplicates(mesh);
+  std::vector<std::uint32_t> order = insertion_order(input);
+  if (!pick_start(input, order)) {
+    check_collinear_duplicates(input);
     return false;
   }
-  const std::size_t n = order.size();
-  mesh.tv.reserve(3 * (2 * n + 2));
-  mesh.tn.reserve(3 * (2 * n + 2));
+  if (orient2d(input[order[0]], input[order[1]], input[order[2]]) < 0) std::swap(order[1], order[2]);
+  const auto n = static_cast<std::uint32_t>(order.size());
+  mesh.points.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) mesh.points[i] = input[order[i]];
+  mesh.order = std::move(order);
   Inserter ins(mesh);
-  std::uint32_t a = order[0], b = order[1], c = order[2];
-  if (orient2d(mesh.points[a], mesh.points[b], mesh.points[c]) < 0) std::swap(b, c);
-  ins.start(a, b, c);
-  for (std::size_t i = 3; i < n; ++i) ins.insert(order[i]);
+  ins.start(0, 1, 2);
+  for (std::uint32_t i = 3; i < n; ++i) ins.insert(i);
   return true;
 }
 

@@ -18,8 +18,11 @@ namespace madd::detail {
 inline std::uint32_t next_edge(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev_edge(std::uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
 
+// Vertices are numbered by insertion rank (points[] is the input sorted in
+// insertion order, for cache locality); order[rank] is the input index.
 struct Mesh {
-  std::span<const Point> points;
+  std::vector<Point> points;
+  std::vector<std::uint32_t> order;
   std::uint32_t ghost = 0;           // the virtual vertex: index points.size()
   std::vector<std::uint32_t> tv;     // 3 vertex ids per triangle
   std::vector<std::uint32_t> tn;     // twin half-edge per half-edge
@@ -37,10 +40,10 @@ struct Mesh {
   }
 };
 
-// Builds the Delaunay triangulation (with ghost triangles) of all points into
+// Builds the Delaunay triangulation (with ghost triangles) of `input` into
 // `mesh`. Returns false when every point is collinear (mesh left empty).
-// Throws InvalidInputError on duplicate points.
-bool build_delaunay(Mesh& mesh);
+// Throws InvalidInputError on duplicate points (naming input indices).
+bool build_delaunay(Mesh& mesh, std::span<const Point> input);
 
 // Inserts every segment of `pslg` into the Delaunay `mesh` (fills mesh.seg).
 // Throws InvalidInputError when a segment crosses another one.

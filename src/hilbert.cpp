@@ -6,23 +6,54 @@
 
 namespace madd::detail {
 
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) noexcept {
-  // Classic quadrant descent: at each level pick the quadrant's position on the
-  // curve, then rotate/reflect the remaining coordinates into its frame.
-  std::uint32_t d = 0;
-  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
-    const std::uint32_t rx = (x & s) ? 1u : 0u;
-    const std::uint32_t ry = (y & s) ? 1u : 0u;
-    d += s * s * ((3u * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) {
-        x = s - 1 - (x & (s - 1));
-        y = s - 1 - (y & (s - 1));
-      }
-      std::swap(x, y);
+namespace {
+
+// The curve's orientation state: bit 0 = coordinates swapped, bit 1 =
+// coordinates complemented. One level maps raw bits (bx, by) through the state
+// to a quadrant, emits its position (0..3) on the curve and updates the state.
+struct Level {
+  std::uint32_t digit, state;
+};
+
+constexpr Level step(std::uint32_t state, std::uint32_t bx, std::uint32_t by) {
+  std::uint32_t rx = bx ^ (state >> 1), ry = by ^ (state >> 1);
+  if (state & 1u) {
+    const std::uint32_t t = rx;
+    rx = ry;
+    ry = t;
+  }
+  const std::uint32_t digit = (3u * rx) ^ ry;
+  if (ry == 0) state ^= rx == 1 ? 3u : 1u;
+  return {digit, state};
+}
+
+// Two levels at a time: entry [state][xx yy] = 4 output bits | next state << 4.
+struct Table {
+  std::uint8_t entry[4][16];
+};
+
+constexpr Table make_table() {
+  Table t{};
+  for (std::uint32_t s = 0; s < 4; ++s) {
+    for (std::uint32_t in = 0; in < 16; ++in) {
+      const Level hi = step(s, (in >> 3) & 1u, (in >> 1) & 1u);
+      const Level lo = step(hi.state, (in >> 2) & 1u, in & 1u);
+      t.entry[s][in] = static_cast<std::uint8_t>((hi.digit << 2) | lo.digit | (lo.state << 4));
     }
-    x &= s - 1;
-    y &= s - 1;
+  }
+  return t;
+}
+
+constexpr Table table = make_table();
+
+} // namespace
+
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept {
+  std::uint32_t d = 0, state = 0;
+  for (int l = bits - 2; l >= 0; l -= 2) {
+    const std::uint32_t e = table.entry[state][(((x >> l) & 3u) << 2) | ((y >> l) & 3u)];
+    d = (d << 4) | (e & 15u);
+    state = e >> 4;
   }
   return d;
 }
@@ -38,10 +69,10 @@ std::uint64_t mix(std::uint64_t z) noexcept {
   return z ^ (z >> 31);
 }
 
-std::uint32_t quantise(double v, double lo, double scale) noexcept {
+std::uint32_t quantise(double v, double lo, double scale, double top) noexcept {
   const double q = (v - lo) * scale;
   if (!(q > 0.0)) return 0;
-  if (q >= 65535.0) return 65535;
+  if (q >= top) return static_cast<std::uint32_t>(top);
   return static_cast<std::uint32_t>(q);
 }
 
@@ -76,24 +107,28 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points) {
     ylo = std::min(ylo, p.y);
     yhi = std::max(yhi, p.y);
   }
+  // Grid of 2^bits cells a side, about 16 cells per point: finer only costs time.
+  const int bits = std::clamp(static_cast<int>(std::bit_width(n) + 1) / 2 + 2, 4, 16) & ~1;
+  const double top = static_cast<double>((1u << bits) - 1);
   const double extent = std::max(xhi - xlo, yhi - ylo);
-  const double scale = extent > 0.0 && std::isfinite(extent) ? 65535.0 / extent : 0.0;
+  const double scale = extent > 0.0 && std::isfinite(extent) ? top / extent : 0.0;
   // Rounds: level k holds about n / 2^(k+1) points; everything at or above
   // max_level forms the first round, kept at >= ~128 points.
   int max_level = 0;
   while ((n >> (max_level + 8)) > 0 && max_level < 20) ++max_level;
-  // Key layout: [round:5][hilbert:32]; ties keep index order (stable sort).
+  // Key layout: [round:5][hilbert:2*bits]; ties keep index order (stable sort).
   std::vector<Item> items(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const int level = std::min(std::countr_one(mix(i)), max_level);
     const auto round = static_cast<std::uint64_t>(max_level - level);
-    const std::uint64_t h = hilbert_index(quantise(points[i].x, xlo, scale), quantise(points[i].y, ylo, scale));
-    items[i] = {(round << 32) | h, i};
+    const std::uint64_t h =
+        hilbert_index(quantise(points[i].x, xlo, scale, top), quantise(points[i].y, ylo, scale, top), bits);
+    items[i] = {(round << (2 * bits)) | h, i};
   }
   if (n < 512) {
     std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
   } else {
-    radix_sort(items, 37);
+    radix_sort(items, 2 * bits + 5);
   }
   std::vector<std::uint32_t> order(n);
   for (std::uint32_t i = 0; i < n; ++i) order[i] = items[i].index;

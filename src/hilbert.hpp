@@ -11,8 +11,9 @@
 
 namespace madd::detail {
 
-// Index of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid.
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) noexcept;
+// Index of cell (x, y) along the Hilbert curve filling a 2^bits x 2^bits grid
+// (bits even, <= 16).
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept;
 
 // A permutation of 0..points.size()-1: BRIO rounds (about halving in size
 // towards the front), each in Hilbert order. Deterministic.

@@ -16,6 +16,7 @@ using detail::Mesh;
 // no_index. `dead` is reused for the new indices, and each working array is
 // released as soon as it is copied, to keep the peak memory low.
 Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points) {
+  std::vector<Point>().swap(mesh.points);
   Triangulation out;
   out.points.assign(points.begin(), points.end());
   const std::uint32_t nt = mesh.triangle_count();
@@ -24,9 +25,10 @@ Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::spa
   out.triangles.resize(live);
   for (std::uint32_t t = 0; t < nt; ++t) {
     if (dead[t] == no_index) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) out.triangles[dead[t]][i] = mesh.tv[3 * t + i];
+    for (std::uint32_t i = 0; i < 3; ++i) out.triangles[dead[t]][i] = mesh.order[mesh.tv[3 * t + i]];
   }
   std::vector<std::uint32_t>().swap(mesh.tv);
+  std::vector<std::uint32_t>().swap(mesh.order);
   out.neighbours.resize(live);
   for (std::uint32_t t = 0; t < nt; ++t) {
     if (dead[t] == no_index) continue;
@@ -94,8 +96,7 @@ std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg) {
 
 Triangulation delaunay(std::span<const Point> points) {
   Mesh mesh;
-  mesh.points = points;
-  if (!detail::build_delaunay(mesh)) {
+  if (!detail::build_delaunay(mesh, points)) {
     Triangulation out;
     out.points.assign(points.begin(), points.end());
     return out;
@@ -106,8 +107,7 @@ Triangulation delaunay(std::span<const Point> points) {
 
 Triangulation triangulate(const Pslg& pslg) {
   Mesh mesh;
-  mesh.points = pslg.points;
-  if (!detail::build_delaunay(mesh)) {
+  if (!detail::build_delaunay(mesh, pslg.points)) {
     Triangulation out;
     out.points = pslg.points;
     return out;
