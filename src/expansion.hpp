@@ -120,22 +120,33 @@ inline Expansion<4> two_two_diff(Pair a, Pair b) noexcept {
 // elen + flen components; returns its length.
 inline std::size_t expansion_sum(std::size_t elen, const double* e, std::size_t flen,
                                  const double* f, double* h) noexcept {
+  // Starting the running sum at 0 makes the first Two-Sum exact with a zero
+  // tail, so every write below lands at an index < elen + flen.
+  double q = 0.0;
+  std::size_t len = 0;
+  const auto add = [&](double v) {
+    const Pair s = two_sum(q, v);
+    h[len] = s.lo;
+    len += s.lo != 0.0;
+    q = s.hi;
+  };
+  // The merge order is data dependent and unpredictable: select with
+  // conditional moves rather than branches while both inputs remain.
   std::size_t i = 0;
   std::size_t j = 0;
-  const auto take = [&]() {
-    if (j >= flen || (i < elen && std::abs(e[i]) < std::abs(f[j]))) return e[i++];
-    return f[j++];
-  };
-  const std::size_t total = elen + flen;
-  if (total == 0) return 0;
-  std::size_t len = 0;
-  double q = take();
-  for (std::size_t k = 1; k < total; ++k) {
-    const Pair s = two_sum(q, take());
-    if (s.lo != 0.0) h[len++] = s.lo;
-    q = s.hi;
+  while (i < elen && j < flen) {
+    const double ev = e[i];
+    const double fv = f[j];
+    const bool from_e = std::abs(ev) < std::abs(fv);
+    add(from_e ? ev : fv);
+    i += from_e;
+    j += !from_e;
   }
-  if (q != 0.0) h[len++] = q;
+  for (; i < elen; ++i) add(e[i]);
+  for (; j < flen; ++j) add(f[j]);
+  if (elen + flen == 0) return 0;
+  h[len] = q;
+  len += q != 0.0;
   return len;
 }
 
@@ -145,17 +156,21 @@ inline std::size_t expansion_scale(std::size_t elen, const double* e, double b, 
   if (elen == 0) return 0;
   std::size_t len = 0;
   const Pair p0 = two_product(e[0], b);
-  if (p0.lo != 0.0) h[len++] = p0.lo;
+  h[len] = p0.lo; // every write is at an index < 2 * elen
+  len += p0.lo != 0.0;
   double q = p0.hi;
   for (std::size_t i = 1; i < elen; ++i) {
     const Pair p = two_product(e[i], b);
     const Pair s = two_sum(q, p.lo);
-    if (s.lo != 0.0) h[len++] = s.lo;
+    h[len] = s.lo;
+    len += s.lo != 0.0;
     const Pair t = fast_two_sum(p.hi, s.hi);
-    if (t.lo != 0.0) h[len++] = t.lo;
+    h[len] = t.lo;
+    len += t.lo != 0.0;
     q = t.hi;
   }
-  if (q != 0.0) h[len++] = q;
+  h[len] = q;
+  len += q != 0.0;
   return len;
 }
 

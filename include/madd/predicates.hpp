@@ -4,6 +4,9 @@
 // These two functions are the only place in madd where a geometric sign is
 // decided. The sign of the result is always exact; its magnitude is an
 // approximation of the determinant.
+// Valid range (no intermediate overflow/underflow, as Shewchuk assumes): zero or
+// |coordinate| in about [1e-137, 1e153] for orient2d and [1e-60, 1e76] for incircle
+// (the lower limit applies to nonzero coordinate differences). Thread-safe, no init.
 #include "madd/geometry.hpp"
 
 namespace madd {
