@@ -1,0 +1,200 @@
+// metrics() on hand-made decompositions with known figures, and
+// verify_decomposition() on good and deliberately broken ones.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "madd/metrics.hpp"
+#include "metrics_fixtures.hpp"
+
+namespace {
+
+using namespace madd;
+using madd::test::Fixture;
+
+bool mentions(const Verification& v, const std::string& text) {
+  return std::any_of(v.problems.begin(), v.problems.end(),
+                     [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+std::string all_problems(const Verification& v) {
+  std::string s;
+  for (const auto& p : v.problems) s += p + "\n";
+  return s;
+}
+
+} // namespace
+
+TEST_SUITE("metrics") {
+
+TEST_CASE("square split at x = 0.5: four right angles, separator length 1, balanced") {
+  const Fixture f = test::square_halves();
+  const Metrics m = metrics(f.decomposition);
+  CHECK(m.subdomains == 2);
+  CHECK(m.separator_segments == 1);
+  CHECK(m.new_angles == 4);
+  CHECK(m.angle_min == doctest::Approx(90));
+  CHECK(m.angle_p10 == doctest::Approx(90));
+  CHECK(m.angle_median == doctest::Approx(90));
+  CHECK(m.angle_p90 == doctest::Approx(90));
+  CHECK(m.boundary_angles == 4);
+  CHECK(m.boundary_angle_median == doctest::Approx(90));
+  CHECK(m.domain_area == doctest::Approx(1));
+  CHECK(m.separator_length == doctest::Approx(1));
+  CHECK(m.separator_length_norm == doctest::Approx(1));
+  CHECK(m.mean_separator_per_subdomain == doctest::Approx(1));
+  CHECK(m.max_separator_over_area_norm == doctest::Approx(2 * std::sqrt(0.5)));
+  CHECK(m.max_area_over_mean == doctest::Approx(1));
+  CHECK(m.min_area_over_mean == doctest::Approx(1));
+  CHECK(m.max_weight_over_mean == doctest::Approx(1));
+  // The split boundary pieces (length 0.5) are the shortest new segments.
+  CHECK(m.shortest_new_segment_norm == doctest::Approx(0.5 / std::sqrt(0.5)));
+}
+
+TEST_CASE("quadrants: twelve right angles, eight of them on the boundary") {
+  const Metrics m = metrics(test::square_quadrants().decomposition);
+  CHECK(m.new_angles == 12);
+  CHECK(m.boundary_angles == 8);
+  CHECK(m.angle_min == doctest::Approx(90));
+  CHECK(m.separator_length == doctest::Approx(2));
+  CHECK(m.mean_separator_per_subdomain == doctest::Approx(1));
+  CHECK(m.max_area_over_mean == doctest::Approx(1));
+}
+
+TEST_CASE("annulus halves and the surrounded square") {
+  const Metrics a = metrics(test::annulus_halves().decomposition);
+  CHECK(a.domain_area == doctest::Approx(12));
+  CHECK(a.new_angles == 8);
+  CHECK(a.angle_min == doctest::Approx(90));
+  CHECK(a.separator_length == doctest::Approx(2));
+
+  const Metrics s = metrics(test::surrounded().decomposition);
+  CHECK(s.domain_area == doctest::Approx(9));
+  CHECK(s.new_angles == 8);  // 4 x 270 deg seen from outside, 4 x 90 from inside
+  CHECK(s.angle_min == doctest::Approx(90));
+  CHECK(s.angle_median == doctest::Approx(180));
+  CHECK(s.boundary_angles == 0);
+  CHECK(std::isnan(s.boundary_angle_median));
+  CHECK(s.max_area_over_mean == doctest::Approx(8.0 / 4.5));
+  CHECK(s.min_area_over_mean == doctest::Approx(1.0 / 4.5));
+}
+
+TEST_CASE("deciles follow Python's statistics.quantiles exclusive method") {
+  // statistics.quantiles([1,2,3,4,5,6,7,8,9,10], n=10) = [1.1, 2.2, ..., 9.9]
+  std::vector<double> v{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+  CHECK(decile(v, 1) == doctest::Approx(1.1));
+  CHECK(decile(v, 5) == doctest::Approx(5.5));
+  CHECK(decile(v, 9) == doctest::Approx(9.9));
+  // statistics.quantiles([10, 20, 30], n=10) = [4.0, 8.0, ..., 36.0]: Python
+  // extrapolates beyond the data for small samples, and so do we (ddcheck.py agrees).
+  std::vector<double> w{10, 20, 30};
+  CHECK(decile(w, 1) == doctest::Approx(4));
+  CHECK(decile(w, 9) == doctest::Approx(36));
+  CHECK(std::isnan(decile({5}, 1)));
+}
+
+TEST_CASE("verify_decomposition accepts every hand-made decomposition") {
+  for (const Fixture& f : test::all_fixtures()) {
+    const Verification v = verify_decomposition(f.decomposition, f.domain,
+                                                 static_cast<std::uint32_t>(f.decomposition.subdomains.size()));
+    INFO(all_problems(v));
+    CHECK(v.ok());
+  }
+}
+
+TEST_CASE("verify_decomposition: wrong count") {
+  const Fixture f = test::square_halves();
+  const Verification v = verify_decomposition(f.decomposition, f.domain, 3);
+  CHECK(mentions(v, "expected 3 subdomains, found 2"));
+}
+
+TEST_CASE("verify_decomposition: crossing separators (overlap)") {
+  // Two triangles over the unit square whose diagonals cross.
+  const Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 4, {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
+                                       {{{{0, 1, 2}}, {0.8, 0.2}, {}}, {{{1, 3, 0}}, {0.2, 0.2}, {}}});
+  const Verification v = verify_decomposition(f.decomposition, f.domain, 2);
+  INFO(all_problems(v));
+  CHECK(mentions(v, "cross"));
+}
+
+TEST_CASE("verify_decomposition: a separator without its twin") {
+  Fixture f = test::square_halves();
+  Decomposition& d = f.decomposition;
+  // Subdomain 1 walks its own copy of the separator instead of sharing it.
+  const auto it = std::find(d.segment_origin.begin(), d.segment_origin.end(), no_index);
+  const auto sep = static_cast<std::uint32_t>(it - d.segment_origin.begin());
+  d.segments.push_back(d.segments[sep]);
+  d.segment_origin.push_back(no_index);
+  for (auto& s : d.subdomains[1].ring_segments[0])
+    if (s == sep) s = static_cast<std::uint32_t>(d.segments.size() - 1);
+  const Verification v = verify_decomposition(d, f.domain, 2);
+  INFO(all_problems(v));
+  CHECK(mentions(v, "in 1 subdomain rings instead of 2"));
+}
+
+TEST_CASE("verify_decomposition: T-junction") {
+  // Right half split again at y = 0.5; the left half does not know the new vertex.
+  const Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {0.5, 1}, {0.5, 0.5}, {1, 0.5}}, 4,
+                                       {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
+                                       {{{{0, 4, 5, 3}}, {0.25, 0.5}, {}},
+                                        {{{4, 1, 7, 6}}, {0.75, 0.25}, {}},
+                                        {{{6, 7, 2, 5}}, {0.75, 0.75}, {}}});
+  const Verification v = verify_decomposition(f.decomposition, f.domain, 3);
+  INFO(all_problems(v));
+  CHECK(mentions(v, "T-junction"));
+}
+
+TEST_CASE("verify_decomposition: an angle below the bound") {
+  // Slanted separator from (0.3, 0) to (0.7, 1): angles of about 68.2 and 111.8 deg.
+  Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0}, {0.7, 1}}, 4,
+                                 {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
+                                 {{{{0, 4, 5, 3}}, {0.2, 0.5}, {}}, {{{4, 1, 2, 5}}, {0.8, 0.5}, {}}});
+  f.decomposition.min_angle_deg = 60;
+  CHECK(verify_decomposition(f.decomposition, f.domain, 2).ok());
+  f.decomposition.min_angle_deg = 70;
+  const Verification v = verify_decomposition(f.decomposition, f.domain, 2);
+  CHECK(mentions(v, "new angle of 68.19"));
+  const Metrics m = metrics(f.decomposition);
+  CHECK(m.angle_min == doctest::Approx(std::atan2(1.0, 0.4) * 180 / M_PI));
+}
+
+TEST_CASE("verify_decomposition: interior point, hole point, orientation, area") {
+  Fixture f = test::rectangle_with_hole();
+  f.decomposition.subdomains[1].interior_point = {0.5, 0.5};  // inside subdomain 0's hole
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "interior point"));
+
+  f = test::rectangle_with_hole();
+  f.decomposition.subdomains[0].hole_points[0] = {0.1, 0.1};
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "hole point"));
+
+  f = test::square_halves();
+  std::reverse(f.decomposition.subdomains[0].rings[0].begin(), f.decomposition.subdomains[0].rings[0].end());
+  CHECK(!verify_decomposition(f.decomposition, f.domain, 2).ok());
+
+  f = test::square_halves();
+  f.decomposition.subdomains[0].area = 0.4;
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "claims area"));
+}
+
+TEST_CASE("verify_decomposition: a gap is not full cover") {
+  // Only the left half of the square is present.
+  Fixture f = test::square_halves();
+  f.decomposition.subdomains.pop_back();
+  const Verification v = verify_decomposition(f.decomposition, f.domain, 1);
+  INFO(all_problems(v));
+  CHECK(mentions(v, "gap or an overlap"));
+  CHECK(mentions(v, "instead of 2"));
+}
+
+TEST_CASE("verify_decomposition: wrong marker and malformed indices do not crash") {
+  Fixture f = test::square_halves();
+  f.decomposition.segments[0].marker = 7;
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "marker"));
+  f = test::square_halves();
+  f.decomposition.subdomains[0].rings[0][1] = 999;
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "malformed"));
+}
+
+} // TEST_SUITE
