@@ -1,0 +1,160 @@
+// The N-way driver (Algorithm 4, Sec. 5), run in rounds: every face still
+// planned to become k > 1 subdomains is split in the same round, the splits
+// computed in parallel from one snapshot and committed in face-id order, so the
+// output is identical for any thread count.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <thread>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/triangulation.hpp"
+#include "split.hpp"
+#include "subdivision.hpp"
+
+namespace madd {
+
+namespace detail {
+
+// New-angle check of the committed geometry (C1), independent of the split logic.
+void check_new_angles(const Subdivision& sub, double min_angle_deg);
+
+} // namespace detail
+
+namespace {
+
+using detail::Subdivision;
+
+unsigned thread_count(const Options& options, std::size_t tasks) {
+  unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
+}
+
+// Runs compute_split for every task; errors are kept per task and the first in
+// task order is rethrown, so failures are deterministic too.
+std::vector<detail::SplitResult> compute_round(const Subdivision& sub, const std::vector<std::uint32_t>& tasks,
+                                               const detail::SplitOptions& split_options, unsigned threads) {
+  std::vector<detail::SplitResult> results(tasks.size());
+  std::vector<std::exception_ptr> errors(tasks.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < tasks.size(); i = next++) {
+      try {
+        results[i] = detail::compute_split(sub, tasks[i], sub.faces[tasks[i]].plan, split_options);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  if (threads <= 1) {
+    worker();
+  } else {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
+  }
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  return results;
+}
+
+// Shares `plan` between the two sides in proportion to what they actually got,
+// so that the imbalance of one level does not compound down the recursion.
+std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
+  std::uint32_t best = plan / 2;
+  double best_cost = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double cost = std::max(w0 / k0, w1 / (plan - k0));
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = k0;
+    }
+  }
+  return best;
+}
+
+Point largest_triangle_centroid(const Pslg& domain) {
+  const Triangulation tri = triangulate(domain);
+  double best = -1.0;
+  Point at;
+  for (const auto& t : tri.triangles) {
+    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
+    const double area = signed_area(a, b, c);
+    if (area > best) {
+      best = area;
+      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+    }
+  }
+  return at;
+}
+
+Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options) {
+  Decomposition d;
+  d.points = sub.points;
+  d.segments = sub.segments;
+  d.segment_origin = sub.origin;
+  d.holes = domain.holes;
+  d.min_angle_deg = options.min_angle_deg;
+  for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    Subdomain s;
+    s.rings = sub.faces[f].rings;
+    s.ring_segments = sub.faces[f].ring_segments;
+    s.area = sub.face_area(f);
+    s.weight = s.area;
+    s.interior_point = sub.faces[f].interior;
+    for (std::size_t r = 1; r < s.rings.size(); ++r) s.hole_points.push_back(sub.hole_point(f, r));
+    d.subdomains.push_back(std::move(s));
+  }
+  return d;
+}
+
+void check_options(const Options& options) {
+  if (options.subdomains == 0) {
+    throw InvalidInputError(InputProblem::other, "the number of subdomains must be at least 1");
+  }
+  if (!(options.min_angle_deg > 0.0 && options.min_angle_deg < 90.0)) {
+    throw InvalidInputError(InputProblem::other, "the minimum angle must lie strictly between 0 and 90 degrees");
+  }
+  if (!(options.refine > 0.0) || !std::isfinite(options.refine)) {
+    throw InvalidInputError(InputProblem::other, "the refinement factor must be positive");
+  }
+}
+
+} // namespace
+
+Decomposition decompose(const Pslg& domain, const Options& options) {
+  check_options(options);
+  validate(domain);
+  Subdivision sub = Subdivision::from_domain(domain);
+  sub.faces[0].plan = options.subdomains;
+  if (options.subdomains == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
+  detail::SplitOptions split_options;
+  split_options.min_angle_deg = options.min_angle_deg;
+  split_options.refine = options.refine;
+  split_options.imbalance = options.imbalance;
+  split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
+  split_options.seed = options.seed;
+  while (true) {
+    std::vector<std::uint32_t> tasks;
+    for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+      if (sub.faces[f].plan > 1) tasks.push_back(f);
+    }
+    if (tasks.empty()) break;
+    const auto results = compute_round(sub, tasks, split_options, thread_count(options, tasks.size()));
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      const std::uint32_t f = tasks[i];
+      const std::uint32_t plan = sub.faces[f].plan;
+      const std::uint32_t k0 = side0_plan(plan, results[i].weight[0], results[i].weight[1]);
+      const std::uint32_t g = sub.commit(f, results[i]);
+      sub.faces[f].plan = k0;
+      sub.faces[g].plan = plan - k0;
+    }
+  }
+  detail::check_new_angles(sub, options.min_angle_deg);
+  return to_decomposition(sub, domain, options);
+}
+
+} // namespace madd

@@ -1,0 +1,143 @@
+// One split: Sec. 3 (refinement, medial axis), Sec. 4.1-4.3 (graphs,
+// partition, repartition), as pure geometry for Subdivision::commit.
+#include "split.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "madd/bisect.hpp"
+#include "madd/error.hpp"
+#include "madd/medial.hpp"
+#include "madd/triangulation.hpp"
+#include "refine.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_side * r)
+constexpr double max_working_points = 4.0e5;
+constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per refinement round
+
+bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
+  return side[g.coarse[e.left]] != side[g.coarse[e.right]];
+}
+
+// Sec. 4.3: two cut partial separators meeting at one boundary point would
+// pinch a side there (and may form an angle below Phi0). Returns pairs of
+// G'_D vertices to keep together so that the later of the two is not cut.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
+                                                                     const std::vector<std::uint8_t>& side) {
+  std::vector<std::uint8_t> used(boundary_points, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (const MedialEdge& e : g.edges) {
+    if (!is_cut(g, side, e)) continue;
+    bool clash = false;
+    for (std::uint32_t p : {e.from, e.to}) {
+      if (p >= boundary_points) continue;
+      clash = clash || used[p];
+      used[p] = 1;
+    }
+    if (clash) out.emplace_back(g.coarse[e.left], g.coarse[e.right]);
+  }
+  return out;
+}
+
+struct Candidate {
+  SplitResult result;
+  double quality = -1.0;
+};
+
+EndRef end_ref(const FaceDomain& fd, const MedialGraph& g, std::uint32_t point) {
+  if (point < fd.refs.size()) return fd.refs[point];
+  return EndRef{EndRef::centre, no_index, point, g.points[point]};
+}
+
+SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDomain& fd, const Triangulation& tri,
+                        const MedialGraph& g, const std::vector<std::uint8_t>& side) {
+  SplitResult r;
+  for (const MedialEdge& e : g.edges) {
+    if (!is_cut(g, side, e)) continue;
+    r.edges.push_back({end_ref(fd, g, e.from), end_ref(fd, g, e.to), side[g.coarse[e.left]]});
+  }
+  r.ring_side.assign(sub.faces[face].rings.size(), 0);
+  std::vector<std::uint8_t> seen(r.ring_side.size(), 0);
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      if (tri.neighbours[t][i] != no_index) continue;
+      const std::uint32_t ring = fd.ring_of[tri.triangles[t][(i + 1) % 3]];
+      if (seen[ring]) continue;
+      seen[ring] = 1;
+      const std::uint32_t v = g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>(i) : 0u);
+      r.ring_side[ring] = side[g.coarse[v]];
+    }
+  }
+  // Interior points: the centroid of the largest atom of each side, strictly inside it.
+  double best[2] = {-1.0, -1.0};
+  for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
+    const int s = side[g.coarse[v]];
+    r.weight[s] += g.gd.vertex_weights[v];
+    if (g.gd.vertex_weights[v] > best[s]) {
+      best[s] = g.gd.vertex_weights[v];
+      const auto c = vertex_triangle_corners(g, tri, v);
+      r.interior[s] = Point{(c[0].x + c[1].x + c[2].x) / 3.0, (c[0].y + c[1].y + c[2].y) / 3.0};
+    }
+  }
+  return r;
+}
+
+// One refinement round: returns a valid candidate or quality -1.
+Candidate try_spacing(const Subdivision& sub, std::uint32_t face, double target, double spacing, int round,
+                      const SplitOptions& options) {
+  Candidate out;
+  const FaceDomain fd = refine_face(sub, face, spacing);
+  const Triangulation tri = triangulate(fd.pslg);
+  const MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, true});
+  if (g.contracted.vertex_count() < 2) return out;
+  BisectOptions bo;
+  bo.target_fraction = target;
+  bo.imbalance = 0.02;
+  bo.seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
+  bo.connected = true;
+  for (int attempt = 0; attempt < max_repartitions; ++attempt) {
+    const Bisection b = bisect(g.contracted, bo);
+    if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return out;
+    const auto conflicts = pinch_conflicts(g, fd.refs.size(), b.side);
+    if (!conflicts.empty()) {
+      bo.keep_together.insert(bo.keep_together.end(), conflicts.begin(), conflicts.end());
+      continue;
+    }
+    const double total = b.weight[0] + b.weight[1];
+    out.quality = std::min(b.weight[0] / (target * total), b.weight[1] / ((1.0 - target) * total));
+    out.result = make_result(sub, face, fd, tri, g, b.side);
+    return out;
+  }
+  return out;
+}
+
+} // namespace
+
+SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options) {
+  const double area = sub.face_area(face);
+  const double perimeter = face_perimeter(sub, face);
+  const double target = static_cast<double>(plan / 2) / static_cast<double>(plan);
+  double spacing = std::sqrt(area) / (points_per_side * options.refine);
+  Candidate best;
+  for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
+    const double h = std::max(spacing, perimeter / max_working_points);
+    Candidate c = try_spacing(sub, face, target, h, round, options);
+    if (c.quality > best.quality) best = std::move(c);
+    if (best.quality >= options.good_balance) break;
+    if (h > spacing) break;  // cannot refine further
+  }
+  if (best.quality < 0.0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "no separator with angles >= %g degrees found for subdomain %u (area %g)",
+                  options.min_angle_deg, face, area);
+    throw DecompositionError(buf, face, area, options.min_angle_deg);
+  }
+  return std::move(best.result);
+}
+
+} // namespace madd::detail

@@ -1,0 +1,94 @@
+#pragma once
+// The global conforming planar subdivision that a decomposition grows in
+// (DESIGN.md "state lives in one place"). A split of one face is computed as
+// pure geometry (SplitResult) and committed here, so that neighbours share
+// every vertex by construction: no T-junctions, ever.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd::detail {
+
+// Where one end of a separator edge lies, as seen in the snapshot the split
+// was computed from. `local` identifies the point within its split (so that
+// edges sharing an end share the committed vertex).
+struct EndRef {
+  enum Kind : std::uint8_t { vertex, on_segment, centre };
+  Kind kind = vertex;
+  std::uint32_t id = no_index;  // vertex: global vertex; on_segment: global segment (snapshot id)
+  std::uint32_t local = 0;      // working point or circumcentre number within the split
+  Point p;                      // exact coordinates of the end
+};
+
+// One separator segment; the new face `left_side` (0 or 1) lies on its left from a to b.
+struct SeparatorEdge {
+  EndRef a;
+  EndRef b;
+  std::uint8_t left_side = 0;
+};
+
+// The outcome of splitting one face (Algorithm 3 as geometry).
+struct SplitResult {
+  std::vector<SeparatorEdge> edges;
+  std::vector<std::uint8_t> ring_side;  // per ring of the face: the side its inner neighbourhood joins
+  double weight[2] = {0.0, 0.0};
+  Point interior[2];                    // a point strictly inside each side
+};
+
+struct Face {
+  std::vector<std::vector<std::uint32_t>> rings;          // [0] outer CCW, others CW
+  std::vector<std::vector<std::uint32_t>> ring_segments;  // ring_segments[r][k]: rings[r][k] -> rings[r][k+1]
+  Point interior;                                         // strictly inside
+  std::uint32_t plan = 1;                                 // final subdomains this face will become
+};
+
+// A half-edge for the planar face walk.
+struct HalfEdge {
+  std::uint32_t from = 0;
+  std::uint32_t to = 0;
+  std::uint32_t segment = 0;
+};
+
+// Cycles of half-edges, each keeping its face on the left: at every vertex the
+// walk takes the first outgoing half-edge clockwise from the way back (exact
+// angular order via orient2d). Returns half-edge indices per cycle.
+std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& points,
+                                                   const std::vector<HalfEdge>& half_edges);
+
+// Signed area of a closed ring of vertex indices (shoelace; positive = CCW).
+double ring_area(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring);
+
+class Subdivision {
+public:
+  std::vector<Point> points;
+  std::vector<Segment> segments;
+  std::vector<std::uint32_t> origin;                     // input segment, no_index for separators
+  std::vector<std::uint32_t> next_piece;                 // next piece along the same original segment
+  std::vector<std::array<std::uint32_t, 2>> seg_faces;   // faces having the segment in a ring
+  std::vector<Face> faces;
+  std::vector<Point> origin_hole;                        // per input segment on a hole ring: its hole point
+  std::vector<std::uint8_t> origin_has_hole;
+
+  // The whole validated domain as one face (rings traced from the segments).
+  // Throws DecompositionError when a hole ring holds no hole point.
+  static Subdivision from_domain(const Pslg& domain);
+
+  // A point strictly inside the region enclosed by hole ring `ring` of `face`
+  // and outside the face: an input hole point or a neighbouring face's interior.
+  Point hole_point(std::uint32_t face, std::size_t ring) const;
+
+  // Inserts the separators of `split` into face `face`, which becomes side 0;
+  // side 1 is appended. Returns the new face id.
+  std::uint32_t commit(std::uint32_t face, const SplitResult& split);
+
+  double face_area(std::uint32_t face) const;
+
+private:
+  std::uint32_t resolve(const EndRef& end);
+  std::uint32_t split_segment(std::uint32_t piece, std::uint32_t vertex);
+};
+
+} // namespace madd::detail
