@@ -8,9 +8,14 @@
 // sign, so the returned sign is always exact.
 //
 // Valid range: like Shewchuk's, these predicates assume no intermediate overflow
-// or underflow. Sufficient conditions on the coordinates (zero is always fine):
-//   orient2d: |x|, |y| <= 1e153, and nonzero coordinate differences >= 1e-137;
-//   incircle: |x|, |y| <= 1e76,  and nonzero coordinate differences >= 1e-60.
+// or underflow. Sufficient conditions, where the lower limit applies to every
+// nonzero coordinate and every nonzero coordinate difference:
+//   orient2d: magnitudes in [1e-137, 1e153] (2^-455 .. 2^508);
+//   incircle: magnitudes in [1e-60, 1e76].
+// Why: all bits of the inputs then lie at or above 2^-(455+52), so every exact
+// product of two (orient2d) or four (incircle, 2^-216 limit) such values is a
+// multiple of a number >= 2^-1074 and two_product stays exact; the upper limits
+// keep the largest determinant term (and the permanent) below DBL_MAX.
 // This file is compiled with -ffp-contract=off (see CMakeLists.txt).
 #include "madd/predicates.hpp"
 

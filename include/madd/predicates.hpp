@@ -6,7 +6,8 @@
 // approximation of the determinant.
 // Valid range (no intermediate overflow/underflow, as Shewchuk assumes): zero or
 // |coordinate| in about [1e-137, 1e153] for orient2d and [1e-60, 1e76] for incircle
-// (the lower limit applies to nonzero coordinate differences). Thread-safe, no init.
+// (the lower limit applies to nonzero coordinates and nonzero coordinate
+// differences). Thread-safe; no initialisation call.
 #include "madd/geometry.hpp"
 
 namespace madd {
