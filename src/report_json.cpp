@@ -1,5 +1,6 @@
 // Output 5: the quality report, every figure of docs/QUALITY.md as one JSON
 // object. Key names match shared/tools/ddcheck.py where both compute a figure.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -9,6 +10,13 @@
 namespace madd {
 
 namespace {
+
+// The shortest text that reads back as exactly v.
+void append_shortest(std::string& out, double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  out.append(buffer, result.ptr);
+}
 
 class JsonObject {
 public:
@@ -22,7 +30,7 @@ public:
   void number(std::string_view name, double v) {
     key(name);
     if (std::isfinite(v))
-      detail::append_g17(out_, v);
+      append_shortest(out_, v);
     else
       out_ += "null";  // JSON has no NaN or infinity
   }
