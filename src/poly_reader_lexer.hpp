@@ -61,7 +61,9 @@ public:
   // extra field means the header's attribute or marker count disagrees with
   // the lines, so madd reports it instead of guessing (FORMATS.md, "Bad input").
   void end_of_line(const char* what) {
-    if (has_token()) fail(cursor_, std::string("unexpected extra field after ") + what);
+    if (has_token())
+      fail(cursor_, std::string("unexpected extra field after ") + what +
+                        " (do the header counts match the lines that follow?)");
   }
 
   // Bytes left after the current line, to bound counts before allocating.

@@ -180,8 +180,8 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
   for (std::uint32_t v = 0; v < p.points.size(); ++v)
     if (degree[v] % 2 != 0)
       r.fail(InputProblem::open_boundary,
-             r.vertex(v) + " ends " + std::to_string(degree[v]) +
-                 " segments, an odd number: the boundary is not closed there",
+             r.vertex(v) + " is an endpoint of " + std::to_string(degree[v]) +
+                 " segment(s), an odd number: the boundary is not closed there",
              {r.id(v)}, {p.points[v]}, Item::point, v);
   std::vector<std::uint32_t> parts; // first segment bounding each kept face
   std::vector<bool> seen(fm.ring_count(), false);
