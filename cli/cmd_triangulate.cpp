@@ -1,0 +1,181 @@
+// `madd triangulate [-o PREFIX] FILE.poly`: constrained Delaunay triangulation
+// of a domain, written as Triangle writes it (.node, .ele, .neigh, .edge).
+#include <getopt.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "madd/poly_io.hpp"
+#include "madd/triangulation.hpp"
+
+namespace madd::cli {
+namespace {
+
+constexpr const char* triangulate_help =
+    "usage: madd triangulate [options] FILE.poly\n\n"
+    "Constrained Delaunay triangulation of the domain in FILE.poly (holes and the\n"
+    "outside removed, as Triangle -p does), checked by verify_triangulation, then\n"
+    "written in Triangle's formats: PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge.\n"
+    "Ids start at the input file's first index. Markers follow Triangle: constrained\n"
+    "edges carry their segment's marker, other edges 0; vertices keep a nonzero input\n"
+    "marker, else take a marker of a segment through them, else 1 on the boundary.\n\n"
+    "options:\n"
+    "  -o, --output PREFIX  output prefix (default: FILE without .poly, plus \".1\")\n"
+    "  -q, --quiet          print nothing on success\n"
+    "  -h, --help           this text\n\n"
+    "exit codes: 0 ok, 2 usage error, 3 bad input, 5 output not written, 70 internal error\n";
+
+struct Args {
+  std::string input;
+  std::string prefix;
+  bool quiet = false;
+};
+
+void append(std::string& out, const char* fmt, auto... values) {
+  char buf[256];
+  const int n = std::snprintf(buf, sizeof buf, fmt, values...);
+  if (n > 0) out.append(buf, static_cast<std::size_t>(n));
+}
+
+// Output marker of constrained edge (t, i): the segment's marker, or 1 when the
+// file gave no segment markers (every segment is then a boundary).
+int edge_marker(const Pslg& pslg, const Triangulation& tri, std::uint32_t t, int i) {
+  const std::uint32_t s = tri.segment_of[t][i];
+  if (s == no_index) return 0;
+  return pslg.has_segment_markers ? pslg.segments[s].marker : 1;
+}
+
+std::vector<int> vertex_markers(const Pslg& pslg, const Triangulation& tri) {
+  std::vector<int> mark(tri.points.size(), 0);
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      int m = edge_marker(pslg, tri, t, i);
+      if (m == 0 && tri.neighbours[t][i] == no_index) m = 1;
+      for (const int k : {(i + 1) % 3, (i + 2) % 3}) {
+        if (mark[tri.triangles[t][k]] == 0) mark[tri.triangles[t][k]] = m;
+      }
+    }
+  }
+  for (std::size_t v = 0; v < pslg.point_markers.size() && v < mark.size(); ++v) {
+    if (pslg.point_markers[v] != 0) mark[v] = pslg.point_markers[v];
+  }
+  return mark;
+}
+
+std::string node_text(const Pslg& pslg, const Triangulation& tri) {
+  const std::vector<int> mark = vertex_markers(pslg, tri);
+  const unsigned base = pslg.first_index;
+  std::string out;
+  append(out, "%zu 2 %u 1\n", tri.points.size(), pslg.attributes_per_point);
+  for (std::size_t v = 0; v < tri.points.size(); ++v) {
+    append(out, "%zu %.17g %.17g", v + base, tri.points[v].x, tri.points[v].y);
+    for (std::size_t k = 0; k < pslg.attributes_per_point; ++k) append(out, " %.17g", pslg.attribute(v, k));
+    append(out, " %d\n", mark[v]);
+  }
+  return out;
+}
+
+std::string ele_text(const Pslg& pslg, const Triangulation& tri) {
+  const unsigned base = pslg.first_index;
+  std::string out;
+  append(out, "%zu 3 0\n", tri.triangle_count());
+  for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
+    const auto& c = tri.triangles[t];
+    append(out, "%zu %u %u %u\n", t + base, c[0] + base, c[1] + base, c[2] + base);
+  }
+  return out;
+}
+
+std::string neigh_text(const Pslg& pslg, const Triangulation& tri) {
+  const long long base = pslg.first_index;
+  std::string out;
+  append(out, "%zu 3\n", tri.triangle_count());
+  for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
+    long long n[3];
+    for (int i = 0; i < 3; ++i) n[i] = tri.neighbours[t][i] == no_index ? -1 : tri.neighbours[t][i] + base;
+    append(out, "%lld %lld %lld %lld\n", static_cast<long long>(t) + base, n[0], n[1], n[2]);
+  }
+  return out;
+}
+
+// Each edge once: from the triangle with the smaller index, or the only one.
+std::string edge_text(const Pslg& pslg, const Triangulation& tri) {
+  const unsigned base = pslg.first_index;
+  std::string body;
+  std::size_t count = 0;
+  const bool hull_marks = pslg.segments.empty();
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = tri.neighbours[t][i];
+      if (u != no_index && u < t) continue;
+      int m = edge_marker(pslg, tri, t, i);
+      if (hull_marks && u == no_index) m = 1;
+      ++count;
+      append(body, "%zu %u %u %d\n", count - 1 + base, tri.triangles[t][(i + 1) % 3] + base,
+             tri.triangles[t][(i + 2) % 3] + base, m);
+    }
+  }
+  std::string out;
+  append(out, "%zu 1\n", count);
+  return out + body;
+}
+
+int triangulate_body(void* context) {
+  const auto& args = *static_cast<Args*>(context);
+  const Pslg pslg = read_domain(args.input);
+  const Triangulation tri = triangulate(pslg);
+  const Verification check = verify_triangulation(tri, &pslg);
+  if (!check.ok()) {
+    std::fprintf(stderr, "madd triangulate: internal error: the triangulation failed its check: %s\n",
+                 check.problems.front().c_str());
+    return exit_internal;
+  }
+  write_file_atomically(args.prefix + ".node", node_text(pslg, tri));
+  write_file_atomically(args.prefix + ".ele", ele_text(pslg, tri));
+  write_file_atomically(args.prefix + ".neigh", neigh_text(pslg, tri));
+  write_file_atomically(args.prefix + ".edge", edge_text(pslg, tri));
+  if (!args.quiet) {
+    std::printf("%s: %zu vertices, %zu triangles -> %s.{node,ele,neigh,edge}\n", args.input.c_str(),
+                tri.points.size(), tri.triangle_count(), args.prefix.c_str());
+  }
+  return exit_ok;
+}
+
+int run_triangulate(int argc, char** argv) {
+  static const option long_options[] = {{"output", required_argument, nullptr, 'o'},
+                                        {"quiet", no_argument, nullptr, 'q'},
+                                        {"help", no_argument, nullptr, 'h'},
+                                        {nullptr, 0, nullptr, 0}};
+  Args args;
+  optind = 0;
+  int c;
+  while ((c = getopt_long(argc, argv, "o:qh", long_options, nullptr)) != -1) {
+    switch (c) {
+    case 'o': args.prefix = optarg; break;
+    case 'q': args.quiet = true; break;
+    case 'h': std::fputs(triangulate_help, stdout); return exit_ok;
+    default: return usage_error("triangulate", "unknown option");
+    }
+  }
+  if (optind + 1 != argc) return usage_error("triangulate", "expected exactly one input file");
+  args.input = argv[optind];
+  if (args.prefix.empty()) {
+    std::string stem = args.input;
+    for (const char* ext : {".poly", ".node"}) {
+      if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ext) == 0) {
+        stem.resize(stem.size() - 5);
+        break;
+      }
+    }
+    args.prefix = stem + ".1";
+  }
+  return run_guarded("triangulate", triangulate_body, &args);
+}
+
+const CommandRegistration registration({"triangulate", "constrained Delaunay triangulation, Triangle's outputs",
+                                        run_triangulate});
+
+} // namespace
+} // namespace madd::cli
