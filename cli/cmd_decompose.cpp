@@ -106,9 +106,12 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
   }
   for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.report_out})
     if (!file->empty()) std::fprintf(out, "  wrote %s\n", file->c_str());
-  if (!args.split_dir.empty())
-    std::fprintf(out, "  wrote %s/%s\n", args.split_dir.c_str(),
-                 split_file_name(stem_of(args.input), 0, static_cast<std::uint32_t>(d.subdomains.size())).c_str());
+  if (!args.split_dir.empty()) {
+    const auto n = static_cast<std::uint32_t>(d.subdomains.size());
+    const std::string stem = stem_of(args.input);
+    std::fprintf(out, "  wrote %s/%s ... %s (%u files)\n", args.split_dir.c_str(), split_file_name(stem, 0, n).c_str(),
+                 split_file_name(stem, n - 1, n).c_str(), n);
+  }
 }
 
 // Every output is formatted in memory first, then written file by file

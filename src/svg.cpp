@@ -8,6 +8,7 @@
 #include "madd/output.hpp"
 #include "metrics_detail.hpp"
 #include "output_detail.hpp"
+#include "verify_decomposition_detail.hpp"
 
 namespace madd {
 
@@ -124,6 +125,27 @@ void append_edges(std::string& boundary, std::string& separators, const Decompos
     }
 }
 
+// Where to write subdomain k's number: its area centroid when that lies
+// strictly inside it (it looks centred), otherwise its interior point.
+Point label_point(const Decomposition& d, const Subdomain& sub) {
+  double twice = 0.0, cx = 0.0, cy = 0.0;
+  const Point o = d.points[sub.rings[0][0]];
+  for (const auto& ring : sub.rings)
+    for (std::size_t j = 0; j < ring.size(); ++j) {
+      const Point a = d.points[ring[j]] - o, b = d.points[ring[(j + 1) % ring.size()]] - o;
+      const double c = cross(a, b);
+      twice += c;
+      cx += (a.x + b.x) * c;
+      cy += (a.y + b.y) * c;
+    }
+  if (twice == 0.0) return sub.interior_point;
+  const Point centroid{o.x + cx / (3.0 * twice), o.y + cy / (3.0 * twice)};
+  bool inside = detail::locate_in_ring(d.points, sub.rings[0], centroid) > 0;
+  for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
+    inside = detail::locate_in_ring(d.points, sub.rings[r], centroid) < 0;
+  return inside ? centroid : sub.interior_point;
+}
+
 void append_annotations(std::string& out, const Decomposition& d, const View& view, const SvgOptions& options) {
   if (options.numbers && !d.subdomains.empty()) {
     const double area = [&] {
@@ -136,10 +158,11 @@ void append_annotations(std::string& out, const Decomposition& d, const View& vi
     append_px(out, size);
     out += "\" fill=\"#222\">\n";
     for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+      const Point at = label_point(d, d.subdomains[k]);
       out += "<text x=\"";
-      append_px(out, view.x(d.subdomains[k].interior_point.x));
+      append_px(out, view.x(at.x));
       out += "\" y=\"";
-      append_px(out, view.y(d.subdomains[k].interior_point.y));
+      append_px(out, view.y(at.y));
       out += "\">" + std::to_string(k) + "</text>\n";
     }
     out += "</g>\n";
@@ -179,7 +202,7 @@ std::string format_svg(const Decomposition& d, const SvgOptions& options) {
   append_edges(boundary, separators, d, view);
   const double thick = std::max(1.5, 0.002 * view.width);
   out += "<g fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-  out += "<path stroke=\"#333\" stroke-width=\"0.6\" d=\"" + separators + "\"/>\n";
+  out += "<path stroke=\"#333\" stroke-width=\"0.8\" d=\"" + separators + "\"/>\n";
   out += "<path stroke=\"#000\" stroke-width=\"";
   append_px(out, thick);
   out += "\" d=\"" + boundary + "\"/>\n</g>\n";
