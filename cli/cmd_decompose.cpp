@@ -138,7 +138,18 @@ int decompose_body(void* context) {
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
-  const Pslg domain = read_domain(args.input);
+  Pslg domain;
+  try {
+    domain = read_domain(args.input);
+  } catch (const ParseError&) {
+    throw;
+  } catch (const InvalidInputError&) {
+    throw;
+  } catch (const Error& e) {  // unreadable input is bad input (exit 3), not an output failure
+    progress.done();
+    std::fprintf(stderr, "madd decompose: error: %s\n", e.what());
+    return exit_bad_input;
+  }
   times.push_back({"read", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();

@@ -98,7 +98,7 @@ std::string format_report_json(const Metrics& m) {
     out += i == 0 ? "" : ", ";
     append_string(out, m.times[i].name);
     out += ": ";
-    detail::append_g17(out, m.times[i].seconds);
+    append_shortest(out, m.times[i].seconds);
   }
   out += "}";
   o.close();
