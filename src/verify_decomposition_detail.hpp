@@ -24,9 +24,9 @@ private:
   std::size_t count_ = 0;
 };
 
-// Reports every pair of segments that cross, overlap, or touch anywhere other
-// than a shared endpoint (including a vertex in the interior of a segment:
-// a T-junction). Exact (orient2d); a uniform grid keeps it near-linear.
+// Reports a pair of segments that cross, overlap, or touch anywhere other than
+// a shared endpoint (including a vertex in the interior of a segment: a
+// T-junction), if any. Exact (orient2d); a uniform grid keeps it near-linear.
 void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
                              ProblemLog& log);
 
