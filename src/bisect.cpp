@@ -13,32 +13,32 @@ namespace madd {
 
 namespace {
 
-void require(bool ok, InputProblem problem, const std::string& message, std::vector<std::int64_t> ids = {}) {
-  if (!ok) throw InvalidInputError(problem, message, std::move(ids));
+[[noreturn]] void reject(InputProblem problem, const char* message, std::vector<std::int64_t> ids = {}) {
+  throw InvalidInputError(problem, message, std::move(ids));
 }
 
+// Checked once on entry (STYLE.md 5); the stages below only assert.
 void check_input(const Graph& g, const BisectOptions& o) {
   const std::size_t n = g.vertex_count();
-  require(g.offsets.empty() || g.offsets.front() == 0, InputProblem::other, "graph offsets must start at 0");
-  require(g.vertex_weights.size() == n, InputProblem::other, "graph needs one vertex weight per vertex");
-  require(g.edge_weights.size() == g.adjacency.size() && (n == 0 ? g.adjacency.empty() : g.offsets[n] == g.adjacency.size()),
-          InputProblem::other, "graph adjacency and edge weights disagree with the offsets");
+  if (!g.offsets.empty() && g.offsets.front() != 0) reject(InputProblem::other, "graph offsets must start at 0");
+  if (g.vertex_weights.size() != n) reject(InputProblem::other, "graph needs one vertex weight per vertex");
+  if (g.edge_weights.size() != g.adjacency.size() || (n == 0 ? !g.adjacency.empty() : g.offsets[n] != g.adjacency.size()))
+    reject(InputProblem::other, "graph adjacency and edge weights disagree with the offsets");
   for (std::size_t v = 0; v < n; ++v) {
-    require(g.offsets[v] <= g.offsets[v + 1], InputProblem::other, "graph offsets decrease",
-            {static_cast<std::int64_t>(v)});
-    require(std::isfinite(g.vertex_weights[v]) && g.vertex_weights[v] >= 0.0, InputProblem::bad_weight,
-            "vertex weight must be finite and non-negative", {static_cast<std::int64_t>(v)});
+    if (g.offsets[v] > g.offsets[v + 1]) reject(InputProblem::other, "graph offsets decrease", {static_cast<std::int64_t>(v)});
+    if (!(std::isfinite(g.vertex_weights[v]) && g.vertex_weights[v] >= 0.0))
+      reject(InputProblem::bad_weight, "vertex weight must be finite and non-negative", {static_cast<std::int64_t>(v)});
   }
   for (std::size_t i = 0; i < g.adjacency.size(); ++i) {
-    require(g.adjacency[i] < n, InputProblem::other, "neighbour index out of range", {g.adjacency[i]});
-    require(std::isfinite(g.edge_weights[i]) && g.edge_weights[i] >= 0.0, InputProblem::bad_weight,
-            "edge weight must be finite and non-negative", {static_cast<std::int64_t>(i)});
+    if (g.adjacency[i] >= n) reject(InputProblem::other, "neighbour index out of range", {g.adjacency[i]});
+    if (!(std::isfinite(g.edge_weights[i]) && g.edge_weights[i] >= 0.0))
+      reject(InputProblem::bad_weight, "edge weight must be finite and non-negative", {static_cast<std::int64_t>(i)});
   }
-  require(o.target_fraction > 0.0 && o.target_fraction < 1.0, InputProblem::other,
-          "target fraction must lie strictly between 0 and 1");
-  require(std::isfinite(o.imbalance) && o.imbalance >= 0.0, InputProblem::other, "imbalance must be >= 0");
+  if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
+    reject(InputProblem::other, "target fraction must lie strictly between 0 and 1");
+  if (!(std::isfinite(o.imbalance) && o.imbalance >= 0.0)) reject(InputProblem::other, "imbalance must be >= 0");
   for (const auto& [a, b] : o.keep_together)
-    require(a < n && b < n, InputProblem::other, "keep_together vertex out of range", {a, b});
+    if (a >= n || b >= n) reject(InputProblem::other, "keep_together vertex out of range", {a, b});
 }
 
 // Union-find over the keep_together pairs; returns each vertex's group id,

@@ -28,23 +28,32 @@ Matching heavy_edge_matching(const Graph& graph, SplitMix64& rng, bool sorted, d
   const auto n = static_cast<std::uint32_t>(graph.vertex_count());
   std::vector<std::uint32_t> order = random_permutation(n, rng);
   if (sorted) order = sorted_order(graph, std::move(order));
-  Matching m;
-  m.map.assign(n, no_vertex);
+  std::vector<std::uint32_t> mate(n, no_vertex);
   for (const std::uint32_t v : order) {
-    if (m.map[v] != no_vertex) continue;
-    std::uint32_t best = no_vertex;
+    if (mate[v] != no_vertex) continue;
+    std::uint32_t best = v;
     double best_weight = -1.0;
     const double room = max_vertex_weight - graph.vertex_weights[v];
     for (std::uint32_t i = graph.offsets[v]; i < graph.offsets[v + 1]; ++i) {
       const std::uint32_t u = graph.adjacency[i];
-      if (m.map[u] != no_vertex || graph.edge_weights[i] <= best_weight) continue;
+      if (mate[u] != no_vertex || graph.edge_weights[i] <= best_weight) continue;
       if (graph.vertex_weights[u] > room) continue;
       best = u;
       best_weight = graph.edge_weights[i];
     }
-    m.map[v] = m.coarse_count;
-    if (best != no_vertex) m.map[best] = m.coarse_count;
-    ++m.coarse_count;
+    mate[v] = best;
+    mate[best] = v;
+  }
+  // Number coarse vertices in fine-vertex order (as METIS does), not in the
+  // random visit order: keeps the memory locality of the input at every level.
+  Matching m;
+  m.map.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (mate[v] < v) {
+      m.map[v] = m.map[mate[v]];
+    } else {
+      m.map[v] = m.coarse_count++;
+    }
   }
   return m;
 }

@@ -108,8 +108,8 @@ Graph contract(const Graph& graph, std::span<const std::uint32_t> map, std::uint
   Graph coarse;
   coarse.offsets.assign(coarse_count + 1, 0);
   coarse.vertex_weights.assign(coarse_count, 0.0);
-  coarse.adjacency.reserve(graph.adjacency.size() / 2 + 16);
-  coarse.edge_weights.reserve(graph.adjacency.size() / 2 + 16);
+  coarse.adjacency.reserve(graph.adjacency.size());  // an upper bound: no regrowth copies
+  coarse.edge_weights.reserve(graph.adjacency.size());
   std::vector<std::uint32_t> slot(coarse_count, no_vertex);
   for (std::uint32_t c = 0; c < coarse_count; ++c) {
     const auto begin = static_cast<std::uint32_t>(coarse.adjacency.size());

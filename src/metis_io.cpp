@@ -46,6 +46,11 @@ public:
   }
   static std::vector<Token> split(std::string_view line) {
     std::vector<Token> tokens;
+    split_into(line, tokens);
+    return tokens;
+  }
+  static void split_into(std::string_view line, std::vector<Token>& tokens) {
+    tokens.clear();
     std::size_t i = 0;
     while (i < line.size()) {
       while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -53,7 +58,6 @@ public:
       while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
       if (i > start) tokens.push_back({line.substr(start, i - start), start + 1});
     }
-    return tokens;
   }
   std::uint64_t number(const Token& t, const char* what) const {
     std::uint64_t value = 0;
@@ -141,12 +145,13 @@ VertexLines read_vertices(Reader& r, const Header& h, Graph& g) {
   g.adjacency.reserve(2 * h.m);
   g.edge_weights.reserve(2 * h.m);
   std::vector<std::uint32_t> listed(h.n, detail::no_vertex);  // who last listed each vertex
+  std::vector<Token> t;
   for (std::uint32_t v = 0; v < h.n; ++v) {
     if (!r.next_line(false))
       r.fail(r.line_no() + 1, 1, "file ends after " + std::to_string(v) + " of " + std::to_string(h.n) + " vertex lines");
     where.line.push_back(static_cast<std::uint32_t>(r.line_no()));
     where.start.push_back(r.line_start());
-    const std::vector<Token> t = Reader::split(r.line());
+    Reader::split_into(r.line(), t);
     std::size_t i = 0;
     if (h.vertex_weights) {
       if (t.empty()) r.fail(r.line_no(), 1, "vertex " + std::to_string(v + 1) + " has no weight");
@@ -205,6 +210,7 @@ void check_symmetric(const Reader& r, const Header& h, const Graph& g, const Ver
     }
     for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
       const std::uint32_t u = from[k], i = entry[k];
+      if (mark[u] == v && weight[u] == g.edge_weights[i]) continue;
       const std::size_t col = entry_column(r.text(), where.start[u], h, i - g.offsets[u]);
       const std::string uv = std::to_string(u + 1), vv = std::to_string(v + 1);
       if (mark[u] != v)
