@@ -54,8 +54,15 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
       const std::uint32_t seg = f.ring_segments[r][k];
       const double pieces = std::max(1.0, std::ceil(distance(a, b) / spacing));
       const auto m = static_cast<std::uint32_t>(std::min(pieces, 1e6));
+      // Interpolate in the segment's stored direction, so that two faces
+      // sharing the segment compute bit-identical points where their
+      // subdivisions coincide (no near-duplicate vertices on commit).
+      const bool forward = sub.segments[seg].a == v;
+      const Point s0 = forward ? a : b;
+      const Point s1 = forward ? b : a;
       for (std::uint32_t j = 1; j < m; ++j) {
-        const Point p = lerp(a, b, static_cast<double>(j) / static_cast<double>(m));
+        const std::uint32_t along = forward ? j : m - j;
+        const Point p = lerp(s0, s1, static_cast<double>(along) / static_cast<double>(m));
         const float bonus = (2 * j == m) ? midpoint_bonus : 1.0f;
         cycle.push_back(add_point(p, EndRef{EndRef::on_segment, seg, 0, p}, static_cast<std::uint32_t>(r), bonus));
       }

@@ -18,7 +18,8 @@ namespace {
 
 constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_side * r)
 constexpr double max_working_points = 4.0e5;
-constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per refinement round
+constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
+constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
@@ -87,32 +88,64 @@ SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDo
   return r;
 }
 
-// One refinement round: returns a valid candidate or quality -1.
-Candidate try_spacing(const Subdivision& sub, std::uint32_t face, double target, double spacing, int round,
+// Bisects G'_D aiming at `target` on side 0, repartitioning with
+// keep-together constraints while cut separators pinch at a boundary point
+// (Sec. 4.3). Returns an empty side vector when no valid bisection is found.
+std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boundary_points, double target,
+                                          std::uint64_t seed, double weights[2]) {
+  BisectOptions bo;
+  bo.target_fraction = target;
+  bo.imbalance = 0.02;
+  bo.seed = seed;
+  bo.connected = true;
+  for (int attempt = 0; attempt < max_repartitions; ++attempt) {
+    Bisection b = bisect(g.contracted, bo);
+    if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return {};
+    const auto conflicts = pinch_conflicts(g, boundary_points, b.side);
+    if (conflicts.empty()) {
+      weights[0] = b.weight[0];
+      weights[1] = b.weight[1];
+      return std::move(b.side);
+    }
+    bo.keep_together.insert(bo.keep_together.end(), conflicts.begin(), conflicts.end());
+  }
+  return {};
+}
+
+// How well a split serves a face planned for `plan` subdomains: 1 when the
+// best sharing of the plan between the sides gives every final subdomain the
+// mean weight, lower as the largest one grows (the C3 figure, inverted).
+double balance_quality(std::uint32_t plan, double w0, double w1) {
+  double best = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) best = std::min(best, std::max(w0 / k0, w1 / (plan - k0)));
+  return (w0 + w1) / static_cast<double>(plan) / best;
+}
+
+// One refinement round. Side 0 aims at j/plan for j = floor(plan/2) first,
+// then at nearby j when that split is not balanced enough: any j works,
+// because the plan is shared between the sides after the split.
+Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
                       const SplitOptions& options) {
   Candidate out;
   const FaceDomain fd = refine_face(sub, face, spacing);
   const Triangulation tri = triangulate(fd.pslg);
   const MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, true});
   if (g.contracted.vertex_count() < 2) return out;
-  BisectOptions bo;
-  bo.target_fraction = target;
-  bo.imbalance = 0.02;
-  bo.seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
-  bo.connected = true;
-  for (int attempt = 0; attempt < max_repartitions; ++attempt) {
-    const Bisection b = bisect(g.contracted, bo);
-    if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return out;
-    const auto conflicts = pinch_conflicts(g, fd.refs.size(), b.side);
-    if (!conflicts.empty()) {
-      bo.keep_together.insert(bo.keep_together.end(), conflicts.begin(), conflicts.end());
-      continue;
+  const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
+  std::vector<std::uint8_t> best_side;
+  const std::uint32_t half = plan / 2;
+  for (std::uint32_t j = half; j >= 1 && half - j <= max_extra_targets; --j) {
+    double w[2] = {0.0, 0.0};
+    auto side = valid_bisection(g, fd.refs.size(), static_cast<double>(j) / plan, seed + j, w);
+    if (side.empty()) continue;
+    const double q = balance_quality(plan, w[0], w[1]);
+    if (q > out.quality) {
+      out.quality = q;
+      best_side = std::move(side);
     }
-    const double total = b.weight[0] + b.weight[1];
-    out.quality = std::min(b.weight[0] / (target * total), b.weight[1] / ((1.0 - target) * total));
-    out.result = make_result(sub, face, fd, tri, g, b.side);
-    return out;
+    if (out.quality >= options.good_balance) break;
   }
+  if (!best_side.empty()) out.result = make_result(sub, face, fd, tri, g, best_side);
   return out;
 }
 
@@ -121,13 +154,16 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, double target,
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options) {
   const double area = sub.face_area(face);
   const double perimeter = face_perimeter(sub, face);
-  const double target = static_cast<double>(plan / 2) / static_cast<double>(plan);
   double spacing = std::sqrt(area) / (points_per_side * options.refine);
   Candidate best;
   for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
     const double h = std::max(spacing, perimeter / max_working_points);
-    Candidate c = try_spacing(sub, face, target, h, round, options);
+    Candidate c = try_spacing(sub, face, plan, h, round, options);
+    // Refinement that does not improve the balance will not start to: the
+    // limit is the shape (where acceptable separators exist), not the spacing.
+    const bool stalled = round > 0 && c.quality < best.quality + 0.01;
     if (c.quality > best.quality) best = std::move(c);
+    if (stalled && best.quality >= 0.0) break;
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }

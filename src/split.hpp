@@ -13,7 +13,7 @@ struct SplitOptions {
   double min_angle_deg = 60.0;
   double refine = 3.0;          // r
   double imbalance = 0.75;      // accept when each side has >= this share of its target
-  double good_balance = 0.93;   // stop refining once each side has >= this share
+  double good_balance = 0.95;   // stop trying targets and refining at this balance quality
   int max_refinement_rounds = 4;
   std::uint64_t seed = 1;
 };
