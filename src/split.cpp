@@ -163,7 +163,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     // limit is the shape (where acceptable separators exist), not the spacing.
     const bool stalled = round > 0 && c.quality < best.quality + 0.01;
     if (c.quality > best.quality) best = std::move(c);
-    if (stalled && best.quality >= 0.0) break;
+    if (stalled && best.quality >= options.imbalance) break;
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }

@@ -1,0 +1,213 @@
+// The MADD decomposition end to end (paper Sec. 3-5): validity, C1, and
+// determinism across thread counts.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/metrics.hpp"
+#include "madd/poly_io.hpp"
+
+namespace {
+
+using madd::Decomposition;
+using madd::Point;
+using madd::Pslg;
+
+Pslg polygon(const std::vector<std::vector<Point>>& rings, const std::vector<Point>& holes = {}) {
+  Pslg p;
+  p.first_index = 0;
+  for (const auto& ring : rings) {
+    const auto base = static_cast<std::uint32_t>(p.points.size());
+    const auto n = static_cast<std::uint32_t>(ring.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+      p.points.push_back(ring[i]);
+      p.segments.push_back({base + i, base + (i + 1) % n, 0});
+    }
+  }
+  p.holes = holes;
+  return p;
+}
+
+std::vector<Point> circle(Point c, double r, int n, bool clockwise = false) {
+  std::vector<Point> out;
+  for (int i = 0; i < n; ++i) {
+    const double a = (clockwise ? -1.0 : 1.0) * 2.0 * std::numbers::pi * i / n;
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  return out;
+}
+
+// Interior angle (degrees) at corner k of a ring, plain trigonometry.
+double corner_angle(const Decomposition& d, const std::vector<std::uint32_t>& ring, std::size_t k) {
+  const std::size_t n = ring.size();
+  const Point v = d.points[ring[k]];
+  const Point prev = d.points[ring[(k + n - 1) % n]];
+  const Point next = d.points[ring[(k + 1) % n]];
+  double a = std::atan2(prev.y - v.y, prev.x - v.x) - std::atan2(next.y - v.y, next.x - v.x);
+  while (a < 0) a += 2 * std::numbers::pi;
+  return a * 180.0 / std::numbers::pi;
+}
+
+double ring_area(const Decomposition& d, const std::vector<std::uint32_t>& ring) {
+  double twice = 0.0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point a = d.points[ring[k]];
+    const Point b = d.points[ring[(k + 1) % ring.size()]];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * twice;
+}
+
+// Independent checks: ring/segment consistency, each separator in exactly two
+// rings in opposite directions, each boundary piece in one, one outer CCW ring
+// per subdomain, area sum, every new angle >= Phi0. Plus verify_decomposition.
+void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32_t n, double phi) {
+  REQUIRE(d.subdomains.size() == n);
+  std::map<std::uint32_t, std::vector<int>> uses;  // segment -> +1 (a->b) / -1 (b->a) per use
+  double total = 0.0;
+  for (const madd::Subdomain& s : d.subdomains) {
+    REQUIRE(!s.rings.empty());
+    CHECK(ring_area(d, s.rings[0]) > 0.0);
+    CHECK(s.hole_points.size() == s.rings.size() - 1);
+    for (std::size_t r = 0; r < s.rings.size(); ++r) {
+      const auto& ring = s.rings[r];
+      if (r > 0) CHECK(ring_area(d, ring) < 0.0);
+      total += ring_area(d, ring);
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const madd::Segment& seg = d.segments[s.ring_segments[r][k]];
+        const std::uint32_t a = ring[k], b = ring[(k + 1) % ring.size()];
+        const bool forward = seg.a == a && seg.b == b;
+        CHECK((forward || (seg.a == b && seg.b == a)));
+        uses[s.ring_segments[r][k]].push_back(forward ? 1 : -1);
+        const bool new_corner = d.is_separator(s.ring_segments[r][k]) ||
+                                d.is_separator(s.ring_segments[r][(k + ring.size() - 1) % ring.size()]);
+        if (new_corner) CHECK(corner_angle(d, ring, k) >= phi - 1e-7);
+      }
+    }
+    double own = 0.0;
+    for (const auto& ring : s.rings) own += ring_area(d, ring);
+    CHECK(s.area == doctest::Approx(own).epsilon(1e-12));
+  }
+  for (std::uint32_t seg = 0; seg < d.segments.size(); ++seg) {
+    const auto& u = uses[seg];
+    if (d.is_separator(seg)) {
+      CHECK(d.segments[seg].marker == 0);
+      REQUIRE(u.size() == 2);
+      CHECK(u[0] == -u[1]);
+    } else {
+      CHECK(d.segments[seg].marker != 0);
+      CHECK(u.size() == 1);
+    }
+  }
+  CHECK(total == doctest::Approx(madd::domain_area(domain)).epsilon(1e-9));
+  const madd::Verification v = madd::verify_decomposition(d, domain, n);
+  for (const auto& problem : v.problems) INFO(problem);
+  CHECK(v.ok());
+}
+
+Decomposition run(const Pslg& domain, std::uint32_t n, double phi, unsigned threads = 1) {
+  madd::Options o;
+  o.subdomains = n;
+  o.min_angle_deg = phi;
+  o.threads = threads;
+  return madd::decompose(domain, o);
+}
+
+std::vector<std::string> data_files() {
+  std::vector<std::string> out;
+  for (const auto& entry : std::filesystem::directory_iterator(MADD_DATA_DIR)) {
+    if (entry.path().extension() == ".poly") out.push_back(entry.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+} // namespace
+
+TEST_SUITE("decompose") {
+
+TEST_CASE("2-way splits of simple domains are valid, connected and keep Phi0") {
+  const Pslg square = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  const Pslg rectangle = polygon({{{0, 0}, {3, 0}, {3, 1}, {0, 1}}});
+  const Pslg l_shape = polygon({{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}});
+  const Pslg annulus = polygon({circle({0, 0}, 2.0, 48), circle({0, 0}, 1.0, 24, true)}, {{0, 0}});
+  for (const Pslg* p : {&square, &rectangle, &l_shape, &annulus}) {
+    for (double phi : {60.0, 70.0}) {
+      const Decomposition d = run(*p, 2, phi);
+      check_decomposition(d, *p, 2, phi);
+      CHECK(d.subdomains[0].area + d.subdomains[1].area == doctest::Approx(madd::domain_area(*p)));
+      for (const auto& s : d.subdomains) CHECK(s.weight == s.area);
+    }
+  }
+}
+
+TEST_CASE("one subdomain is the domain itself") {
+  const Pslg l_shape = polygon({{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}});
+  const Decomposition d = run(l_shape, 1, 60.0);
+  check_decomposition(d, l_shape, 1, 60.0);
+  CHECK(d.subdomains[0].area == doctest::Approx(3.0));
+}
+
+TEST_CASE("every bundled domain, N in {2, 3, 7, 64, 500}, Phi0 60 and 70") {
+  for (const std::string& file : data_files()) {
+    const Pslg domain = madd::read_domain(file);
+    for (double phi : {60.0, 70.0}) {
+      for (std::uint32_t n : {2u, 3u, 7u, 64u, 500u}) {
+        CAPTURE(file);
+        CAPTURE(phi);
+        CAPTURE(n);
+        check_decomposition(run(domain, n, phi), domain, n, phi);
+      }
+    }
+  }
+}
+
+TEST_CASE("bit-identical output for 1, 2 and 4 threads") {
+  for (const std::string& file : data_files()) {
+    const Pslg domain = madd::read_domain(file);
+    CAPTURE(file);
+    const Decomposition one = run(domain, 100, 60.0, 1);
+    CHECK(one == run(domain, 100, 60.0, 2));
+    CHECK(one == run(domain, 100, 60.0, 4));
+  }
+}
+
+TEST_CASE("no valid separator: a typed error naming the subdomain, never a partial result") {
+  // An equilateral triangle: every corner is 60 degrees, so no separator can
+  // make 80 degrees on both of its sides there, and the medial axis has a
+  // single junction whose spokes make 120 degrees with each other but only
+  // ~60 with the boundary.
+  const Pslg triangle = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2.0}}});
+  madd::Options o;
+  o.subdomains = 2;
+  o.min_angle_deg = 89.9;
+  o.max_refinement_rounds = 1;
+  try {
+    (void)madd::decompose(triangle, o);
+    FAIL("expected a DecompositionError");
+  } catch (const madd::DecompositionError& e) {
+    CHECK(e.subdomain() == 0);
+    CHECK(e.area() == doctest::Approx(std::sqrt(3.0) / 4.0));
+    CHECK(e.min_angle_deg() == 89.9);
+  }
+}
+
+TEST_CASE("bad options are rejected") {
+  const Pslg square = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  madd::Options o;
+  o.subdomains = 0;
+  CHECK_THROWS_AS(madd::decompose(square, o), madd::InvalidInputError);
+  o.subdomains = 2;
+  o.min_angle_deg = 95.0;
+  CHECK_THROWS_AS(madd::decompose(square, o), madd::InvalidInputError);
+}
+
+} // TEST_SUITE
