@@ -12,6 +12,8 @@
 #include <string>
 #include <unistd.h>
 
+#include "madd/decomposition.hpp"
+#include "madd/metrics.hpp"
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "metrics_fixtures.hpp"
@@ -148,6 +150,35 @@ TEST_CASE("output 2: each subdomain file parses; shared separators are bit-ident
   CHECK(seen[{{0.0, 0.0}, {1.0, 0.0}}] == 1);
   CHECK(seen[{{0.25, 0.25}, {0.75, 0.25}}] == 1);
   CHECK(seen.size() == 4 + 4 + 3);
+}
+
+TEST_CASE("output 2 of a real decomposition: every separator in two files, every boundary piece in one") {
+  const Pslg domain = read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
+  Options options;
+  options.subdomains = 8;
+  const Decomposition d = decompose(domain, options);
+  REQUIRE(verify_decomposition(d, domain, 8).ok());
+  TempDir tmp;
+  write_split(d, (tmp.path / "parts").string(), "key");
+  std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, std::pair<int, int>> seen;  // count, marker
+  std::size_t files = 0;
+  for (std::uint32_t k = 0; k < 8; ++k) {
+    const fs::path file = tmp.path / "parts" / split_file_name("key", k, 8);
+    const PolyFile back = parse_poly(read_text(file), file.string());
+    ++files;
+    CHECK(back.pslg.holes.size() + 1 == d.subdomains[k].rings.size());
+    for (const Segment& s : back.pslg.segments) {
+      auto a = std::make_pair(back.pslg.points[s.a].x, back.pslg.points[s.a].y);
+      auto b = std::make_pair(back.pslg.points[s.b].x, back.pslg.points[s.b].y);
+      if (b < a) std::swap(a, b);
+      auto& entry = seen[{a, b}];
+      ++entry.first;
+      entry.second = s.marker;
+    }
+  }
+  CHECK(files == 8);
+  CHECK(seen.size() == d.segments.size());  // shared coordinates are bit-identical
+  for (const auto& [key, entry] : seen) CHECK(entry.first == (entry.second == 0 ? 2 : 1));
 }
 
 TEST_CASE("output 2: names are zero-padded to the width of N-1") {
