@@ -25,12 +25,17 @@ struct Hierarchy {
 };
 
 struct Matching {
-  std::vector<std::uint32_t> map;  // fine vertex -> coarse vertex
+  std::vector<std::uint32_t> map;   // fine vertex -> coarse vertex
+  std::vector<std::uint32_t> mate;  // partner, or the vertex itself when unmatched
   std::uint32_t coarse_count = 0;
 };
 
+// contract() specialised to a matching: coarse vertices are visited in
+// fine order, so memory is read nearly sequentially.
+Graph contract_matching(const Graph& graph, const Matching& matching);
+
 // One round of heavy-edge matching: each unmatched vertex (visited in a
-// seeded random order, or by heaviest edge) pairs with the unmatched
+// seeded, locally shuffled order, or by heaviest edge) pairs with the unmatched
 // neighbour across its heaviest edge, provided the pair weighs at most
 // `max_vertex_weight` (keeps coarse vertices small enough to balance).
 Matching heavy_edge_matching(const Graph& graph, SplitMix64& rng, bool sorted, double max_vertex_weight);

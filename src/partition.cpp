@@ -38,10 +38,12 @@ Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions&
     BisectOptions bo;
     bo.target_fraction = static_cast<double>(left) / static_cast<double>(task.parts);
     bo.imbalance = options.imbalance;
-    bo.seed = options.seed + 0x9e3779b97f4a7c15ull * ++task_index;
+    bo.seed = options.seed + 0x9e3779b97f4a7c15ull * task_index++;
     bo.connected = options.connected;
-    const Graph sub = detail::induced_subgraph(graph, task.vertices);
-    const Bisection b = bisect(sub, bo);
+    // The first task holds every vertex in order: bisect the graph itself
+    // rather than a copy.
+    const bool whole = task.vertices.size() == n;
+    const Bisection b = whole ? bisect(graph, bo) : bisect(detail::induced_subgraph(graph, task.vertices), bo);
     Task lo, hi;
     lo.first_part = task.first_part;
     lo.parts = left;
