@@ -1,6 +1,7 @@
 // The planar face walk shared by the initial ring tracing and every commit.
 #include <algorithm>
 #include <numeric>
+#include <unordered_map>
 
 #include "madd/error.hpp"
 #include "madd/predicates.hpp"
@@ -25,6 +26,29 @@ bool before(Point origin, Point p, Point q) {
   const int hq = half_of(origin, q);
   if (hp != hq) return hp < hq;
   return orient2d(origin, p, q) > 0.0;
+}
+
+// A boundary walk passes a vertex twice where a hole ring touches the outer
+// ring (or another hole) at that vertex. Cutting the walk there gives simple
+// rings: the counter-clockwise one is the outer ring, the others are holes.
+void split_at_repeated_vertices(const std::vector<HalfEdge>& half_edges, const std::vector<std::uint32_t>& cycle,
+                                std::vector<std::vector<std::uint32_t>>& out) {
+  std::vector<std::uint32_t> stack;
+  std::unordered_map<std::uint32_t, std::size_t> position;  // vertex -> index in stack of the edge leaving it
+  for (std::uint32_t h : cycle) {
+    const std::uint32_t v = half_edges[h].from;
+    auto it = position.find(v);
+    if (it != position.end()) {
+      const std::size_t at = it->second;
+      std::vector<std::uint32_t> loop(stack.begin() + static_cast<std::ptrdiff_t>(at), stack.end());
+      for (std::uint32_t e : loop) position.erase(half_edges[e].from);
+      stack.resize(at);
+      out.push_back(std::move(loop));
+    }
+    position[v] = stack.size();
+    stack.push_back(h);
+  }
+  out.push_back(std::move(stack));
 }
 
 } // namespace
@@ -89,7 +113,7 @@ std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& poi
       h = next[h];
     }
     if (h != start) throw DecompositionError("planar subdivision walk did not close (internal error)");
-    cycles.push_back(std::move(cycle));
+    split_at_repeated_vertices(half_edges, cycle, cycles);
   }
   return cycles;
 }

@@ -149,6 +149,22 @@ TEST_CASE("2-way splits of simple domains are valid, connected and keep Phi0") {
   }
 }
 
+TEST_CASE("regression: a hole touching the outer boundary at a vertex") {
+  // Vertex (2,0) is on both rings; the walk must give a simple outer ring and
+  // a separate hole ring, or the hole is triangulated as part of the domain.
+  Pslg p;
+  p.first_index = 0;
+  p.points = {{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}, {3, 1}, {1, 1}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 4, 0}, {4, 0, 0}, {1, 5, 0}, {5, 6, 0}, {6, 1, 0}};
+  p.holes = {{2, 0.5}};
+  for (std::uint32_t n : {1u, 2u, 7u, 64u}) {
+    CAPTURE(n);
+    const Decomposition d = run(p, n, 60.0);
+    check_decomposition(d, p, n, 60.0);
+  }
+  CHECK(run(p, 2, 60.0).subdomains[0].area == doctest::Approx(7.5).epsilon(0.1));
+}
+
 TEST_CASE("one subdomain is the domain itself") {
   const Pslg l_shape = polygon({{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}});
   const Decomposition d = run(l_shape, 1, 60.0);
