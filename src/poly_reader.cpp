@@ -108,8 +108,7 @@ void read_vertices(PolyLexer& lx, const VertexHeader& h, IdBase& base, PolyFile&
   if (h.markers) p.point_markers.reserve(h.count);
   out.source.point_lines.reserve(h.count);
   for (std::uint32_t i = 0; i < h.count; ++i) {
-    lx.require_line("vertex " + std::to_string(i + (base.known ? base.first : 1)) + " of " +
-                    std::to_string(h.count));
+    lx.require_item("vertex", i + (base.known ? base.first : 1), h.count);
     expect_id(lx, base, lx.id("vertex id"), i, h.count, "vertex");
     const double x = lx.coordinate("x coordinate");
     const double y = lx.coordinate("y coordinate");
@@ -176,7 +175,7 @@ void read_segments(PolyLexer& lx, IdBase& base, PolyFile& out) {
   out.source.segment_lines.reserve(n);
   const auto n_points = static_cast<std::uint32_t>(p.points.size());
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_line("segment " + std::to_string(i + (base.known ? base.first : 1)) + " of " + std::to_string(n));
+    lx.require_item("segment", i + (base.known ? base.first : 1), n);
     expect_id(lx, base, lx.id("segment id"), i, n, "segment");
     Segment s;
     s.a = read_endpoint(lx, base, n_points);
@@ -197,7 +196,7 @@ void read_holes(PolyLexer& lx, IdBase& base, PolyFile& out) {
   out.pslg.holes.reserve(n);
   out.source.hole_lines.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_line("hole " + std::to_string(i + (base.known ? base.first : 1)) + " of " + std::to_string(n));
+    lx.require_item("hole", i + (base.known ? base.first : 1), n);
     expect_id(lx, base, lx.id("hole id"), i, n, "hole");
     const double x = lx.coordinate("hole x coordinate");
     const double y = lx.coordinate("hole y coordinate");
@@ -216,7 +215,7 @@ void read_regions(PolyLexer& lx, IdBase& base, PolyFile& out) {
   check_count_fits(lx, n, 4, column, "regions");
   out.pslg.regions.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_line("region " + std::to_string(i + (base.known ? base.first : 1)) + " of " + std::to_string(n));
+    lx.require_item("region", i + (base.known ? base.first : 1), n);
     expect_id(lx, base, lx.id("region id"), i, n, "region");
     Region r;
     r.at.x = lx.coordinate("region x coordinate");

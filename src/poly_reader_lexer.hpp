@@ -30,8 +30,8 @@ public:
       std::size_t end = text_.find('\n', next_);
       if (end == std::string_view::npos) end = text_.size();
       next_ = end < text_.size() ? end + 1 : end;
-      std::size_t hash = text_.find('#', line_begin_);
-      line_end_ = hash < end ? hash : end;
+      const std::size_t hash = text_.substr(line_begin_, end - line_begin_).find('#');
+      line_end_ = hash == std::string_view::npos ? end : line_begin_ + hash;
       cursor_ = line_begin_;
       skip_space();
       if (cursor_ < line_end_) return true;
@@ -41,8 +41,14 @@ public:
   }
 
   // Like next_line, but a missing line is a truncated file.
-  void require_line(const std::string& what) {
-    if (!next_line()) fail_at_end("unexpected end of file: expected " + what);
+  void require_line(const char* what) {
+    if (!next_line()) fail_at_end(std::string("unexpected end of file: expected ") + what);
+  }
+  // Item `index` of `count` in a section; the message is built only on failure.
+  void require_item(const char* what, std::int64_t index, std::uint32_t count) {
+    if (!next_line())
+      fail_at_end("unexpected end of file: expected " + std::string(what) + " " + std::to_string(index) + " of " +
+                  std::to_string(count));
   }
 
   bool has_token() const noexcept { return cursor_ < line_end_; }

@@ -13,18 +13,23 @@
 
 namespace madd::detail {
 
+// Cells are square, about twice the mean segment length, so each cell holds
+// O(1) segments of a boundary curve and the total number of (cell, segment)
+// entries is O(n) however long individual segments are. Only occupied cells
+// are stored: each row keeps its entries sorted by column (row-major CSR).
 class SegmentGrid {
 public:
-  // Builds a grid of about one cell per segment, coarsened when the segments
-  // are long so that the total number of (segment, cell) entries stays O(n).
+  struct Entry {
+    std::uint32_t col;
+    std::uint32_t segment;
+  };
+
   SegmentGrid(const std::vector<Point>& points, const std::vector<Segment>& segments);
 
-  std::uint32_t cols() const noexcept { return cols_; }
   std::uint32_t rows() const noexcept { return rows_; }
-  std::span<const std::uint32_t> cell(std::uint32_t col, std::uint32_t row) const noexcept {
-    const std::size_t c = std::size_t{row} * cols_ + col;
-    return {items_.data() + start_[c], items_.data() + start_[c + 1]};
-  }
+  std::uint32_t cols() const noexcept { return cols_; }
+  // Entries of row `row` with column in [c0, c1], sorted by (column, segment).
+  std::span<const Entry> row_range(std::uint32_t row, std::uint32_t c0, std::uint32_t c1) const noexcept;
   // Cell column/row of a coordinate, clamped to the grid (monotone in x, y).
   std::uint32_t col_of(double x) const noexcept { return clamp_index((x - x0_) * inv_w_, cols_); }
   std::uint32_t row_of(double y) const noexcept { return clamp_index((y - y0_) * inv_h_, rows_); }
@@ -39,7 +44,7 @@ private:
     return static_cast<std::uint32_t>(t);
   }
   void choose_size(const std::vector<Point>& points, const std::vector<Segment>& segments);
-  // Calls add(cell index) for every cell segment a-b may pass through.
+  // Calls add(col, row) for every cell segment a-b may pass through.
   template <class Add>
   void visit_cells(Point a, Point b, Add&& add) const;
 
@@ -50,8 +55,8 @@ private:
   double w_ = 1.0, h_ = 1.0;          // cell size
   double inv_w_ = 1.0, inv_h_ = 1.0;
   double tol_x_ = 0.0, tol_y_ = 0.0;  // widening of every cell range
-  std::vector<std::uint32_t> start_;  // CSR offsets, cols*rows + 1
-  std::vector<std::uint32_t> items_;  // segment indices
+  std::vector<std::uint32_t> start_;  // per row, rows + 1 offsets into items_
+  std::vector<Entry> items_;
 };
 
 } // namespace madd::detail

@@ -78,9 +78,8 @@ struct BestConflict {
 };
 
 // All pairs of one cell, pruned by x-extent after sorting when the cell is
-// crowded (many short segments clustered in one cell of a coarse grid).
-void test_cell(const Pslg& p, std::span<const std::uint32_t> cell, std::vector<std::uint32_t>& scratch,
-               BestConflict& found) {
+// crowded (many short segments next to much longer ones).
+void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& found) {
   if (cell.size() <= 24) {
     for (std::size_t u = 0; u < cell.size(); ++u)
       for (std::size_t w = u + 1; w < cell.size(); ++w) found.offer(p, cell[u], cell[w]);
@@ -88,12 +87,10 @@ void test_cell(const Pslg& p, std::span<const std::uint32_t> cell, std::vector<s
   }
   const auto min_x = [&](std::uint32_t s) { return std::min(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
   const auto max_x = [&](std::uint32_t s) { return std::max(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
-  scratch.assign(cell.begin(), cell.end());
-  std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
-  for (std::size_t u = 0; u < scratch.size(); ++u) {
-    const double reach = max_x(scratch[u]);
-    for (std::size_t w = u + 1; w < scratch.size() && min_x(scratch[w]) <= reach; ++w)
-      found.offer(p, scratch[u], scratch[w]);
+  std::sort(cell.begin(), cell.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
+  for (std::size_t u = 0; u < cell.size(); ++u) {
+    const double reach = max_x(cell[u]);
+    for (std::size_t w = u + 1; w < cell.size() && min_x(cell[w]) <= reach; ++w) found.offer(p, cell[u], cell[w]);
   }
 }
 
@@ -101,23 +98,31 @@ void test_cell(const Pslg& p, std::span<const std::uint32_t> cell, std::vector<s
 
 std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid) {
   BestConflict found;
-  std::vector<std::uint32_t> scratch;
-  for (std::uint32_t r = 0; r < grid.rows(); ++r)
-    for (std::uint32_t c = 0; c < grid.cols(); ++c) test_cell(pslg, grid.cell(c, r), scratch, found);
+  std::vector<std::uint32_t> cell;
+  for (std::uint32_t r = 0; r < grid.rows(); ++r) {
+    const auto row = grid.row_range(r, 0, grid.cols() - 1);
+    for (std::size_t k = 0; k < row.size();) {
+      cell.clear();
+      const std::uint32_t col = row[k].col;
+      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].segment);
+      if (cell.size() > 1) test_cell(pslg, cell, found);
+    }
+  }
   return found.best;
 }
 
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {
   if (!grid.contains(p)) return std::nullopt;
-  std::optional<std::uint32_t> first;
-  for (std::uint32_t s : grid.cell(grid.col_of(p.x), grid.row_of(p.y))) {
+  const std::uint32_t col = grid.col_of(p.x);
+  for (const auto& entry : grid.row_range(grid.row_of(p.y), col, col)) {
+    const std::uint32_t s = entry.segment; // ascending within a cell: the first hit is the smallest
     const Point a = pslg.points[pslg.segments[s].a], b = pslg.points[pslg.segments[s].b];
     if (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x) || p.y < std::min(a.y, b.y) ||
         p.y > std::max(a.y, b.y))
       continue;
-    if (orient2d(a, b, p) == 0.0 && (!first || s < *first)) first = s;
+    if (orient2d(a, b, p) == 0.0) return s;
   }
-  return first;
+  return std::nullopt;
 }
 
 } // namespace madd::detail
