@@ -1,6 +1,28 @@
 #pragma once
 // Our own multilevel graph bisector: heavy-edge matching, greedy graph
 // growing, boundary Fiduccia-Mattheyses refinement, connectivity repair.
+//
+// How it works (src/coarsen.cpp, bisect_initial.cpp, fm.cpp, bisect_connect.cpp):
+// - Coarsening: heavy-edge matching in a seeded splitmix64 order (locally
+//   shuffled blocks, for cache locality), no coarse vertex heavier than
+//   1.5 W / 100; stops near 100 vertices or when a level shrinks < 10%. The
+//   hierarchy is a list of coarse graphs plus fine->coarse maps.
+// - Initial bisection: greedy graph growing from 8 seeds, each refined, best
+//   kept by (balance violation, cut).
+// - Refinement: boundary FM with rollback to the best prefix, at most
+//   refinement_passes passes per level. Weights stay doubles; gains live in an
+//   indexed binary max-heap with update-key (no integer scaling, so real
+//   areas and lengths are used exactly as given).
+// - Balance: side s may weigh at most target_s * (1 + imbalance), with
+//   target_0 = target_fraction * W (METIS's ubfactor semantics). Coarse levels
+//   get one average vertex weight of extra slack.
+// - Connectivity (options.connected on a connected graph): at every level, if
+//   FM disconnected a side, stray components are flipped to the side they
+//   touch, an overweight side sheds boundary vertices that a bounded BFS
+//   proves removable, and FM runs again moving only such vertices.
+// - keep_together: pairs are merged by union-find into one vertex before
+//   bisecting and projected back, so they can never be split. Connectivity is
+//   then guaranteed for the merged graph (exact when pairs are adjacent).
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -39,6 +61,8 @@ Bisection bisect(const Graph& graph, const BisectOptions& options = {});
 // compares them with what `bisection` claims.
 Verification verify_bisection(const Graph& graph, const Bisection& bisection);
 
+// Part i of k: recursive bisection, side 0 taking floor(k/2) of the parts and
+// floor(k/2)/k of the weight at each step (explicit work stack, no recursion).
 struct PartitionOptions {
   double imbalance = 0.03;  // per bisection level
   std::uint64_t seed = 1;
