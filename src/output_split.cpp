@@ -28,7 +28,7 @@ bool is_split_name(const std::string& name, std::string_view stem) {
 fs::path staging_path(const fs::path& dir) {
   fs::path parent = dir.parent_path();
   if (parent.empty()) parent = ".";
-  const std::string base = dir.filename().empty() ? dir.parent_path().filename().string() : dir.filename().string();
+  const std::string base = dir.filename().string();
   for (int attempt = 0;; ++attempt) {
     fs::path candidate = parent / ("." + base + ".madd-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
     if (!fs::exists(candidate)) return candidate;
@@ -52,7 +52,8 @@ void publish_into(const fs::path& staging, const fs::path& dir, std::string_view
 } // namespace
 
 void write_split(const Decomposition& d, const std::string& dir_name, std::string_view stem) {
-  const fs::path dir = fs::path(dir_name).lexically_normal();
+  fs::path dir = fs::path(dir_name).lexically_normal();
+  if (dir.filename().empty() && dir.has_parent_path()) dir = dir.parent_path();  // "parts/" names "parts"
   const auto count = static_cast<std::uint32_t>(d.subdomains.size());
   std::vector<std::string> names;
   for (std::uint32_t k = 0; k < count; ++k) names.push_back(split_file_name(stem, k, count));

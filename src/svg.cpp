@@ -128,6 +128,7 @@ void append_edges(std::string& boundary, std::string& separators, const Decompos
 // Where to write subdomain k's number: its area centroid when that lies
 // strictly inside it (it looks centred), otherwise its interior point.
 Point label_point(const Decomposition& d, const Subdomain& sub) {
+  if (sub.rings.empty() || sub.rings[0].empty()) return sub.interior_point;
   double twice = 0.0, cx = 0.0, cy = 0.0;
   const Point o = d.points[sub.rings[0][0]];
   for (const auto& ring : sub.rings)
