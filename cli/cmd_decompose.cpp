@@ -88,20 +88,32 @@ private:
   bool enabled_;
 };
 
+// A figure for the summary; "-" when it does not exist (NaN, e.g. no new angle when N = 1).
+std::string fig(double v, const char* format = "%.2f") {
+  if (std::isnan(v)) return "-";
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
+}
+
 void print_summary(std::FILE* out, const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
   std::fprintf(out, "%s: %zu subdomains, %zu points, %zu segments (%u separator)\n", args.input.c_str(),
                d.subdomains.size(), d.points.size(), d.segments.size(), m.separator_segments);
-  std::fprintf(out, "  C1 new angles: min %.2f deg (bound %.2f), median %.2f, at boundary median %.2f\n", m.angle_min,
-               m.min_angle_bound_deg, m.angle_median, m.boundary_angle_median);
-  std::fprintf(out, "  C2 separator length %.6g (%.4g x sqrt(area))\n", m.separator_length, m.separator_length_norm);
-  std::fprintf(out, "  C3 area max/mean %.4f, min/mean %.4f\n", m.max_area_over_mean, m.min_area_over_mean);
+  std::fprintf(out, "  C1 new angles: min %s deg (bound %s), median %s, at boundary median %s\n", fig(m.angle_min).c_str(),
+               fig(m.min_angle_bound_deg).c_str(), fig(m.angle_median).c_str(), fig(m.boundary_angle_median).c_str());
+  std::fprintf(out, "  C2 separator length %s (%s x sqrt(area))\n", fig(m.separator_length, "%.6g").c_str(),
+               fig(m.separator_length_norm, "%.4g").c_str());
+  std::fprintf(out, "  C3 area max/mean %s, min/mean %s\n", fig(m.max_area_over_mean, "%.4f").c_str(),
+               fig(m.min_area_over_mean, "%.4f").c_str());
   if (args.verbose) {
-    std::fprintf(out, "  new angles %u: p10 %.4f, p90 %.4f; at boundary %u, min %.4f\n", m.new_angles, m.angle_p10,
-                 m.angle_p90, m.boundary_angles, m.boundary_angle_min);
-    std::fprintf(out, "  separator per subdomain %.6g, max sep/area x sqrt(mean area) %.4f\n",
-                 m.mean_separator_per_subdomain, m.max_separator_over_area_norm);
-    std::fprintf(out, "  weight max/mean %.4f, min/mean %.4f; shortest new segment / sqrt(mean area) %.4g\n",
-                 m.max_weight_over_mean, m.min_weight_over_mean, m.shortest_new_segment_norm);
+    std::fprintf(out, "  new angles %u: p10 %s, p90 %s; at boundary %u, min %s\n", m.new_angles,
+                 fig(m.angle_p10, "%.4f").c_str(), fig(m.angle_p90, "%.4f").c_str(), m.boundary_angles,
+                 fig(m.boundary_angle_min, "%.4f").c_str());
+    std::fprintf(out, "  separator per subdomain %s, max sep/area x sqrt(mean area) %s\n",
+                 fig(m.mean_separator_per_subdomain, "%.6g").c_str(), fig(m.max_separator_over_area_norm, "%.4f").c_str());
+    std::fprintf(out, "  weight max/mean %s, min/mean %s; shortest new segment / sqrt(mean area) %s\n",
+                 fig(m.max_weight_over_mean, "%.4f").c_str(), fig(m.min_weight_over_mean, "%.4f").c_str(),
+                 fig(m.shortest_new_segment_norm, "%.4g").c_str());
     for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-10s %.3f s\n", t.name.c_str(), t.seconds);
   }
   for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.report_out})
