@@ -84,6 +84,12 @@ std::vector<std::vector<Use>> check_rings(const Decomposition& d, double domain_
         const Point probe = midpoint(d.points[ring[0]], d.points[ring[1]]);
         if (detail::locate_in_ring(d.points, sub.rings[0], probe) < 0)
           log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies outside its outer ring (not one connected polygon)");
+        // A hole inside another hole would be a second, separate piece. Quadratic
+        // in the hole count, so only checked where that stays cheap.
+        for (std::size_t q = 1; q < sub.rings.size() && sub.rings.size() <= 1000; ++q)
+          if (q != r && detail::locate_in_ring(d.points, sub.rings[q], probe) > 0)
+            log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies inside hole ring " + std::to_string(q) +
+                    " (not one connected polygon)");
       }
     }
     if (!(std::abs(area - sub.area) <= 1e-9 * std::max(domain_area, std::abs(area))))

@@ -178,6 +178,41 @@ TEST_CASE("verify_decomposition: interior point, hole point, orientation, area")
   CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "claims area"));
 }
 
+TEST_CASE("verify_decomposition: a hole ring outside the outer ring, or inside another hole") {
+  // Subdomain 0 of "surrounded" claims the square [4,5]^2 (far outside) as a hole.
+  Fixture f = test::surrounded();
+  Decomposition& d = f.decomposition;
+  const auto base = static_cast<std::uint32_t>(d.points.size());
+  for (const Point p : {Point{4, 4}, Point{4, 5}, Point{5, 5}, Point{5, 4}}) d.points.push_back(p);
+  std::vector<std::uint32_t> ring{base, base + 1, base + 2, base + 3}, segs;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    d.segments.push_back({ring[k], ring[(k + 1) % 4], 0});
+    d.segment_origin.push_back(no_index);
+    segs.push_back(static_cast<std::uint32_t>(d.segments.size() - 1));
+  }
+  d.subdomains[0].rings.push_back(ring);
+  d.subdomains[0].ring_segments.push_back(segs);
+  d.subdomains[0].hole_points.push_back({4.5, 4.5});
+  CHECK(mentions(verify_decomposition(d, f.domain, 2), "lies outside its outer ring"));
+
+  // Now a hole [1.25,1.75]^2 inside the hole [1,2]^2 of subdomain 0.
+  f = test::surrounded();
+  Decomposition& e = f.decomposition;
+  const auto first = static_cast<std::uint32_t>(e.points.size());
+  for (const Point p : {Point{1.25, 1.25}, Point{1.25, 1.75}, Point{1.75, 1.75}, Point{1.75, 1.25}}) e.points.push_back(p);
+  ring = {first, first + 1, first + 2, first + 3};
+  segs.clear();
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    e.segments.push_back({ring[k], ring[(k + 1) % 4], 0});
+    e.segment_origin.push_back(no_index);
+    segs.push_back(static_cast<std::uint32_t>(e.segments.size() - 1));
+  }
+  e.subdomains[0].rings.push_back(ring);
+  e.subdomains[0].ring_segments.push_back(segs);
+  e.subdomains[0].hole_points.push_back({1.5, 1.5});
+  CHECK(mentions(verify_decomposition(e, f.domain, 2), "lies inside hole ring 1"));
+}
+
 TEST_CASE("verify_decomposition: a gap is not full cover") {
   // Only the left half of the square is present.
   Fixture f = test::square_halves();
