@@ -18,7 +18,8 @@ void SegmentGrid::choose_size(const std::vector<Point>& points, const std::vecto
       ymin_ = std::min(ymin_, points[v].y);
       ymax_ = std::max(ymax_, points[v].y);
     }
-    total_length += distance(points[s.a], points[s.b]);
+    // L1 length: what cell visits depend on, and it cannot overflow.
+    total_length += std::abs(points[s.b].x - points[s.a].x) + std::abs(points[s.b].y - points[s.a].y);
   }
   if (segments.empty()) xmin_ = xmax_ = ymin_ = ymax_ = 0.0;
   const double n = static_cast<double>(std::max<std::size_t>(segments.size(), 1));

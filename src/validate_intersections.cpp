@@ -64,13 +64,20 @@ namespace {
 
 // Keeps the conflict that comes first in file order: smallest later index,
 // then smallest earlier index, so the report does not depend on cell order.
+// Once a conflict is known, the search for an earlier one is capped at
+// `budget` more pair tests, so that a hostile file where everything crosses
+// everything fails fast instead of taking quadratic time (the report is then
+// still deterministic, just not necessarily the first in file order).
 struct BestConflict {
   std::optional<SegmentConflict> best;
+  std::size_t budget = 0;
+  bool done = false;
   bool worth_testing(std::uint32_t i, std::uint32_t j) const noexcept {
     const std::uint32_t later = std::max(i, j), earlier = std::min(i, j);
     return !best || later < best->later || (later == best->later && earlier < best->earlier);
   }
   void offer(const Pslg& p, std::uint32_t i, std::uint32_t j) {
+    if (best && --budget == 0) done = true;
     if (!worth_testing(i, j)) return;
     const ContactResult c = classify_contact(p.points, p.segments[i], p.segments[j]);
     if (c.kind != Contact::none) best = SegmentConflict{std::max(i, j), std::min(i, j), c};
@@ -81,14 +88,14 @@ struct BestConflict {
 // crowded (many short segments next to much longer ones).
 void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& found) {
   if (cell.size() <= 24) {
-    for (std::size_t u = 0; u < cell.size(); ++u)
+    for (std::size_t u = 0; u < cell.size() && !found.done; ++u)
       for (std::size_t w = u + 1; w < cell.size(); ++w) found.offer(p, cell[u], cell[w]);
     return;
   }
   const auto min_x = [&](std::uint32_t s) { return std::min(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
   const auto max_x = [&](std::uint32_t s) { return std::max(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
   std::sort(cell.begin(), cell.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
-  for (std::size_t u = 0; u < cell.size(); ++u) {
+  for (std::size_t u = 0; u < cell.size() && !found.done; ++u) {
     const double reach = max_x(cell[u]);
     for (std::size_t w = u + 1; w < cell.size() && min_x(cell[w]) <= reach; ++w) found.offer(p, cell[u], cell[w]);
   }
@@ -98,8 +105,9 @@ void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& fo
 
 std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid) {
   BestConflict found;
+  found.budget = 8 * pslg.segments.size() + 4096;
   std::vector<std::uint32_t> cell;
-  for (std::uint32_t r = 0; r < grid.rows(); ++r) {
+  for (std::uint32_t r = 0; r < grid.rows() && !found.done; ++r) {
     const auto row = grid.row_range(r, 0, grid.cols() - 1);
     for (std::size_t k = 0; k < row.size();) {
       cell.clear();
