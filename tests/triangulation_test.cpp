@@ -283,6 +283,37 @@ TEST_SUITE("triangulation") {
     CHECK(total_area(tri) == doctest::Approx(100.0 * 100.0 - 90 * 0.2 - 40 * 0.1));
   }
 
+  TEST_CASE("lattice domain with lattice holes and interior lattice points") {
+    // Everything cocircular and collinear: boundary vertices at every integer
+    // point of a 24 x 24 square, 2 x 2 square holes, and free lattice points.
+    madd::Pslg pslg;
+    const int n = 24;
+    std::vector<Point> outer;
+    for (int i = 0; i < n; ++i) outer.push_back({static_cast<double>(i), 0.0});
+    for (int i = 0; i < n; ++i) outer.push_back({static_cast<double>(n), static_cast<double>(i)});
+    for (int i = n; i > 0; --i) outer.push_back({static_cast<double>(i), static_cast<double>(n)});
+    for (int i = n; i > 0; --i) outer.push_back({0.0, static_cast<double>(i)});
+    add_ring(pslg, outer, 1);
+    double hole_area = 0;
+    for (int hx = 3; hx + 2 < n; hx += 6) {
+      for (int hy = 3; hy + 2 < n; hy += 6) {
+        const double x = hx, y = hy;
+        add_ring(pslg, {{x, y}, {x, y + 1}, {x, y + 2}, {x + 1, y + 2}, {x + 2, y + 2}, {x + 2, y + 1},
+                        {x + 2, y}, {x + 1, y}}, 2);
+        pslg.holes.push_back({x + 1, y + 1});
+        pslg.points.push_back({x + 1, y + 1});  // a free vertex inside the hole, eaten with it
+        hole_area += 4;
+      }
+    }
+    for (int i = 1; i < n; i += 2)
+      for (int j = 2; j < n; j += 6) pslg.points.push_back({static_cast<double>(i), static_cast<double>(j) - 0.5});
+    const madd::Triangulation tri = madd::triangulate(pslg);
+    const auto v = madd::verify_triangulation(tri);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    CHECK(total_area(tri) == doctest::Approx(n * n - hole_area));
+    CHECK(tri == madd::triangulate(pslg));
+  }
+
   TEST_CASE("random star polygons with holes") {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       check_constrained(star_with_holes(200 * seed, seed + 1, 16 * seed, seed));

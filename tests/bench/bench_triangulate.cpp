@@ -105,20 +105,24 @@ madd::Pslg star(std::size_t n, std::size_t k, std::size_t m, unsigned seed) {
   return pslg;
 }
 
+// "uniform-N", "circle-N" (regular N-gon) or "star-N" (N vertices, 9 holes of
+// 64); N may be written 1e5.
 madd::Pslg workload(const std::string& name) {
   madd::Pslg pslg;
-  if (name.rfind("uniform-", 0) == 0) {
-    const auto n = static_cast<std::size_t>(std::atof(name.c_str() + 8));
+  const std::size_t dash = name.find('-');
+  const std::string kind = name.substr(0, dash);
+  const auto n = dash == std::string::npos ? 0 : static_cast<std::size_t>(std::atof(name.c_str() + dash + 1));
+  if (kind == "uniform" && n > 0) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     pslg.points.resize(n);
     for (auto& p : pslg.points) p = {u(rng), u(rng)};
-  } else if (name == "circle-1e5") {
-    add_ring(pslg, ring(100000, {0, 0}, 1.0, 0.0, false), 1);
-  } else if (name == "star-1e5") {
-    pslg = star(100000, 9, 64, 1);
+  } else if (kind == "circle" && n >= 3) {
+    add_ring(pslg, ring(n, {0, 0}, 1.0, 0.0, false), 1);
+  } else if (kind == "star" && n >= 3) {
+    pslg = star(n, 9, 64, 1);
   } else {
-    std::fprintf(stderr, "unknown workload %s\n", name.c_str());
+    std::fprintf(stderr, "unknown workload %s (uniform-N, circle-N, star-N)\n", name.c_str());
     std::exit(2);
   }
   // Exact-size storage, so the input counts once in the peak memory figure.
@@ -127,8 +131,8 @@ madd::Pslg workload(const std::string& name) {
   return pslg;
 }
 
-// Runs one workload `runs` times; prints the median wall time, the triangle
-// count and the peak memory growth per input point.
+// Runs one workload `runs` times; prints the median wall and CPU times, the
+// triangle count and the peak memory growth (input included) per input point.
 int run_one(const std::string& name, int runs) {
   const long long rss0 = current_rss_bytes();
   const madd::Pslg pslg = workload(name);
@@ -146,10 +150,10 @@ int run_one(const std::string& name, int runs) {
   std::sort(cpu.begin(), cpu.end());
   const double n = static_cast<double>(pslg.points.size());
   const double bytes = static_cast<double>(madd::bench::peak_rss_bytes() - rss0) / n;
-  std::printf("%-12s %8zu pts %8zu tris  wall median %7.4f s (min %.4f)  cpu median %7.4f s  %d runs  "
+  std::printf("%-12s %8zu pts %8zu tris  wall median %9.3f ms (min %.3f)  cpu median %9.3f ms  %d runs  "
               "peak %5.1f bytes/point\n",
-              name.c_str(), pslg.points.size(), triangles, times[times.size() / 2], times.front(),
-              cpu[cpu.size() / 2], runs, bytes);
+              name.c_str(), pslg.points.size(), triangles, 1e3 * times[times.size() / 2], 1e3 * times.front(),
+              1e3 * cpu[cpu.size() / 2], runs, bytes);
   return 0;
 }
 
