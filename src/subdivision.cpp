@@ -28,12 +28,6 @@ bool inside_ring(const std::vector<Point>& points, const std::vector<std::uint32
   return winding != 0;
 }
 
-struct Cycle {
-  std::vector<std::uint32_t> vertices;
-  std::vector<std::uint32_t> segments;
-  double area = 0.0;
-};
-
 Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& half_edges,
                  const std::vector<std::uint32_t>& ids) {
   Cycle c;
@@ -170,8 +164,9 @@ std::uint32_t Subdivision::resolve(const EndRef& end) {
   throw DecompositionError("separator end not found on its segment (internal error)");
 }
 
-std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) {
+std::uint32_t Subdivision::add_separators(std::uint32_t face, const SplitResult& split) {
   const auto new_id = static_cast<std::uint32_t>(faces.size());
+  // Ends shared by several separator edges of this split resolve once.
   std::map<std::pair<int, std::uint32_t>, std::uint32_t> resolved;
   auto vertex_of = [&](const EndRef& e) {
     const std::pair<int, std::uint32_t> key{e.kind == EndRef::centre ? 1 : 0, e.local};
@@ -181,14 +176,27 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
     resolved.emplace(key, v);
     return v;
   };
-  // Half-edges: the face's rings in ring direction, separators both ways.
-  // side_of: 0/1 for separators (the side on the left), 2 + ring for ring edges.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> seps;
+  std::vector<Segment> seps;
   for (const SeparatorEdge& e : split.edges) {
     const std::uint32_t a = vertex_of(e.a);
     const std::uint32_t b = vertex_of(e.b);
-    seps.emplace_back(a, b);
+    seps.push_back({a, b, 0});
   }
+  const auto first = static_cast<std::uint32_t>(segments.size());
+  for (const Segment& seg : seps) {
+    segments.push_back(seg);
+    origin.push_back(no_index);
+    next_piece.push_back(no_index);
+    seg_faces.push_back({face, new_id});
+  }
+  return first;
+}
+
+std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) {
+  const auto new_id = static_cast<std::uint32_t>(faces.size());
+  const std::uint32_t first_separator = add_separators(face, split);
+  // Half-edges: the face's rings in ring direction, separators both ways.
+  // side_of: 0/1 for separators (the side on the left), 2 + ring for ring edges.
   std::vector<HalfEdge> half_edges;
   std::vector<std::uint32_t> side_of;
   const Face& old = faces[face];
@@ -199,52 +207,27 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
       side_of.push_back(static_cast<std::uint32_t>(2 + r));
     }
   }
-  const auto first_separator = static_cast<std::uint32_t>(segments.size());
-  for (std::size_t i = 0; i < seps.size(); ++i) {
-    const auto seg = static_cast<std::uint32_t>(segments.size());
-    segments.push_back({seps[i].first, seps[i].second, 0});
-    origin.push_back(no_index);
-    next_piece.push_back(no_index);
-    seg_faces.push_back({face, new_id});
-    const std::uint8_t left = split.edges[i].left_side;
-    half_edges.push_back({seps[i].first, seps[i].second, seg});
+  for (std::uint32_t seg = first_separator; seg < segments.size(); ++seg) {
+    const std::uint8_t left = split.edges[seg - first_separator].left_side;
+    half_edges.push_back({segments[seg].a, segments[seg].b, seg});
     side_of.push_back(left);
-    half_edges.push_back({seps[i].second, seps[i].first, seg});
+    half_edges.push_back({segments[seg].b, segments[seg].a, seg});
     side_of.push_back(1u - left);
   }
-  Face sides[2];
-  int outers[2] = {0, 0};
-  std::vector<Cycle> holes[2];
+  std::vector<Cycle> cycles[2];
   for (const auto& ids : walk_faces(points, half_edges)) {
-    std::uint32_t side = no_index;
+    // A cycle's side: that of any separator on it, else that of its ring.
+    std::uint32_t side = split.ring_side[side_of[ids[0]] < 2 ? 0 : side_of[ids[0]] - 2];
     for (std::uint32_t h : ids) {
       if (side_of[h] < 2) {
         side = side_of[h];
         break;
       }
     }
-    if (side == no_index) side = split.ring_side[side_of[ids[0]] - 2];
-    Cycle c = make_cycle(points, half_edges, ids);
-    if (c.area > 0.0) {
-      ++outers[side];
-      sides[side].rings.insert(sides[side].rings.begin(), c.vertices);
-      sides[side].ring_segments.insert(sides[side].ring_segments.begin(), c.segments);
-    } else {
-      holes[side].push_back(std::move(c));
-    }
+    cycles[side].push_back(make_cycle(points, half_edges, ids));
   }
-  if (outers[0] != 1 || outers[1] != 1) {
-    throw DecompositionError("split of subdomain " + std::to_string(face) +
-                                 " did not give two connected faces (internal error)",
-                             face, face_area(face));
-  }
-  for (int s = 0; s < 2; ++s) {
-    for (Cycle& c : holes[s]) {
-      sides[s].rings.push_back(std::move(c.vertices));
-      sides[s].ring_segments.push_back(std::move(c.segments));
-    }
-    sides[s].interior = split.interior[s];
-  }
+  Face sides[2];
+  for (int s = 0; s < 2; ++s) sides[s] = assemble_face(cycles[s], split.interior[s], face);
   for (const auto& ring : sides[1].ring_segments) {
     for (std::uint32_t seg : ring) {
       if (seg >= first_separator) continue;  // new separators already name both faces
@@ -256,6 +239,28 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
   faces[face] = std::move(sides[0]);
   faces.push_back(std::move(sides[1]));
   return new_id;
+}
+
+Face Subdivision::assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const {
+  Face out;
+  out.interior = interior;
+  int outers = 0;
+  for (Cycle& c : cycles) {
+    if (c.area > 0.0) {
+      ++outers;
+      out.rings.insert(out.rings.begin(), std::move(c.vertices));
+      out.ring_segments.insert(out.ring_segments.begin(), std::move(c.segments));
+    } else {
+      out.rings.push_back(std::move(c.vertices));
+      out.ring_segments.push_back(std::move(c.segments));
+    }
+  }
+  if (outers != 1) {
+    throw DecompositionError("split of subdomain " + std::to_string(face) +
+                                 " did not give two connected faces (internal error)",
+                             face);
+  }
+  return out;
 }
 
 } // namespace madd::detail

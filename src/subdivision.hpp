@@ -45,6 +45,13 @@ struct Face {
   std::uint32_t plan = 1;                                 // final subdomains this face will become
 };
 
+// A closed boundary cycle found by the face walk.
+struct Cycle {
+  std::vector<std::uint32_t> vertices;
+  std::vector<std::uint32_t> segments;
+  double area = 0.0;  // signed: positive for an outer ring
+};
+
 // A half-edge for the planar face walk.
 struct HalfEdge {
   std::uint32_t from = 0;
@@ -88,6 +95,8 @@ public:
 
 private:
   std::uint32_t resolve(const EndRef& end);
+  std::uint32_t add_separators(std::uint32_t face, const SplitResult& split);  // returns the first new segment
+  Face assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const;
   std::uint32_t split_segment(std::uint32_t piece, std::uint32_t vertex);
 };
 
