@@ -15,8 +15,8 @@ namespace madd::detail {
 // (bits even, <= 16).
 std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept;
 
-// A permutation of 0..points.size()-1: BRIO rounds (about halving in size
-// towards the front), each in Hilbert order. Deterministic.
+// A permutation of 0..points.size()-1: BRIO rounds (each about a quarter of
+// the next), each in Hilbert order. Deterministic.
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points);
 
 } // namespace madd::detail
