@@ -16,6 +16,7 @@
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
 #include "madd/graph.hpp"
+#include "madd/poly_io.hpp"
 
 namespace madd::cli {
 
@@ -54,19 +55,6 @@ bool parse_unsigned(const char* text, unsigned long long max, unsigned long long
   return true;
 }
 
-// Write through a temporary file and rename, so a failure never leaves a
-// partial partition file behind.
-void write_atomically(const std::string& path, const std::string& contents) {
-  const std::string tmp = path + ".tmp-madd";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (f == nullptr) throw Error("cannot write " + tmp + ": " + std::strerror(errno));
-  const bool ok = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
-  if (std::fclose(f) != 0 || !ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write " + path);
-  }
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -96,7 +84,7 @@ int run_partition(void* context) {
     out += '\n';
   }
   const std::string out_path = args.graph + ".part." + std::to_string(k);
-  write_atomically(out_path, out);
+  write_file_atomically(out_path, out);  // never leaves a partial file
   const double write_s = seconds_since(t2);
   double total = 0.0, heaviest = 0.0;
   for (const double w : p.part_weights) {
