@@ -2,6 +2,7 @@
 // The MADD decomposition (paper Sec. 3-5): options, the result value, and the
 // one free function that does the whole job.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,24 @@ struct Options {
   unsigned threads = 0;             // 0 = hardware concurrency
   std::uint64_t seed = 1;
   int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split
+
+  // Smoothing (Sec. 5.1): iterations of step 2 (0 turns smoothing off).
+  int smoothing_iterations = 1;
+
+  // Graded decomposition (Sec. 5.2). A subdomain's density weight is
+  // refine * area + gradation * weight, where weight comes from, in order:
+  // the weight function, the background weights, or the boundary weights
+  // (vertex attribute 1; used when gradation > 0 and neither of the others is set).
+  double gradation = 0.0;           // a
+  double interpolation = 0.0;       // p: weight of new separator points = p * lerp of endpoint weights
+  std::function<double(double x, double y)> weight_function;  // case 3, evaluated on a grid per subdomain
+  std::function<double(double x, double y)> area_function;    // case 3: required area at (x, y)
+  std::vector<Point> background_points;       // case 2: points with a value each
+  std::vector<double> background_weights;     // case 2: density weight per background point
+  std::vector<double> background_areas;       // case 2: required area per background point
+  // With a required area (area_function or background_areas), subdomains are
+  // split while area / required area exceeds this bound, up to `subdomains`.
+  double area_ratio_bound = 1.0;
 };
 
 // One subdomain, a face of the global subdivision. rings[0] is the outer
