@@ -11,6 +11,13 @@
 
 namespace madd {
 
+// A point of a background mesh with its value (a density weight or a required area).
+struct ValuedPoint {
+  Point at;
+  double value = 0.0;
+  friend bool operator==(const ValuedPoint&, const ValuedPoint&) = default;
+};
+
 // Table III of the paper, plus the engineering knobs. Angles are in degrees
 // here (the paper's `f` is a fraction of pi: f = min_angle_deg / 180).
 struct Options {
@@ -33,9 +40,8 @@ struct Options {
   double interpolation = 0.0;       // p: weight of new separator points = p * lerp of endpoint weights
   std::function<double(double x, double y)> weight_function;  // case 3, evaluated on a grid per subdomain
   std::function<double(double x, double y)> area_function;    // case 3: required area at (x, y)
-  std::vector<Point> background_points;       // case 2: points with a value each
-  std::vector<double> background_weights;     // case 2: density weight per background point
-  std::vector<double> background_areas;       // case 2: required area per background point
+  std::vector<ValuedPoint> background_weights;  // case 2: a subdomain's weight = sum of those inside it
+  std::vector<ValuedPoint> background_areas;    // case 2: required area = min of those inside it
   // With a required area (area_function or background_areas), subdomains are
   // split while area / required area exceeds this bound, up to `subdomains`.
   double area_ratio_bound = 1.0;
