@@ -79,9 +79,18 @@ void SegmentInserter::mark(std::uint32_t h, std::uint32_t s) {
 // `corner` = that half-edge a->x; or no_index with `corner` = the corner of a
 // in the triangle whose opposite edge the segment crosses.
 std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::uint32_t& corner) const {
+  // Fast path, no geometry: most segments are already Delaunay edges.
+  const std::uint32_t start = v2c_[a];
+  std::uint32_t c = start;
+  do {
+    if (m_.tv[next_edge(c)] == b) {
+      corner = prev_edge(c);
+      return b;
+    }
+    c = next_edge(m_.tn[next_edge(c)]);
+  } while (c != start);
   const auto& P = m_.points;
   const Point pa = P[a], pb = P[b];
-  std::uint32_t c = v2c_[a];
   for (std::size_t guard = 0; guard <= m_.tv.size(); ++guard) {
     const std::uint32_t x = m_.tv[next_edge(c)], y = m_.tv[prev_edge(c)];
     if (x != m_.ghost && y != m_.ghost) {
