@@ -32,7 +32,12 @@ constexpr const char* decompose_help =
     "  -r, --refine R         uniform boundary refinement factor (default 3)\n"
     "  -i, --imbalance I      acceptable imbalance during a split, 0 < I <= 1 (default 0.75)\n"
     "  -j, --threads J        worker threads, 0 = all cores (default 0); the result is identical\n"
-    "      --seed S           random seed (default 1)\n\n"
+    "      --seed S           random seed (default 1)\n"
+    "      --smoothing K      smoothing iterations, Sec. 5.1 (default 1; 0 = off)\n"
+    "  -a, --gradation A      grade by the boundary density weights (vertex attribute 1):\n"
+    "                         a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
+    "  -p, --interpolation P  weight of new separator points = P x the interpolated weight\n"
+    "                         of the separator's ends (default 0)\n\n"
     "outputs (none by default; see docs/formats.md):\n"
     "  -o FILE.poly           the whole decomposition as one .poly, one region per subdomain\n"
     "      --split DIR        one .poly per subdomain: DIR/<stem>-<k>.poly\n"
@@ -152,7 +157,10 @@ int decompose_body(void* context) {
   progress.say("reading " + args.input);
   Pslg domain;
   try {
-    domain = read_domain(args.input);
+    // Boundary weights are only checked (finite, >= 0) when grading uses them (FORMATS.md).
+    ValidateOptions validation;
+    validation.check_weights = args.options.gradation > 0;
+    domain = read_domain(args.input, validation);
   } catch (const ParseError&) {
     throw;
   } catch (const InvalidInputError&) {
@@ -203,7 +211,7 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
   return *end == '\0' && errno == 0 && value <= limit;
 }
 
-enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
+enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
                       opt_svg_mark, opt_report };
 
 // Applies one option to args; returns an error message, or empty on success.
@@ -235,6 +243,18 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     if (!parse_count(arg, ~0ull, k)) return "--seed needs a whole number";
     args.options.seed = k;
     return {};
+  case opt_smoothing:
+    if (!parse_count(arg, 1000, k)) return "--smoothing needs a whole number in [0, 1000]";
+    args.options.smoothing_iterations = static_cast<int>(k);
+    return {};
+  case 'a':
+    if (!parse_number(arg, x) || x < 0) return "--gradation needs a number >= 0";
+    args.options.gradation = x;
+    return {};
+  case 'p':
+    if (!parse_number(arg, x) || x < 0) return "--interpolation needs a number >= 0";
+    args.options.interpolation = x;
+    return {};
   case 'o': args.poly_out = arg; return {};
   case opt_split: args.split_dir = arg; return {};
   case opt_subdomains_file: args.subdomains_out = arg; return {};
@@ -262,6 +282,9 @@ int run_decompose(int argc, char** argv) {
       {"imbalance", required_argument, nullptr, 'i'},
       {"threads", required_argument, nullptr, 'j'},
       {"seed", required_argument, nullptr, opt_seed},
+      {"smoothing", required_argument, nullptr, opt_smoothing},
+      {"gradation", required_argument, nullptr, 'a'},
+      {"interpolation", required_argument, nullptr, 'p'},
       {"output", required_argument, nullptr, 'o'},
       {"split", required_argument, nullptr, opt_split},
       {"subdomains-file", required_argument, nullptr, opt_subdomains_file},
@@ -277,7 +300,7 @@ int run_decompose(int argc, char** argv) {
   optind = 0;
   opterr = 0;
   int c;
-  while ((c = getopt_long(argc, argv, ":n:r:i:j:o:qvh", long_options, nullptr)) != -1) {
+  while ((c = getopt_long(argc, argv, ":n:r:i:j:a:p:o:qvh", long_options, nullptr)) != -1) {
     if (c == 'h') {
       std::fputs(decompose_help, stdout);
       return exit_ok;
