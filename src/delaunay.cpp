@@ -223,6 +223,11 @@ void check_collinear_duplicates(std::span<const Point> P) {
 
 bool build_delaunay(Mesh& mesh, std::span<const Point> input) {
   mesh = Mesh{};
+  // Half-edge ids (3 per triangle, 2n triangles) must fit in 32 bits.
+  if (input.size() >= (std::size_t{no_index} - 16) / 6) {
+    throw InvalidInputError(InputProblem::other, "too many points for 32-bit triangle indices: " +
+                                                     std::to_string(input.size()));
+  }
   mesh.ghost = static_cast<std::uint32_t>(input.size());
   if (input.size() < 3) {
     check_collinear_duplicates(input);
