@@ -57,14 +57,28 @@ private:
 };
 using Item = Reporter::Item;
 
+// The exact predicates are exact only without overflow or underflow in their
+// products (predicates.hpp: nonzero magnitudes within about [1e-60, 1e76] for
+// incircle). Coordinates that are 0 or within [1e-40, 1e70] keep every value and
+// every difference of two values inside that range, with margin for the
+// constructions (midpoints, circumcentres) made from them later.
+constexpr double min_magnitude = 1e-40;
+constexpr double max_magnitude = 1e70;
+bool supported(double v) noexcept {
+  const double m = std::abs(v);
+  return m == 0.0 || (m >= min_magnitude && m <= max_magnitude);
+}
+bool supported(Point q) noexcept { return supported(q.x) && supported(q.y); }
+const char* const range_note =
+    " is outside the supported range: every coordinate must be 0 or of magnitude within [1e-40, 1e70]";
+
 void check_values(const Pslg& p, const Reporter& r, const ValidateOptions& options) {
   for (std::uint32_t v = 0; v < p.points.size(); ++v)
-    if (!std::isfinite(p.points[v].x) || !std::isfinite(p.points[v].y))
-      r.fail(InputProblem::other, r.vertex(v) + " has a non-finite coordinate", {r.id(v)}, {p.points[v]},
-             Item::point, v);
+    if (!supported(p.points[v]))
+      r.fail(InputProblem::other, r.vertex(v) + range_note, {r.id(v)}, {p.points[v]}, Item::point, v);
   for (std::uint32_t h = 0; h < p.holes.size(); ++h)
-    if (!std::isfinite(p.holes[h].x) || !std::isfinite(p.holes[h].y))
-      r.fail(InputProblem::other, r.hole(h) + " has a non-finite coordinate", {r.id(h)}, {p.holes[h]}, Item::hole, h);
+    if (!supported(p.holes[h]))
+      r.fail(InputProblem::other, r.hole(h) + range_note, {r.id(h)}, {p.holes[h]}, Item::hole, h);
   for (std::uint32_t s = 0; s < p.segments.size(); ++s)
     if (p.segments[s].a >= p.points.size() || p.segments[s].b >= p.points.size())
       r.fail(InputProblem::other, "segment " + std::to_string(r.id(s)) + " refers to a missing vertex", {r.id(s)},

@@ -272,6 +272,19 @@ TEST_CASE("each failure class is reported with ids in the file's base") {
     CHECK(e->problem() == InputProblem::bad_weight);
     CHECK(e->ids() == std::vector<std::int64_t>{2});
   }
+  SUBCASE("coordinates outside the range of the exact predicates") {
+    for (double bad : {1e308, -1e71, 1e-300, 5e-324}) {
+      madd::Pslg p = square;
+      p.points[3].x = bad;
+      const auto e = error_of(p);
+      REQUIRE(e);
+      CHECK(e->problem() == InputProblem::other);
+      CHECK(e->ids() == std::vector<std::int64_t>{4});
+    }
+    madd::Pslg p = square;
+    p.points[3].x = -0.0;
+    CHECK_NOTHROW(madd::validate(p));
+  }
   SUBCASE("dangling chain") {
     madd::Pslg p = square;
     p.points.push_back({0.5, 0.5});

@@ -65,8 +65,10 @@ struct ValidateOptions {
 // no duplicate vertices, no zero-length segments, no crossing, overlapping or
 // touching segments (exact, sub-quadratic), every vertex of even degree and
 // on a segment, hole points strictly inside the domain and off every segment,
-// one connected region. Throws InvalidInputError naming ids (with the file's
-// base) and coordinates, plus the line when `source` knows it.
+// one connected region; every vertex and hole coordinate 0 or of magnitude in
+// [1e-40, 1e70] (the exact range of the predicates, InputProblem::other).
+// Throws InvalidInputError naming ids (with the file's base) and coordinates,
+// plus the line when `source` knows it.
 void validate(const Pslg& pslg, const SourceMap& source = {}, const ValidateOptions& options = {});
 
 // Area of the domain: outer boundary minus holes (sum over closed rings of the
