@@ -165,6 +165,28 @@ void check_holes_on_segments(const Pslg& p, const detail::SegmentGrid& grid, con
   }
 }
 
+// With exactly one kept face `domain`, every segment must have it on exactly one side.
+void check_bounds_domain(const Pslg& p, const detail::FaceMap& fm, std::uint32_t domain,
+                         const std::vector<std::uint32_t>& hole_of_face, const Reporter& r) {
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
+    const std::uint32_t f = fm.face_of_half_edge(2 * s), g = fm.face_of_half_edge(2 * s + 1);
+    if (f == domain && g == domain)
+      r.fail(InputProblem::interior_segment, r.segment(s) + " has the domain on both sides", {r.id(s)},
+             {p.points[p.segments[s].a]}, Item::segment, s);
+    if (f == domain || g == domain) continue;
+    const std::uint32_t other = f == no_index ? g : f;
+    if ((f == no_index || g == no_index) && other != no_index && hole_of_face[other] != no_index) {
+      const std::uint32_t h = hole_of_face[other];
+      r.fail(InputProblem::hole_outside_domain,
+             r.hole(h) + " lies outside the domain, in the region bounded by " + r.segment(s),
+             {r.id(h), r.id(s)}, {p.holes[h]}, Item::hole, h);
+    }
+    r.fail(InputProblem::interior_segment,
+           r.segment(s) + " does not bound the domain: the regions on both sides of it are removed",
+           {r.id(s)}, {p.points[p.segments[s].a]}, Item::segment, s);
+  }
+}
+
 // The domain is what Triangle keeps after flooding from the outside and from
 // every hole point: it must be exactly one face of the segment graph, and
 // every segment must have it on exactly one side (FORMATS.md, "The domain").
@@ -220,25 +242,8 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
                " bounds one, " + r.segment(parts[0]) + " another",
            {r.id(parts[1]), r.id(parts[0])}, {p.points[p.segments[parts[1]].a], p.points[p.segments[parts[0]].a]},
            Item::segment, parts[1]);
-  const std::uint32_t domain = sides(parts[0]).first == no_index || !kept[sides(parts[0]).first]
-                                   ? sides(parts[0]).second
-                                   : sides(parts[0]).first;
-  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
-    const auto [f, g] = sides(s);
-    if (f == domain && g == domain)
-      r.fail(InputProblem::interior_segment, r.segment(s) + " has the domain on both sides", {r.id(s)},
-             {p.points[p.segments[s].a]}, Item::segment, s);
-    if (f == domain || g == domain) continue;
-    if (f == no_index || g == no_index) {
-      const std::uint32_t h = hole_of_face[f == no_index ? g : f];
-      r.fail(InputProblem::hole_outside_domain,
-             r.hole(h) + " lies outside the domain, in the region bounded by " + r.segment(s),
-             {r.id(h), r.id(s)}, {p.holes[h]}, Item::hole, h);
-    }
-    r.fail(InputProblem::interior_segment,
-           r.segment(s) + " does not bound the domain: the regions on both sides are removed by hole points",
-           {r.id(s)}, {p.points[p.segments[s].a]}, Item::segment, s);
-  }
+  const std::uint32_t domain = is_kept(sides(parts[0]).first) ? sides(parts[0]).first : sides(parts[0]).second;
+  check_bounds_domain(p, fm, domain, hole_of_face, r);
 }
 
 } // namespace
