@@ -95,6 +95,8 @@ int main(int argc, char** argv) {
     std::printf("madd %s\n", version_string());
     return exit_ok;
   }
+  // `madd --script FILE` is `madd script FILE` (the paper's maddi mode, docs/script.md).
+  if (std::strcmp(argv[1], "--script") == 0) argv[1] = const_cast<char*>("script");
   auto it = registry.find(argv[1]);
   if (it != registry.end()) return it->second.run(argc - 1, argv + 1);
   // Default mode: decomposition with the whole command line as its arguments.

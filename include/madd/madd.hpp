@@ -3,6 +3,7 @@
 #include "madd/bisect.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/expression.hpp"
 #include "madd/geometry.hpp"
 #include "madd/graph.hpp"
 #include "madd/medial.hpp"
@@ -11,4 +12,5 @@
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"
+#include "madd/script.hpp"
 #include "madd/triangulation.hpp"
