@@ -9,6 +9,7 @@
 #include "madd/medial.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
+#include "madd/output_formats.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"

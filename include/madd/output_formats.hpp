@@ -1,0 +1,42 @@
+#pragma once
+// Views of a Decomposition for other tools: a gmsh .geo model, a legacy VTK
+// file for ParaView and GeoJSON. Like output.hpp, each returns the whole text
+// (write it with write_file_atomically); the layouts are in docs/formats.md.
+#include <string>
+
+#include "madd/decomposition.hpp"
+
+namespace madd {
+
+struct GeoOptions {
+  // Target element size written at every Point. 0 (the default) writes, at
+  // each point, the length of the shortest segment meeting it, so gmsh keeps
+  // the decomposition's own resolution; > 0 uses that size everywhere.
+  double mesh_size = 0.0;
+};
+
+// A gmsh .geo model (built-in kernel, %.17g) of the whole subdivision:
+// Point(i+1) per point, Line(j+1) per segment (each written once, so
+// neighbouring surfaces share it and `gmsh -2` meshes conformingly), one Curve
+// Loop per ring, Plane Surface(k+1) per subdomain k (outer loop, then holes),
+// Physical Surface("subdomain_<k>", k+1), and Physical Curve("boundary_<m>")
+// per boundary marker m (tag m when m > 0, else chosen by gmsh).
+std::string format_geo(const Decomposition& decomposition, const GeoOptions& options = {});
+
+// A legacy VTK (version 3.0, ASCII) POLYDATA file: every point, then the
+// subdomains as cells. VTK polygons cannot have holes and concave ones are
+// rendered by guesswork, so each subdomain is written as the triangles of its
+// constrained Delaunay triangulation (madd::triangulate over its rings; no
+// new points), all carrying its CELL_DATA: subdomain (int), area, weight.
+// Triangles of neighbouring subdomains share the points of their separator.
+// Throws what madd::triangulate throws if a subdomain is not a valid polygon.
+std::string format_vtk(const Decomposition& decomposition);
+
+// An RFC 7946 GeoJSON FeatureCollection: one Polygon Feature per subdomain,
+// outer ring counter-clockwise then hole rings clockwise, each ring closed by
+// repeating its first position; properties {"id": k, "area", "weight"}.
+// Coordinates are the plane's x and y, in the shortest text that reads back
+// exactly (std::to_chars), not longitude and latitude.
+std::string format_geojson(const Decomposition& decomposition);
+
+} // namespace madd

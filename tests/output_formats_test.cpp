@@ -1,0 +1,212 @@
+// The gmsh, VTK and GeoJSON views read back: .geo structure (every segment
+// one Line, loops closed and shared), VTK section counts and areas, GeoJSON
+// through a strict little JSON parser, and, when gmsh is installed, a real
+// `gmsh -2` run whose mesh must be conforming across every separator.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "madd/decomposition.hpp"
+#include "madd/output_formats.hpp"
+#include "madd/poly_io.hpp"
+#include "output_formats_test_support.hpp"
+
+namespace {
+
+using namespace madd;
+using namespace madd::test;
+namespace fs = std::filesystem;
+
+const Decomposition& key7() {
+  static const Decomposition d = [] {
+    Options o;
+    o.subdomains = 7;
+    return decompose(read_domain(MADD_DATA_DIR "/key.poly"), o);
+  }();
+  return d;
+}
+
+// A square with a square hole; the four outer sides and the hole carry
+// different markers (one negative, which gmsh cannot use as a tag).
+const Decomposition& marked_square() {
+  static const Decomposition d = [] {
+    Pslg p;
+    p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1.5, 1.5}, {2.5, 1.5}, {2.5, 2.5}, {1.5, 2.5}};
+    p.segments = {{0, 1, 1}, {1, 2, 2}, {2, 3, 3}, {3, 0, 4}, {4, 5, -7}, {5, 6, -7}, {6, 7, -7}, {7, 4, -7}};
+    p.has_segment_markers = true;
+    p.holes = {{2, 2}};
+    validate(p);
+    Options o;
+    o.subdomains = 4;
+    return decompose(p, o);
+  }();
+  return d;
+}
+
+std::size_t ring_count(const Decomposition& d) {
+  std::size_t n = 0;
+  for (const Subdomain& s : d.subdomains) n += s.rings.size();
+  return n;
+}
+
+void check_geo(const Decomposition& d) {
+  const GeoModel g = parse_geo(format_geo(d));
+  REQUIRE(g.points.size() == d.points.size());
+  REQUIRE(g.lines.size() == d.segments.size());
+  CHECK(g.loops.size() == ring_count(d));
+  REQUIRE(g.surfaces.size() == d.subdomains.size());
+  for (std::size_t i = 0; i < d.points.size(); ++i) CHECK(g.points[i] == d.points[i]);  // %.17g round-trips
+  // Every segment is exactly one Line, and every Line is a segment.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> lines;
+  for (const auto& [a, b] : g.lines) lines.insert({std::min(a, b), std::max(a, b)});
+  CHECK(lines.size() == d.segments.size());
+  for (std::size_t j = 0; j < d.segments.size(); ++j)
+    CHECK(g.lines[j] == std::pair{d.segments[j].a, d.segments[j].b});
+  // Loops are closed chains; separators are used by two loops, boundary pieces by one.
+  std::vector<int> uses(d.segments.size(), 0);
+  for (const auto& loop : g.loops) {
+    REQUIRE(!loop.empty());
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const auto end_of = [&](std::int64_t l) { return l > 0 ? g.lines[l - 1].second : g.lines[-l - 1].first; };
+      const auto start_of = [&](std::int64_t l) { return l > 0 ? g.lines[l - 1].first : g.lines[-l - 1].second; };
+      CHECK(end_of(loop[k]) == start_of(loop[(k + 1) % loop.size()]));
+      ++uses[static_cast<std::size_t>(std::abs(loop[k]) - 1)];
+    }
+  }
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) CHECK(uses[j] == (d.is_separator(j) ? 2 : 1));
+  // Surface k+1 holds subdomain k's rings in order, and is its physical group.
+  std::size_t next_loop = 1;
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    REQUIRE(g.surfaces[k].size() == d.subdomains[k].rings.size());
+    for (const std::int64_t l : g.surfaces[k]) CHECK(l == static_cast<std::int64_t>(next_loop++));
+    CHECK(g.physical_surfaces.at(static_cast<std::int64_t>(k) + 1) == "subdomain_" + std::to_string(k));
+  }
+  // Physical Curves: one per boundary marker, holding exactly its pieces.
+  std::map<std::string, std::multiset<std::int64_t>> expected;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    if (!d.is_separator(j)) expected["boundary_" + std::to_string(d.segments[j].marker)].insert(j + 1);
+  CHECK(g.physical_curves == expected);
+}
+
+TEST_SUITE("output_formats") {
+
+TEST_CASE("geo: every point, every segment once, one loop per ring, shared lines") {
+  check_geo(key7());
+  check_geo(marked_square());
+  const std::string text = format_geo(marked_square());
+  CHECK(text.find("Physical Curve(\"boundary_2\", 2)") != std::string::npos);
+  CHECK(text.find("Physical Curve(\"boundary_-7\") =") != std::string::npos);  // gmsh picks the tag
+}
+
+TEST_CASE("geo: a fixed mesh size is written at every point") {
+  GeoOptions o;
+  o.mesh_size = 0.125;
+  const std::string text = format_geo(marked_square(), o);
+  CHECK(count_of(text, ", 0, 0.125};") == marked_square().points.size());
+}
+
+TEST_CASE("geojson: valid JSON, closed rings in the right orientation, exact coordinates") {
+  for (const Decomposition* d : {&key7(), &marked_square()}) {
+    const Json root = parse_json(format_geojson(*d));
+    CHECK(root.at("type").text == "FeatureCollection");
+    const auto& features = root.at("features").items;
+    REQUIRE(features.size() == d->subdomains.size());
+    for (std::size_t k = 0; k < features.size(); ++k) {
+      const Subdomain& s = d->subdomains[k];
+      CHECK(features[k].at("type").text == "Feature");
+      CHECK(features[k].at("properties").at("id").number == static_cast<double>(k));
+      CHECK(features[k].at("properties").at("area").number == s.area);
+      CHECK(features[k].at("properties").at("weight").number == s.weight);
+      CHECK(features[k].at("geometry").at("type").text == "Polygon");
+      const auto& rings = features[k].at("geometry").at("coordinates").items;
+      REQUIRE(rings.size() == s.rings.size());
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        const auto& positions = rings[r].items;
+        REQUIRE(positions.size() == s.rings[r].size() + 1);
+        CHECK(positions.size() >= 4);  // RFC 7946: a linear ring has four or more positions
+        std::vector<Point> ring;
+        for (const Json& p : positions) {
+          REQUIRE(p.items.size() == 2);
+          ring.push_back({p.items[0].number, p.items[1].number});
+        }
+        CHECK(ring.front() == ring.back());
+        for (std::size_t i = 0; i < s.rings[r].size(); ++i) CHECK(ring[i] == d->points[s.rings[r][i]]);
+        CHECK((ring_area(ring) > 0) == (r == 0));  // outer CCW, holes CW
+      }
+    }
+  }
+}
+
+TEST_CASE("json checker rejects what JSON does not allow") {
+  CHECK_THROWS(parse_json("{\"a\":1,}"));
+  CHECK_THROWS(parse_json("[01]"));
+  CHECK_THROWS(parse_json("[1.]"));
+  CHECK_THROWS(parse_json("{\"a\" 1}"));
+  CHECK_THROWS(parse_json("[nan]"));
+  CHECK_THROWS(parse_json("[1] x"));
+  CHECK(parse_json(" {\"a\":[-0.5e+3,true,null,\"x\\\"y\"]} ").at("a").items[0].number == -500.0);
+}
+
+TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
+  for (const Decomposition* d : {&key7(), &marked_square()}) {
+    const VtkPolyData v = parse_vtk(format_vtk(*d));
+    REQUIRE(v.points.size() == d->points.size());
+    for (std::size_t i = 0; i < v.points.size(); ++i) CHECK(v.points[i] == d->points[i]);
+    REQUIRE(v.subdomain.size() == v.cells.size());
+    REQUIRE(v.area.size() == v.cells.size());
+    REQUIRE(v.weight.size() == v.cells.size());
+    std::vector<double> covered(d->subdomains.size(), 0.0);
+    for (std::size_t c = 0; c < v.cells.size(); ++c) {
+      REQUIRE(v.cells[c].size() == 3);
+      const auto k = static_cast<std::size_t>(v.subdomain[c]);
+      REQUIRE(k < d->subdomains.size());
+      CHECK(v.area[c] == d->subdomains[k].area);
+      CHECK(v.weight[c] == d->subdomains[k].weight);
+      const double a = signed_area(v.points[v.cells[c][0]], v.points[v.cells[c][1]], v.points[v.cells[c][2]]);
+      CHECK(a > 0);
+      covered[k] += a;
+    }
+    for (std::size_t k = 0; k < covered.size(); ++k)
+      CHECK(covered[k] == doctest::Approx(d->subdomains[k].area).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
+  if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
+    MESSAGE("skipped: gmsh is not installed (apt-get install gmsh to run this check)");
+    return;
+  }
+  const fs::path dir = fs::temp_directory_path() / ("madd-geo-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const Decomposition* d : {&key7(), &marked_square()}) {
+    const fs::path geo = dir / "d.geo";
+    const fs::path msh = dir / "d.msh";
+    // A size well below the separators' lengths, so separators get nodes inside them too.
+    double area = 0;
+    for (const Subdomain& s : d->subdomains) area += s.area;
+    GeoOptions options;
+    options.mesh_size = std::sqrt(area / static_cast<double>(d->subdomains.size())) / 6;
+    std::ofstream(geo) << format_geo(*d, options);
+    const std::string command = "gmsh -2 -format msh22 '" + geo.string() + "' -o '" + msh.string() + "' > '" +
+                                (dir / "gmsh.log").string() + "' 2>&1";
+    REQUIRE_MESSAGE(std::system(command.c_str()) == 0, "gmsh failed, see " << (dir / "gmsh.log").string());
+    std::ifstream in(msh);
+    std::stringstream text;
+    text << in.rdbuf();
+    check_gmsh_mesh(*d, parse_msh22(text.str()));
+  }
+  std::error_code ignored;
+  fs::remove_all(dir, ignored);
+}
+
+} // TEST_SUITE
+
+} // namespace
