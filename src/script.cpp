@@ -16,7 +16,8 @@ void ScriptCommand::fail(std::size_t column, const std::string& message) const {
 void ScriptCommand::expect_arguments(std::size_t min, std::size_t max, const char* usage) const {
   const std::size_t n = words.size() - 1;
   if (n < min) fail(end_column, std::string("missing argument (usage: ") + usage + ")");
-  if (n > max) fail(words[max + 1].column, "unexpected '" + printable(words[max + 1].text) + "' (usage: " + usage + ")");
+  if (n > max)
+    fail(words[max + 1].column, "unexpected '" + printable(words[max + 1].text) + "' (usage: " + usage + ")");
 }
 
 std::string ScriptCommand::prefix() const { return script + ":" + std::to_string(line) + ": "; }

@@ -2,6 +2,7 @@
 // Table II): read, read_weights, read_areas, dec, write, writeSubdomains.
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -73,6 +74,12 @@ const Decomposition& verified_decomposition(const ScriptCommand& c, ScriptContex
   return d;
 }
 
+std::string number_text(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
 std::string count_text(std::size_t n, const char* what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
@@ -107,16 +114,20 @@ void script_read_values(const ScriptCommand& c, ScriptContext& context, bool are
   const auto line_of = [&](std::size_t i) -> std::size_t {
     return i < node.source.point_lines.size() ? node.source.point_lines[i] : 1;
   };
+  const std::string what = areas ? "required area" : "weight";
   if (p.attributes_per_point == 0 && !p.points.empty())
-    rethrow_located(c, file.column, ParseError(file.text, 1, 1, "a background mesh needs one attribute per node, "
-                                                                "the " + std::string(areas ? "required area" : "weight")));
+    rethrow_located(c, file.column,
+                    ParseError(file.text, 1, 1, "a background mesh needs one attribute per node, the " + what));
   std::vector<ValuedPoint> values;
   values.reserve(p.points.size());
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     const double v = p.attribute(i, 0);
     const bool ok = std::isfinite(v) && (areas ? v > 0 : v >= 0);
     if (!ok)
-      rethrow_located(c, file.column, ParseError(file.text, line_of(i), 1, std::string(areas ? "a required area must be > 0" : "a weight must be >= 0") + " and finite, got " + std::to_string(v)));
+      rethrow_located(c, file.column,
+                      ParseError(file.text, line_of(i), 1,
+                                 "a " + what + (areas ? " must be > 0" : " must be >= 0") + " and finite, got " +
+                                     number_text(v)));
     values.push_back({p.points[i], v});
   }
   say(context, std::string(areas ? "read_areas " : "read_weights ") + file.text + ": " +
@@ -159,11 +170,13 @@ void script_write(const ScriptCommand& c, ScriptContext& context) {
   c.expect_arguments(1, 2, "write FILE [all]");
   const bool all = c.words.size() == 3;
   if (all && c.words[2].text != "all")
-    c.fail(c.words[2].column, "expected 'all' or nothing after the file name, found '" + printable(c.words[2].text) + "'");
+    c.fail(c.words[2].column,
+           "expected 'all' or nothing after the file name, found '" + printable(c.words[2].text) + "'");
   const ScriptWord& file = c.words[1];
   const Decomposition& d = verified_decomposition(c, context);
   if (!all) {
-    const std::string text = format_decomposition_poly(d, "made by madd script " + c.script + " from " + context.domain_name);
+    const std::string text =
+        format_decomposition_poly(d, "made by madd script " + c.script + " from " + context.domain_name);
     require_files(c, context);
     located_call(c, file.column, [&] { write_file_atomically(file.text, text); });
     say(context, "write " + file.text + ": " + count_text(d.subdomains.size(), "subdomain"));
@@ -172,7 +185,8 @@ void script_write(const ScriptCommand& c, ScriptContext& context) {
   require_files(c, context);
   const std::filesystem::path path(file.text);
   const std::string stem = path.stem().string();
-  if (stem.empty() || stem == "." || stem == "..") c.fail(file.column, "'write FILE all' needs a file name to take the stem from");
+  if (stem.empty() || stem == "." || stem == "..")
+    c.fail(file.column, "'write FILE all' needs a file name to take the stem from");
   const std::string dir = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
   located_call(c, file.column, [&] { write_split(d, dir, stem); });
   const auto n = static_cast<std::uint32_t>(d.subdomains.size());

@@ -51,10 +51,12 @@ std::string apply_parameter(const std::string& name, const std::string& value, O
     if (!real || x <= 0) return "ratio (the area ratio bound) must be > 0";
     o.area_ratio_bound = x;
   } else if (name == "n") {
-    if (!parse_whole(value, 0xFFFFFFFFull, k) || k == 0) return "n (the number of subdomains) must be a whole number >= 1";
+    if (!parse_whole(value, 0xFFFFFFFFull, k) || k == 0)
+      return "n (the number of subdomains) must be a whole number >= 1";
     o.subdomains = static_cast<std::uint32_t>(k);
   } else if (name == "j" || name == "threads") {
-    if (!parse_whole(value, 4096, k)) return name + " (worker threads, 0 = all cores) must be a whole number in [0, 4096]";
+    if (!parse_whole(value, 4096, k))
+      return name + " (worker threads, 0 = all cores) must be a whole number in [0, 4096]";
     o.threads = static_cast<unsigned>(k);
   } else if (name == "seed") {
     if (!parse_whole(value, ~0ull, k)) return "seed must be a whole number";
@@ -88,7 +90,8 @@ std::vector<Assignment> split_assignments(const ScriptCommand& c) {
     while (i < s.size() && !is_blank(s[i]) && s[i] != '=') a.name.push_back(s[i++]);
     skip();
     if (a.name.empty()) c.fail(column(i), "missing the parameter name before '='");
-    if (i == s.size() || s[i] != '=') c.fail(column(i), "expected '=' after '" + printable(a.name) + "' (set <parameter>=<value>)");
+    if (i == s.size() || s[i] != '=')
+      c.fail(column(i), "expected '=' after '" + printable(a.name) + "' (set <parameter>=<value>)");
     ++i;
     skip();
     a.value_column = column(i);
