@@ -44,13 +44,13 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, const Subdomai
   return out;
 }
 
-void append_scalars(std::string& out, const char* name, const char* type, const std::vector<std::size_t>& owner,
-                    const std::vector<double>& value_of_subdomain) {
-  out += "SCALARS ";
+// One array of a FIELD block: "name 1 count double", then one value per cell.
+void append_field_array(std::string& out, const char* name, const std::vector<std::size_t>& owner,
+                        const std::vector<double>& value_of_subdomain) {
   out += name;
-  out += ' ';
-  out += type;
-  out += " 1\nLOOKUP_TABLE default\n";
+  out += " 1 ";
+  detail::append_int(out, static_cast<std::int64_t>(owner.size()));
+  out += " double\n";
   for (const std::size_t k : owner) {
     detail::append_g17(out, value_of_subdomain[k]);
     out += '\n';
@@ -105,8 +105,11 @@ std::string format_vtk(const Decomposition& decomposition) {
     area.push_back(s.area);
     weight.push_back(s.weight);
   }
-  append_scalars(out, "area", "double", owner, area);
-  append_scalars(out, "weight", "double", owner, weight);
+  // VTK's legacy reader keeps only the first SCALARS of a section unless told
+  // otherwise (ReadAllScalars), but always reads FIELD arrays.
+  out += "FIELD FieldData 2\n";
+  append_field_array(out, "area", owner, area);
+  append_field_array(out, "weight", owner, weight);
   return out;
 }
 

@@ -281,20 +281,29 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   std::size_t data = 0;
   in >> data;
   if (data != cells) throw std::runtime_error("VTK: CELL_DATA count");
-  for (const std::string name : {"subdomain", "area", "weight"}) {
-    expect_word(in, "SCALARS");
+  expect_word(in, "SCALARS");
+  expect_word(in, "subdomain");
+  expect_word(in, "int");
+  expect_word(in, "1");
+  expect_word(in, "LOOKUP_TABLE");
+  expect_word(in, "default");
+  for (std::size_t c = 0; c < cells; ++c) {
+    long k = -1;
+    if (!(in >> k)) throw std::runtime_error("VTK: short subdomain");
+    v.subdomain.push_back(k);
+  }
+  expect_word(in, "FIELD");
+  expect_word(in, "FieldData");
+  expect_word(in, "2");
+  for (const std::string name : {"area", "weight"}) {
     expect_word(in, name);
-    expect_word(in, name == "subdomain" ? "int" : "double");
     expect_word(in, "1");
-    expect_word(in, "LOOKUP_TABLE");
-    expect_word(in, "default");
+    expect_word(in, std::to_string(cells));
+    expect_word(in, "double");
     for (std::size_t c = 0; c < cells; ++c) {
       double x = 0;
       if (!(in >> x)) throw std::runtime_error("VTK: short " + name);
-      if (name == "subdomain")
-        v.subdomain.push_back(static_cast<long>(x));
-      else
-        (name == "area" ? v.area : v.weight).push_back(x);
+      (name == "area" ? v.area : v.weight).push_back(x);
     }
   }
   std::string rest;

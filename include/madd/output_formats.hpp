@@ -1,7 +1,7 @@
 #pragma once
 // Views of a Decomposition for other tools: a gmsh .geo model, a legacy VTK
 // file for ParaView and GeoJSON. Like output.hpp, each returns the whole text
-// (write it with write_file_atomically); the layouts are in docs/formats.md.
+// (write it with write_file_atomically); docs/api.md says how each tool reads them.
 #include <string>
 
 #include "madd/decomposition.hpp"
@@ -27,7 +27,8 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
 // subdomains as cells. VTK polygons cannot have holes and concave ones are
 // rendered by guesswork, so each subdomain is written as the triangles of its
 // constrained Delaunay triangulation (madd::triangulate over its rings; no
-// new points), all carrying its CELL_DATA: subdomain (int), area, weight.
+// new points), each with its CELL_DATA: SCALARS subdomain (int), and FIELD
+// arrays area and weight (FIELD, so VTK's reader loads all three).
 // Triangles of neighbouring subdomains share the points of their separator.
 // Throws what madd::triangulate throws if a subdomain is not a valid polygon.
 std::string format_vtk(const Decomposition& decomposition);
