@@ -60,7 +60,7 @@ std::string read_script(const std::string& file) {
     return std::move(text).str();
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(file + ": cannot open: " + std::strerror(errno));
+  if (!in) throw InputFileError(file + ": cannot open: " + std::strerror(errno));
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 

@@ -67,6 +67,12 @@ int run_guarded(const char* command, int (*body)(void*), void* context) {
   } catch (const DecompositionError& e) {
     std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
     return exit_decompose_failed;
+  } catch (const InputFileError& e) {
+    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
+    return exit_bad_input;
+  } catch (const InternalError& e) {
+    std::fprintf(stderr, "madd %s: internal error: %s\n", command, e.what());
+    return exit_internal;
   } catch (const LimitError& e) {
     std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
     return exit_limit;

@@ -113,7 +113,7 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
     const std::uint32_t twin = m_.tn[next_edge(c)];
     c = next_edge(twin);
   }
-  throw Error("triangulate: internal error: no exit around vertex " + std::to_string(a));
+  throw InternalError("triangulate: internal error: no exit around vertex " + std::to_string(a));
 }
 
 // Walks from corner t0 (a at corner t0, crossing half-edge h) through the
@@ -134,7 +134,7 @@ std::uint32_t SegmentInserter::cross(std::uint32_t a, std::uint32_t b, std::uint
     const std::uint32_t g = m_.tn[h];  // directed y->x in the next triangle
     crossed_.push_back(g / 3);
     const std::uint32_t e = m_.tv[g];
-    if (e == m_.ghost) throw Error("triangulate: internal error: segment leaves the hull");
+    if (e == m_.ghost) throw InternalError("triangulate: internal error: segment leaves the hull");
     const std::uint32_t xe = next_edge(g), ey = prev_edge(g);
     const double o = e == b ? 0.0 : orient2d(P[a], P[b], P[e]);
     if (o > 0) {
@@ -216,7 +216,7 @@ void SegmentInserter::insert(std::uint32_t s) {
   const std::uint32_t b = rank_[pslg_.segments[s].b];
   std::uint32_t a = rank_[pslg_.segments[s].a];
   for (std::size_t guard = 0; a != b; ++guard) {
-    if (guard > m_.points.size()) throw Error("triangulate: internal error: segment walk did not end");
+    if (guard > m_.points.size()) throw InternalError("triangulate: internal error: segment walk did not end");
     std::uint32_t corner = 0;
     const std::uint32_t x = find_exit(a, b, corner);
     if (x != no_index) {

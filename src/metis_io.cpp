@@ -244,10 +244,10 @@ Graph parse_metis(std::string_view text, const std::string& path) {
 
 Graph read_metis_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ParseError(path, 0, 0, "cannot open file");
+  if (!in) throw InputFileError(path + ": cannot open file");
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  if (in.bad()) throw ParseError(path, 0, 0, "read error");
+  if (in.bad()) throw InputFileError(path + ": read error");
   const std::string text = buffer.str();
   return parse_metis(text, path);
 }

@@ -59,7 +59,7 @@ void write_split(const Decomposition& d, const std::string& dir_name, std::strin
   for (std::uint32_t k = 0; k < count; ++k) names.push_back(split_file_name(stem, k, count));
   fs::path staging;
   try {
-    if (fs::exists(dir) && !fs::is_directory(dir)) throw Error(dir_name + ": exists and is not a directory");
+    if (fs::exists(dir) && !fs::is_directory(dir)) throw OutputError(dir_name + ": exists and is not a directory");
     if (!dir.parent_path().empty()) fs::create_directories(dir.parent_path());
     staging = staging_path(dir);
     fs::create_directory(staging);
@@ -72,7 +72,7 @@ void write_split(const Decomposition& d, const std::string& dir_name, std::strin
   } catch (const fs::filesystem_error& e) {
     std::error_code ignored;
     if (!staging.empty()) fs::remove_all(staging, ignored);
-    throw Error(dir_name + ": cannot write the split files: " + e.code().message());
+    throw OutputError(dir_name + ": cannot write the split files: " + e.code().message());
   } catch (...) {
     std::error_code ignored;
     if (!staging.empty()) fs::remove_all(staging, ignored);

@@ -265,7 +265,7 @@ PolyFile parse_poly(std::string_view text, const std::string& path) {
 
 PolyFile read_poly_file(const std::string& path) {
   std::string text;
-  if (!read_whole_file(path, text)) throw Error(path + ": cannot read file");
+  if (!read_whole_file(path, text)) throw InputFileError(path + ": cannot read file");
   const std::string ext = ".node";
   const bool is_node =
       path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;

@@ -108,18 +108,18 @@ std::string format_poly(const Pslg& pslg, std::string_view header_comment) {
 void write_file_atomically(const std::string& path, std::string_view contents) {
   const std::string tmp = path + ".tmp." + std::to_string(static_cast<long long>(::getpid()));
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (f == nullptr) throw Error(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
+  if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
   const bool written = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
   const int saved = errno;
   const bool closed = std::fclose(f) == 0;
   if (!written || !closed) {
     std::remove(tmp.c_str());
-    throw Error(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
+    throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     std::remove(tmp.c_str());
-    throw Error(path + ": cannot rename '" + tmp + "' into place: " + std::strerror(err));
+    throw OutputError(path + ": cannot rename '" + tmp + "' into place: " + std::strerror(err));
   }
 }
 

@@ -43,10 +43,10 @@ auto read_input(const ScriptCommand& c, std::size_t column, F&& f) -> decltype(f
 
 std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
+  if (!in) throw InputFileError(path + ": cannot open: " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot read: " + std::strerror(errno));
+  if (in.bad()) throw InputFileError(path + ": cannot read: " + std::strerror(errno));
   return std::move(text).str();
 }
 

@@ -89,6 +89,26 @@ private:
   double min_angle_deg_;
 };
 
+// An input file could not be opened or read (exit code 3 in the CLI, like
+// any other bad input).
+class InputFileError : public Error {
+public:
+  using Error::Error;
+};
+
+// An output file or directory could not be written (exit code 5).
+class OutputError : public Error {
+public:
+  using Error::Error;
+};
+
+// An invariant that should hold by construction did not: a bug in madd, not a
+// problem with the input (exit code 70). Raised instead of returning a wrong result.
+class InternalError : public Error {
+public:
+  using Error::Error;
+};
+
 // A resource limit (--max-memory, --time-limit) was reached.
 class LimitError : public Error {
 public:
