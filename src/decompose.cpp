@@ -12,6 +12,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
 #include "madd/triangulation.hpp"
+#include "resource_limits.hpp"
 #include "split.hpp"
 #include "subdivision.hpp"
 
@@ -36,13 +37,15 @@ unsigned thread_count(const Options& options, std::size_t tasks) {
 // Runs compute_split for every task; errors are kept per task and the first in
 // task order is rethrown, so failures are deterministic too.
 std::vector<detail::SplitResult> compute_round(const Subdivision& sub, const std::vector<std::uint32_t>& tasks,
-                                               const detail::SplitOptions& split_options, unsigned threads) {
+                                               const detail::SplitOptions& split_options, unsigned threads,
+                                               const detail::ResourceGuard& guard) {
   std::vector<detail::SplitResult> results(tasks.size());
   std::vector<std::exception_ptr> errors(tasks.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < tasks.size(); i = next++) {
       try {
+        guard.check(sub.faces.size());  // limits are checked before every split
         results[i] = detail::compute_split(sub, tasks[i], sub.faces[tasks[i]].plan, split_options);
       } catch (...) {
         errors[i] = std::current_exception();
@@ -126,6 +129,7 @@ void check_options(const Options& options) {
 } // namespace
 
 Decomposition decompose(const Pslg& domain, const Options& options) {
+  const detail::ResourceGuard guard(options);
   check_options(options);
   validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);
@@ -143,7 +147,8 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
       if (sub.faces[f].plan > 1) tasks.push_back(f);
     }
     if (tasks.empty()) break;
-    const auto results = compute_round(sub, tasks, split_options, thread_count(options, tasks.size()));
+    guard.check(sub.faces.size());
+    const auto results = compute_round(sub, tasks, split_options, thread_count(options, tasks.size()), guard);
     for (std::size_t i = 0; i < tasks.size(); ++i) {
       const std::uint32_t f = tasks[i];
       const std::uint32_t plan = sub.faces[f].plan;

@@ -1,6 +1,7 @@
 #pragma once
 // The MADD decomposition (paper Sec. 3-5): options, the result value, and the
 // one free function that does the whole job.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -45,6 +46,12 @@ struct Options {
   // With a required area (area_function or background_areas), subdomains are
   // split while area / required area exceeds this bound, up to `subdomains`.
   double area_ratio_bound = 1.0;
+
+  // Resource limits (docs/hostile.md): decompose() throws LimitError when a
+  // split starts after this many seconds, or when the process's resident
+  // memory exceeds this many bytes (checked between splits). 0 = no limit.
+  double time_limit_seconds = 0.0;
+  std::size_t max_memory_bytes = 0;
 };
 
 // One subdomain, a face of the global subdivision. rings[0] is the outer

@@ -1,0 +1,32 @@
+#pragma once
+// Resource limits of one decompose() call (Options::time_limit_seconds and
+// Options::max_memory_bytes): checked between splits, never inside one.
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+
+#include "madd/decomposition.hpp"
+
+namespace madd::detail {
+
+// Resident set size of this process in bytes, read from /proc/self/statm;
+// 0 when it cannot be read (then the memory limit is not enforced).
+std::size_t resident_bytes() noexcept;
+
+// Started when decompose() starts; check() throws LimitError once the time or
+// the resident memory exceeds the limit. Cheap (one clock read, one small
+// /proc read when a memory limit is set), so it may run once per split.
+class ResourceGuard {
+public:
+  explicit ResourceGuard(const Options& options);
+  // `done`: subdomains finished so far, for the message.
+  void check(std::size_t done) const;
+
+private:
+  std::chrono::steady_clock::time_point start_;
+  double time_limit_;
+  std::size_t memory_limit_;
+  std::uint32_t subdomains_;
+};
+
+} // namespace madd::detail
