@@ -37,7 +37,11 @@ constexpr const char* decompose_help =
     "  -a, --gradation A      grade by the boundary density weights (vertex attribute 1):\n"
     "                         a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
     "  -p, --interpolation P  weight of new separator points = P x the interpolated weight\n"
-    "                         of the separator's ends (default 0)\n\n"
+    "                         of the separator's ends (default 0)\n"
+    "      --time-limit S     give up (exit 6, nothing written) after S seconds (default 0 = none)\n"
+    "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
+    "                         (default 0 = none; checked before every split)\n"
+    "      --no-verify        skip the self-check (verify_decomposition) before writing\n\n"
     "outputs (none by default; see docs/formats.md):\n"
     "  -o FILE.poly           the whole decomposition as one .poly, one region per subdomain\n"
     "      --split DIR        one .poly per subdomain: DIR/<stem>-<k>.poly\n"
@@ -50,7 +54,8 @@ constexpr const char* decompose_help =
     "  -v, --verbose          print every quality figure and the phase times\n"
     "  -h, --help             this text\n\n"
     "exit codes: 0 success, 2 usage error, 3 bad input, 4 no valid decomposition at these\n"
-    "settings (names the subdomain), 5 an output could not be written, 70 internal error\n"
+    "settings (names the subdomain), 5 an output could not be written, 6 --time-limit or\n"
+    "--max-memory reached, 70 internal error\n"
     "(the self-check failed; nothing was written)\n";
 
 struct DecomposeArgs {
@@ -61,6 +66,7 @@ struct DecomposeArgs {
   SvgOptions svg;
   bool quiet = false;
   bool verbose = false;
+  bool verify = true;  // --no-verify turns the self-check off
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -179,7 +185,7 @@ int decompose_body(void* context) {
 
   start = std::chrono::steady_clock::now();
   progress.say("verifying");
-  const Verification check = verify_decomposition(d, domain, args.options.subdomains);
+  const Verification check = args.verify ? verify_decomposition(d, domain, args.options.subdomains) : Verification{};
   times.push_back({"verify", seconds_since(start)});
   if (!check.ok()) {
     progress.done();
@@ -212,7 +218,7 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
-                      opt_svg_mark, opt_report };
+                      opt_svg_mark, opt_report, opt_time_limit, opt_max_memory, opt_no_verify };
 
 // Applies one option to args; returns an error message, or empty on success.
 std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
@@ -268,6 +274,15 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     args.report = true;
     args.report_out = arg != nullptr ? arg : "";
     return {};
+  case opt_time_limit:
+    if (!parse_number(arg, x) || x < 0) return "--time-limit needs seconds >= 0";
+    args.options.time_limit_seconds = x;
+    return {};
+  case opt_max_memory:
+    if (!parse_number(arg, x) || x < 0 || x > 1e12) return "--max-memory needs megabytes >= 0";
+    args.options.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
+    return {};
+  case opt_no_verify: args.verify = false; return {};
   case 'q': args.quiet = true; return {};
   case 'v': args.verbose = true; return {};
   default: return "unknown option";
@@ -292,6 +307,9 @@ int run_decompose(int argc, char** argv) {
       {"svg-numbers", no_argument, nullptr, opt_svg_numbers},
       {"svg-mark-angles", required_argument, nullptr, opt_svg_mark},
       {"report", optional_argument, nullptr, opt_report},
+      {"time-limit", required_argument, nullptr, opt_time_limit},
+      {"max-memory", required_argument, nullptr, opt_max_memory},
+      {"no-verify", no_argument, nullptr, opt_no_verify},
       {"quiet", no_argument, nullptr, 'q'},
       {"verbose", no_argument, nullptr, 'v'},
       {"help", no_argument, nullptr, 'h'},
