@@ -1,5 +1,9 @@
 // madd's entry point: global options, then dispatch to a subcommand.
 // Decomposition is the default mode: `madd [options] INPUT.poly`.
+#include <signal.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -9,6 +13,7 @@
 
 #include "commands.hpp"
 #include "madd/error.hpp"
+#include "madd/poly_io.hpp"
 
 namespace madd::cli {
 
@@ -38,6 +43,30 @@ void print_help() {
       "  6   a resource limit was reached\n"
       "  70  internal error (a bug: please report it with the input)\n");
 }
+// SIGINT/SIGTERM: nothing partial may stay on disk (docs/hostile.md). When
+// no output is being written, exit at once (128 + signal): the result only
+// lived in memory. Otherwise let write_file_atomically remove its temporary
+// file and unwind (split staging directories are removed on the way out).
+volatile std::sig_atomic_t interrupted_by = 0;
+
+void on_interrupt(int signal_number) {
+  interrupted_by = signal_number;
+  if (madd::interrupt_output_writes()) return;
+  const char message[] = "madd: interrupted\n";
+  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  ::_exit(128 + signal_number);
+}
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int exit_after(int code) { return interrupted_by != 0 ? 128 + interrupted_by : code; }
 } // namespace
 
 CommandRegistration::CommandRegistration(Command command) { commands()[command.name] = command; }
@@ -104,7 +133,8 @@ int main(int argc, char** argv) {
   // `madd --script FILE` is `madd script FILE` (the paper's maddi mode, docs/script.md).
   if (std::strcmp(argv[1], "--script") == 0) argv[1] = const_cast<char*>("script");
   auto it = registry.find(argv[1]);
-  if (it != registry.end()) return it->second.run(argc - 1, argv + 1);
+  install_interrupt_handlers();
+  if (it != registry.end()) return exit_after(it->second.run(argc - 1, argv + 1));
   // Default mode: decomposition with the whole command line as its arguments.
   auto decompose = registry.find("decompose");
   if (decompose == registry.end()) {
@@ -112,5 +142,5 @@ int main(int argc, char** argv) {
     return exit_usage;
   }
   argv[0] = const_cast<char*>("decompose");
-  return decompose->second.run(argc, argv);
+  return exit_after(decompose->second.run(argc, argv));
 }

@@ -38,4 +38,10 @@ std::string format_poly(const Pslg& pslg, std::string_view header_comment = {});
 // failure never leaves a partial file. Throws Error on I/O failure.
 void write_file_atomically(const std::string& path, std::string_view contents);
 
+// Async-signal-safe, for a SIGINT/SIGTERM handler: from now on every
+// write_file_atomically removes its temporary file and throws OutputError
+// instead of finishing. Returns true when such a write is in progress (the
+// handler should then return and let it unwind rather than exit at once).
+bool interrupt_output_writes() noexcept;
+
 } // namespace madd

@@ -1,0 +1,189 @@
+// Hostile geometry (docs/hostile.md): extreme coordinates, near-degenerate
+// shapes, many holes, huge inputs, impossible requests. Each case either gives
+// a decomposition that passes verify_decomposition (every new angle >= Phi0)
+// or a clear madd::Error of the kind asserted here.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/metrics.hpp"
+#include "madd/poly_io.hpp"
+
+namespace {
+
+using madd::Point;
+using madd::Pslg;
+
+Pslg polygon(const std::vector<std::vector<Point>>& rings, const std::vector<Point>& holes = {}) {
+  Pslg p;
+  p.first_index = 0;
+  for (const auto& ring : rings) {
+    const auto base = static_cast<std::uint32_t>(p.points.size());
+    const auto n = static_cast<std::uint32_t>(ring.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+      p.points.push_back(ring[i]);
+      p.segments.push_back({base + i, base + (i + 1) % n, 0});
+    }
+  }
+  p.holes = holes;
+  return p;
+}
+
+std::vector<Point> rectangle(double x0, double y0, double x1, double y1, bool clockwise = false) {
+  if (clockwise) return {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}};
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// Decomposes and checks the full contract: verified, N subdomains, min angle.
+void expect_valid(const Pslg& domain, std::uint32_t n, double min_angle = 60.0) {
+  madd::Options options;
+  options.subdomains = n;
+  options.min_angle_deg = min_angle;
+  options.threads = 1;
+  const madd::Decomposition d = madd::decompose(domain, options);
+  const madd::Verification check = madd::verify_decomposition(d, domain, n);
+  INFO((check.ok() ? std::string() : check.problems.front()));
+  CHECK(check.ok());
+  CHECK(d.subdomains.size() == n);
+  const madd::Metrics m = madd::metrics(d);
+  if (!std::isnan(m.angle_min)) CHECK(m.angle_min >= min_angle - 1e-9);
+}
+
+madd::InvalidInputError expect_invalid(const Pslg& domain) {
+  try {
+    madd::validate(domain);
+  } catch (const madd::InvalidInputError& e) {
+    return e;
+  }
+  FAIL("validate accepted the domain");
+  return madd::InvalidInputError(madd::InputProblem::other, "");
+}
+
+} // namespace
+
+TEST_SUITE("hostile") {
+
+TEST_CASE("coordinates near 1e-300 and 1e300 are rejected with a clear error, by validate and by decompose") {
+  for (const double scale : {1e-300, 1e300}) {
+    const Pslg p = polygon({rectangle(1 * scale, 1 * scale, 2 * scale, 2 * scale)});
+    const madd::InvalidInputError e = expect_invalid(p);
+    CHECK(e.problem() == madd::InputProblem::other);
+    CHECK(std::string(e.what()).find("outside the supported range") != std::string::npos);
+    CHECK_THROWS_AS(madd::decompose(p, {}), madd::InvalidInputError);
+  }
+}
+
+TEST_CASE("the supported extremes 1e-39 and 1e69 decompose") {
+  for (const double scale : {1e-39, 1e69}) {
+    const Pslg p = polygon({rectangle(1 * scale, 1 * scale, 3 * scale, 2 * scale)});
+    expect_valid(p, 4);
+  }
+}
+
+TEST_CASE("all points near (1e9, 1e9), 1e-3 apart") {
+  // A 0.1 x 0.06 rectangle whose boundary vertices are 1e-3 apart: relative
+  // spacing 1e-12 of the coordinates.
+  std::vector<Point> ring;
+  const double x0 = 1e9, y0 = 1e9;
+  for (int i = 0; i < 100; ++i) ring.push_back({x0 + i * 1e-3, y0});
+  for (int i = 0; i < 60; ++i) ring.push_back({x0 + 0.1, y0 + i * 1e-3});
+  for (int i = 0; i < 100; ++i) ring.push_back({x0 + 0.1 - i * 1e-3, y0 + 0.06});
+  for (int i = 0; i < 60; ++i) ring.push_back({x0, y0 + 0.06 - i * 1e-3});
+  expect_valid(polygon({ring}), 8);
+}
+
+TEST_CASE("a hole within 1e-12 of the outer boundary without touching it") {
+  const Pslg p = polygon({rectangle(0, 0, 1, 1), rectangle(0.25, 1e-12, 0.75, 0.5, true)}, {{0.5, 0.25}});
+  madd::validate(p);
+  expect_valid(p, 4);
+}
+
+TEST_CASE("two holes within 1e-12 of each other") {
+  const Pslg p = polygon({rectangle(0, 0, 4, 2), rectangle(1, 0.5, 2, 1.5, true), rectangle(2 + 1e-12, 0.5, 3, 1.5, true)},
+                         {{1.5, 1}, {2.5, 1}});
+  madd::validate(p);
+  expect_valid(p, 4);
+}
+
+TEST_CASE("a very thin sliver (aspect ratio 1e6)") {
+  expect_valid(polygon({rectangle(0, 0, 1, 1e-6)}), 2);
+  expect_valid(polygon({rectangle(0, 0, 1, 1e-6)}), 8);
+}
+
+TEST_CASE("a long thin spike on a square") {
+  const Pslg p = polygon({{{0, 0}, {1, 0}, {1, 1}, {0.5005, 1}, {0.5, 1000}, {0.4995, 1}, {0, 1}}});
+  expect_valid(p, 4);
+}
+
+TEST_CASE("a nearly collinear run of 5000 vertices") {
+  // The bottom edge of a 10 x 1 rectangle wiggles by 1e-9 over 5000 vertices.
+  std::vector<Point> ring;
+  for (int i = 0; i <= 5000; ++i) ring.push_back({i * 10.0 / 5000, (i % 2 == 1) ? 1e-9 : 0.0});
+  ring.push_back({10, 1});
+  ring.push_back({0, 1});
+  expect_valid(polygon({ring}), 8);
+}
+
+TEST_CASE("a hole touching the outer boundary at a vertex") {
+  // The hole's vertex (2, 0) is also a vertex of the outer ring: validate
+  // accepts this (the domain stays connected), and so must decompose.
+  Pslg p = polygon({{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}});
+  p.points.push_back({2.5, 1});
+  p.points.push_back({1.5, 1});
+  p.segments.push_back({1, 5, 0});
+  p.segments.push_back({5, 6, 0});
+  p.segments.push_back({6, 1, 0});
+  p.holes.push_back({2, 0.5});
+  madd::validate(p);
+  for (const std::uint32_t n : {2u, 4u, 8u}) expect_valid(p, n);
+}
+
+TEST_CASE("four hundred tiny holes") {
+  std::vector<std::vector<Point>> rings{rectangle(0, 0, 1, 1)};
+  std::vector<Point> holes;
+  for (int i = 0; i < 20; ++i) {
+    for (int j = 0; j < 20; ++j) {
+      const double x = (i + 0.5) / 20, y = (j + 0.5) / 20;
+      rings.push_back(rectangle(x - 1e-3, y - 1e-3, x + 1e-3, y + 1e-3, true));
+      holes.push_back({x, y});
+    }
+  }
+  expect_valid(polygon(rings, holes), 16);
+}
+
+TEST_CASE("a 100,000-segment circle validates and splits in two") {
+  std::vector<Point> ring;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    ring.push_back({std::cos(t), std::sin(t)});
+  }
+  const Pslg p = polygon({ring});
+  madd::validate(p);
+  expect_valid(p, 2);
+}
+
+TEST_CASE("Phi0 = 89 fails with a DecompositionError naming the subdomain, its area and Phi0") {
+  const Pslg p = polygon({rectangle(0, 0, 2, 1)});
+  madd::Options options;
+  options.subdomains = 4;
+  options.min_angle_deg = 89.0;
+  try {
+    (void)madd::decompose(p, options);
+    FAIL("decompose succeeded at Phi0 = 89");
+  } catch (const madd::DecompositionError& e) {
+    CHECK(e.subdomain() >= 0);
+    CHECK(e.area() > 0.0);
+    CHECK(e.min_angle_deg() == 89.0);
+    const std::string what = e.what();
+    CHECK(what.find("89") != std::string::npos);
+    CHECK(what.find("subdomain " + std::to_string(e.subdomain())) != std::string::npos);
+  }
+}
+
+} // TEST_SUITE
