@@ -4,7 +4,11 @@
 // or a clear madd::Error of the kind asserted here.
 #include <doctest/doctest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -184,6 +188,91 @@ TEST_CASE("Phi0 = 89 fails with a DecompositionError naming the subdomain, its a
     CHECK(what.find("89") != std::string::npos);
     CHECK(what.find("subdomain " + std::to_string(e.subdomain())) != std::string::npos);
   }
+}
+
+TEST_CASE("N larger than the domain can be split into fails with DecompositionError, nothing returned") {
+  // A thin triangle: every split must cut it with angles >= 60 degrees, which
+  // soon becomes impossible near its sharp corners.
+  const Pslg p = polygon({{{0, 0}, {1, 0}, {0.5, 0.05}}});
+  madd::Options options;
+  options.subdomains = 64;
+  options.threads = 1;
+  CHECK_THROWS_AS((void)madd::decompose(p, options), madd::DecompositionError);
+}
+
+TEST_CASE("resource limits throw LimitError with a clear message") {
+  std::vector<Point> ring;
+  for (int i = 0; i < 400; ++i) {
+    const double t = 2 * std::numbers::pi * i / 400;
+    ring.push_back({std::cos(t), std::sin(t)});
+  }
+  const Pslg p = polygon({ring});
+  madd::Options options;
+  options.subdomains = 64;
+  options.threads = 1;
+  options.time_limit_seconds = 1e-9;
+  try {
+    (void)madd::decompose(p, options);
+    FAIL("no LimitError");
+  } catch (const madd::LimitError& e) {
+    CHECK(std::string(e.what()).find("time limit") != std::string::npos);
+  }
+  options.time_limit_seconds = 0;
+  options.max_memory_bytes = 1;
+  try {
+    (void)madd::decompose(p, options);
+    FAIL("no LimitError");
+  } catch (const madd::LimitError& e) {
+    CHECK(std::string(e.what()).find("memory limit") != std::string::npos);
+  }
+  options.max_memory_bytes = std::size_t{1} << 40;  // generous limits change nothing
+  options.time_limit_seconds = 1e6;
+  madd::Options unlimited = options;
+  unlimited.max_memory_bytes = 0;
+  unlimited.time_limit_seconds = 0;
+  CHECK(madd::decompose(p, options) == madd::decompose(p, unlimited));
+}
+
+TEST_CASE("an unwritable output fails with OutputError and leaves no file") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("madd-hostile-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "is_a_directory");
+  madd::write_file_atomically((dir / "plain").string(), "x");
+  // The parent is a regular file; the target is an existing directory.
+  CHECK_THROWS_AS(madd::write_file_atomically((dir / "plain" / "out.poly").string(), "data"), madd::OutputError);
+  CHECK_THROWS_AS(madd::write_file_atomically((dir / "is_a_directory").string(), "data"), madd::OutputError);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  CHECK(entries == 2);  // "plain" and "is_a_directory" only: no temporary file left
+  CHECK(fs::is_empty(dir / "is_a_directory"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("after interrupt_output_writes nothing is written and no temporary file stays") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("madd-interrupt-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // The interrupt flag is process-wide and permanent, so test it in a child.
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    const bool in_flight = madd::interrupt_output_writes();
+    int code = in_flight ? 1 : 0;
+    try {
+      madd::write_file_atomically((dir / "out.poly").string(), "data");
+      code = 2;
+    } catch (const madd::OutputError&) {
+    }
+    _exit(code);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
 }
 
 } // TEST_SUITE
