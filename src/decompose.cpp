@@ -12,6 +12,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
 #include "madd/triangulation.hpp"
+#include "grading.hpp"
 #include "resource_limits.hpp"
 #include "split.hpp"
 #include "subdivision.hpp"
@@ -38,7 +39,8 @@ unsigned thread_count(const Options& options, std::size_t tasks) {
 // task order is rethrown, so failures are deterministic too.
 std::vector<detail::SplitResult> compute_round(const Subdivision& sub, const std::vector<std::uint32_t>& tasks,
                                                const detail::SplitOptions& split_options, unsigned threads,
-                                               const detail::ResourceGuard& guard) {
+                                               const detail::ResourceGuard& guard,
+                                               const std::vector<detail::FaceDensity>& densities) {
   std::vector<detail::SplitResult> results(tasks.size());
   std::vector<std::exception_ptr> errors(tasks.size());
   std::atomic<std::size_t> next{0};
@@ -46,7 +48,7 @@ std::vector<detail::SplitResult> compute_round(const Subdivision& sub, const std
     for (std::size_t i = next++; i < tasks.size(); i = next++) {
       try {
         guard.check(sub.faces.size());  // limits are checked before every split
-        results[i] = detail::compute_split(sub, tasks[i], sub.faces[tasks[i]].plan, split_options);
+        results[i] = detail::compute_split(sub, tasks[i], sub.faces[tasks[i]].plan, split_options, densities[i]);
       } catch (...) {
         errors[i] = std::current_exception();
       }
@@ -94,7 +96,8 @@ Point largest_triangle_centroid(const Pslg& domain) {
   return at;
 }
 
-Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options) {
+Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options,
+                               const detail::GradingState& grading) {
   Decomposition d;
   d.points = sub.points;
   d.segments = sub.segments;
@@ -106,7 +109,7 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
     s.rings = sub.faces[f].rings;
     s.ring_segments = sub.faces[f].ring_segments;
     s.area = sub.face_area(f);
-    s.weight = s.area;
+    s.weight = grading.weight(sub, f);
     s.interior_point = sub.faces[f].interior;
     for (std::size_t r = 1; r < s.rings.size(); ++r) s.hole_points.push_back(sub.hole_point(f, r));
     d.subdomains.push_back(std::move(s));
@@ -126,6 +129,34 @@ void check_options(const Options& options) {
   }
 }
 
+// Area-driven grading (Sec. 5.2): each round plans one split for every face
+// whose area exceeds area_ratio_bound x its required area (the smallest
+// required area inside it; none inside: unconstrained), the largest ratios
+// first (ties: lower face id), while the total stays <= options.subdomains.
+void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const Options& options) {
+  std::vector<std::pair<double, std::uint32_t>> over;
+  for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    const double required = grading.required(sub, f);
+    if (!std::isfinite(required)) continue;
+    const double ratio = sub.face_area(f) / required;
+    if (ratio > options.area_ratio_bound) over.emplace_back(-ratio, f);
+  }
+  std::sort(over.begin(), over.end());
+  const std::size_t budget = options.subdomains > sub.faces.size() ? options.subdomains - sub.faces.size() : 0;
+  for (std::size_t k = 0; k < std::min(budget, over.size()); ++k) sub.faces[over[k].second].plan = 2;
+}
+
+detail::SplitOptions split_options_of(const Options& options) {
+  detail::SplitOptions split_options;
+  split_options.min_angle_deg = options.min_angle_deg;
+  split_options.refine = options.refine;
+  split_options.imbalance = options.imbalance;
+  split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
+  split_options.seed = options.seed;
+  split_options.smoothing_iterations = std::max(0, options.smoothing_iterations);
+  return split_options;
+}
+
 } // namespace
 
 Decomposition decompose(const Pslg& domain, const Options& options) {
@@ -133,22 +164,24 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
   check_options(options);
   validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);
-  sub.faces[0].plan = options.subdomains;
-  if (options.subdomains == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
-  detail::SplitOptions split_options;
-  split_options.min_angle_deg = options.min_angle_deg;
-  split_options.refine = options.refine;
-  split_options.imbalance = options.imbalance;
-  split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
-  split_options.seed = options.seed;
+  detail::GradingState grading(options, domain);
+  const bool area_driven = grading.mode().area_driven;
+  sub.faces[0].plan = area_driven ? 1 : options.subdomains;
+  const detail::SplitOptions split_options = split_options_of(options);
   while (true) {
+    if (area_driven) plan_area_round(sub, grading, options);
     std::vector<std::uint32_t> tasks;
+    std::vector<detail::FaceDensity> densities;
     for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
-      if (sub.faces[f].plan > 1) tasks.push_back(f);
+      if (sub.faces[f].plan <= 1) continue;
+      tasks.push_back(f);
+      densities.push_back(grading.density(sub, f));
     }
     if (tasks.empty()) break;
     guard.check(sub.faces.size());
-    const auto results = compute_round(sub, tasks, split_options, thread_count(options, tasks.size()), guard);
+    const auto results =
+        compute_round(sub, tasks, split_options, thread_count(options, tasks.size()), guard, densities);
+    for (const auto& r : results) grading.before_commit(sub, r);
     for (std::size_t i = 0; i < tasks.size(); ++i) {
       const std::uint32_t f = tasks[i];
       const std::uint32_t plan = sub.faces[f].plan;
@@ -156,10 +189,13 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
       const std::uint32_t g = sub.commit(f, results[i]);
       sub.faces[f].plan = k0;
       sub.faces[g].plan = plan - k0;
+      grading.after_commit(sub, f, g);
     }
+    grading.end_round(sub);
   }
+  if (sub.faces.size() == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
   detail::check_new_angles(sub, options.min_angle_deg);
-  return to_decomposition(sub, domain, options);
+  return to_decomposition(sub, domain, options, grading);
 }
 
 } // namespace madd

@@ -264,4 +264,11 @@ MedialGraph build_medial_graph(const Triangulation& tri, std::span<const Boundar
   return g;
 }
 
+void set_vertex_weights(MedialGraph& graph, std::vector<double> weights) {
+  std::vector<double>& coarse = graph.contracted.vertex_weights;
+  std::fill(coarse.begin(), coarse.end(), 0.0);
+  for (std::size_t v = 0; v < weights.size(); ++v) coarse[graph.coarse[v]] += weights[v];
+  graph.gd.vertex_weights = std::move(weights);
+}
+
 } // namespace madd

@@ -1,6 +1,7 @@
 // Boundary refinement of one face, adapted to that face's own size.
 #include "refine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -21,12 +22,35 @@ double face_perimeter(const Subdivision& sub, std::uint32_t face) {
   return total;
 }
 
-FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing) {
+namespace {
+
+// Per-edge refinement factor from the boundary weights (1 without them).
+double mean_vertex_weight(const Face& f, const std::vector<double>* w) {
+  if (w == nullptr) return 0.0;
+  double total = 0.0;
+  std::size_t n = 0;
+  for (const auto& ring : f.rings) {
+    for (std::uint32_t v : ring) total += (*w)[v];
+    n += ring.size();
+  }
+  return n == 0 ? 0.0 : total / static_cast<double>(n);
+}
+
+double weight_factor(const std::vector<double>* w, double mean, std::uint32_t a, std::uint32_t b) {
+  if (w == nullptr || !(mean > 0.0)) return 1.0;
+  return std::clamp(0.5 * ((*w)[a] + (*w)[b]) / mean, 1.0, max_weight_refinement);
+}
+
+} // namespace
+
+FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
+                       const std::vector<double>* point_weights) {
   FaceDomain out;
   out.pslg.first_index = 0;
   const Face& f = sub.faces[face];
   std::unordered_map<std::uint32_t, std::uint32_t> working_of;
   std::vector<std::uint8_t> pinched;
+  const double mean_weight = mean_vertex_weight(f, point_weights);
   auto add_point = [&](Point p, EndRef ref, std::uint32_t ring, float bonus) {
     const auto id = static_cast<std::uint32_t>(out.pslg.points.size());
     ref.local = id;
@@ -52,7 +76,8 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
       cycle.push_back(it->second);
       const Point b = sub.points[ring[(k + 1) % ring.size()]];
       const std::uint32_t seg = f.ring_segments[r][k];
-      const double pieces = std::max(1.0, std::ceil(distance(a, b) / spacing));
+      const double factor = weight_factor(point_weights, mean_weight, v, ring[(k + 1) % ring.size()]);
+      const double pieces = std::max(1.0, std::ceil(distance(a, b) * factor / spacing));
       const auto m = static_cast<std::uint32_t>(std::min(pieces, 1e6));
       // Interpolate in the segment's stored direction, so that two faces
       // sharing the segment compute bit-identical points where their

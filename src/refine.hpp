@@ -20,7 +20,12 @@ struct FaceDomain {
 // Divides every ring edge of `face` into ceil(length / spacing) equal pieces
 // (endpoints kept exactly). Existing vertices get the type-1 bonus of
 // Sec. 5.1, midpoints of existing edges the type-2 bonus.
-FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing);
+// With boundary weights (Sec. 5.2 case 1, one per subdivision vertex), an edge
+// whose end weights exceed the face's mean vertex weight gets up to
+// max_weight_refinement times more pieces: heavier segments are refined more.
+constexpr double max_weight_refinement = 4.0;
+FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
+                       const std::vector<double>* point_weights = nullptr);
 
 // Perimeter of a face: total length of its rings.
 double face_perimeter(const Subdivision& sub, std::uint32_t face);

@@ -25,9 +25,11 @@ bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const M
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
 }
 
-// Sec. 4.3: two cut partial separators meeting at one boundary point would
-// pinch a side there (and may form an angle below Phi0). Returns pairs of
-// G'_D vertices to keep together so that the later of the two is not cut.
+} // namespace
+
+// Two cut partial separators meeting at one boundary point would pinch a side
+// there (and may form an angle below Phi0). Returns pairs of G'_D vertices to
+// keep together so that the later of the two is not cut.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
                                                                      const std::vector<std::uint8_t>& side) {
   std::vector<std::uint8_t> used(boundary_points, 0);
@@ -44,6 +46,14 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const Media
   }
   return out;
 }
+
+double balance_quality(std::uint32_t plan, double w0, double w1) {
+  double best = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) best = std::min(best, std::max(w0 / k0, w1 / (plan - k0)));
+  return (w0 + w1) / static_cast<double>(plan) / best;
+}
+
+namespace {
 
 struct Candidate {
   SplitResult result;
@@ -112,25 +122,18 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
   return {};
 }
 
-// How well a split serves a face planned for `plan` subdomains: 1 when the
-// best sharing of the plan between the sides gives every final subdomain the
-// mean weight, lower as the largest one grows (the C3 figure, inverted).
-double balance_quality(std::uint32_t plan, double w0, double w1) {
-  double best = INFINITY;
-  for (std::uint32_t k0 = 1; k0 < plan; ++k0) best = std::min(best, std::max(w0 / k0, w1 / (plan - k0)));
-  return (w0 + w1) / static_cast<double>(plan) / best;
-}
-
 // One refinement round. Side 0 aims at j/plan for j = floor(plan/2) first,
 // then at nearby j when that split is not balanced enough: any j works,
 // because the plan is shared between the sides after the split.
 Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
-                      const SplitOptions& options) {
+                      const SplitOptions& options, const FaceDensity& density) {
   Candidate out;
-  const FaceDomain fd = refine_face(sub, face, spacing);
+  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
   const Triangulation tri = triangulate(fd.pslg);
-  const MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, true});
+  const bool smooth = options.smoothing_iterations > 0;
+  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, smooth});
   if (g.contracted.vertex_count() < 2) return out;
+  if (density.graded) set_vertex_weights(g, density_weights(g, tri, fd, density));
   const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
   std::vector<std::uint8_t> best_side;
   const std::uint32_t half = plan / 2;
@@ -145,20 +148,29 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
     }
     if (out.quality >= options.good_balance) break;
   }
-  if (!best_side.empty()) out.result = make_result(sub, face, fd, tri, g, best_side);
+  if (best_side.empty()) return out;
+  if (smooth) {
+    double w[2] = {0.0, 0.0};
+    for (std::uint32_t v = 0; v < g.contracted.vertex_count(); ++v) w[best_side[v]] += g.contracted.vertex_weights[v];
+    const double floor = std::max(options.imbalance, out.quality - options.smoothing_tolerance);
+    smooth_bisection(g, fd.refs.size(), plan, floor, options.smoothing_iterations, best_side, w);
+    out.quality = balance_quality(plan, w[0], w[1]);
+  }
+  out.result = make_result(sub, face, fd, tri, g, best_side);
   return out;
 }
 
 } // namespace
 
-SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options) {
+SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
+                          const FaceDensity& density) {
   const double area = sub.face_area(face);
   const double perimeter = face_perimeter(sub, face);
   double spacing = std::sqrt(area) / (points_per_side * options.refine);
   Candidate best;
   for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
     const double h = std::max(spacing, perimeter / max_working_points);
-    Candidate c = try_spacing(sub, face, plan, h, round, options);
+    Candidate c = try_spacing(sub, face, plan, h, round, options, density);
     // Refinement that does not improve the balance will not start to: the
     // limit is the shape (where acceptable separators exist), not the spacing.
     const bool stalled = round > 0 && c.quality < best.quality + 0.01;

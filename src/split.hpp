@@ -4,7 +4,12 @@
 // separators as geometry. Reads the subdivision only, so splits of different
 // faces can run on different threads.
 #include <cstdint>
+#include <utility>
+#include <vector>
 
+#include "madd/decomposition.hpp"
+#include "madd/medial.hpp"
+#include "madd/triangulation.hpp"
 #include "subdivision.hpp"
 
 namespace madd::detail {
@@ -16,12 +21,47 @@ struct SplitOptions {
   double good_balance = 0.95;   // stop trying targets and refining at this balance quality
   int max_refinement_rounds = 4;
   std::uint64_t seed = 1;
+  int smoothing_iterations = 1;  // Sec. 5.1: 0 turns both smoothing steps off
+  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below imbalance)
+};
+
+// What the parts of a face weigh in a graded decomposition (Sec. 5.2). Not
+// graded: a G_D vertex weighs its area.
+struct FaceDensity {
+  bool graded = false;
+  double r = 1.0;                                     // density = r * area + a * weight
+  double a = 0.0;
+  const std::vector<double>* point_weights = nullptr;  // case 1: per subdivision vertex
+  std::vector<ValuedPoint> samples;                   // cases 2/3: weight samples inside the face
 };
 
 // Splits face `face`, planned to become `plan` >= 2 final subdomains, aiming
 // at floor(plan/2)/plan of its weight on side 0. Throws DecompositionError
 // naming the face, its area and Phi0 when no valid separator exists after all
 // refinement rounds.
-SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options);
+SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
+                          const FaceDensity& density = {});
+
+// 1 when the best sharing of `plan` between sides weighing w0 and w1 gives
+// every final subdomain the mean weight, lower as the largest one grows.
+double balance_quality(std::uint32_t plan, double w0, double w1);
+
+// Sec. 4.3: pairs of G'_D vertices whose cut separators would pinch a side at
+// one boundary point (empty when the bisection `side` is valid).
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
+                                                                     const std::vector<std::uint8_t>& side);
+
+// Sec. 5.1 step 2 on a valid bisection of G'_D: moves G'_D vertices next to the
+// cut to the other side while that lowers the cut's smoothed cost (length x
+// angle coefficient x end bonuses), keeps both sides connected, creates no
+// pinch and keeps balance_quality >= min_quality. w holds the side weights.
+void smooth_bisection(const MedialGraph& g, std::size_t boundary_points, std::uint32_t plan, double min_quality,
+                      int iterations, std::vector<std::uint8_t>& side, double w[2]);
+
+struct FaceDomain;
+// Density weight of every G_D vertex: r * area + a * (its share of the
+// boundary vertex weights, or the weight samples it contains).
+std::vector<double> density_weights(const MedialGraph& g, const Triangulation& tri, const FaceDomain& fd,
+                                    const FaceDensity& density);
 
 } // namespace madd::detail

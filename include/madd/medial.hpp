@@ -84,6 +84,10 @@ struct MedialGraph {
 MedialGraph build_medial_graph(const Triangulation& tri, std::span<const BoundaryLinks> links,
                                const MedialOptions& options = {});
 
+// Replaces the G_D vertex weights (one per G_D vertex, e.g. density weights of
+// a graded decomposition, Sec. 5.2) and recomputes G'_D's as their sums.
+void set_vertex_weights(MedialGraph& graph, std::vector<double> weights);
+
 // The corners of G_D vertex v (a triangle, or a sub-triangle around a circumcentre), counter-clockwise.
 std::array<Point, 3> vertex_triangle_corners(const MedialGraph& graph, const Triangulation& tri, std::uint32_t v);
 
