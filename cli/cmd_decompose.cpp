@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "madd/decomposition.hpp"
+#include "madd/expression.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
@@ -38,6 +39,12 @@ constexpr const char* decompose_help =
     "                         a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
     "  -p, --interpolation P  weight of new separator points = P x the interpolated weight\n"
     "                         of the separator's ends (default 0)\n"
+    "      --weight-fn EXPR   grade by a density weight function f(x, y) (Sec. 5.2 case 3)\n"
+    "      --area-fn EXPR     split while a subdomain's area > bound x the required area\n"
+    "                         function's minimum inside it (N is then the maximum)\n"
+    "      --weights FILE     background density weights: .node, first attribute (case 2)\n"
+    "      --areas FILE       background required areas: .node, first attribute (case 2)\n"
+    "      --area-bound X     area / required area bound (default 1)\n"
     "      --time-limit S     give up (exit 6, nothing written) after S seconds (default 0 = none)\n"
     "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
     "                         (default 0 = none; checked before every split)\n"
@@ -185,7 +192,11 @@ int decompose_body(void* context) {
 
   start = std::chrono::steady_clock::now();
   progress.say("verifying");
-  const Verification check = args.verify ? verify_decomposition(d, domain, args.options.subdomains) : Verification{};
+  // With a required area (Sec. 5.2) N is a maximum: fewer subdomains is a correct result.
+  const bool area_graded = args.options.area_function || !args.options.background_areas.empty();
+  const auto made = static_cast<std::uint32_t>(d.subdomains.size());
+  const std::uint32_t expected = area_graded && made <= args.options.subdomains ? made : args.options.subdomains;
+  const Verification check = args.verify ? verify_decomposition(d, domain, expected) : Verification{};
   times.push_back({"verify", seconds_since(start)});
   if (!check.ok()) {
     progress.done();
@@ -218,7 +229,34 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
-                      opt_svg_mark, opt_report, opt_time_limit, opt_max_memory, opt_no_verify };
+                      opt_svg_mark, opt_report, opt_time_limit, opt_max_memory, opt_no_verify,
+                      opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound };
+
+// A background mesh (Sec. 5.2 case 2): the nodes of a .node file, value = first attribute.
+std::string read_values(const char* path, bool areas, std::vector<ValuedPoint>& out) {
+  try {
+    const Pslg p = read_poly_file(path).pslg;
+    if (p.attributes_per_point == 0) return std::string(path) + ": a background mesh needs one attribute per node";
+    out.clear();
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      const double v = p.attribute(i, 0);
+      if (!std::isfinite(v) || v < 0 || (areas && v == 0)) return std::string(path) + ": bad value at node " + std::to_string(i);
+      out.push_back({p.points[i], v});
+    }
+    return {};
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+std::string set_function(const char* text, std::function<double(double, double)>& out) {
+  try {
+    out = parse_expression(text, "expression").function();
+    return {};
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
 
 // Applies one option to args; returns an error message, or empty on success.
 std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
@@ -283,6 +321,14 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     args.options.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
     return {};
   case opt_no_verify: args.verify = false; return {};
+  case opt_weight_fn: return set_function(arg, args.options.weight_function);
+  case opt_area_fn: return set_function(arg, args.options.area_function);
+  case opt_weights: return read_values(arg, false, args.options.background_weights);
+  case opt_areas: return read_values(arg, true, args.options.background_areas);
+  case opt_area_bound:
+    if (!parse_number(arg, x) || x <= 0) return "--area-bound needs a number > 0";
+    args.options.area_ratio_bound = x;
+    return {};
   case 'q': args.quiet = true; return {};
   case 'v': args.verbose = true; return {};
   default: return "unknown option";
@@ -310,6 +356,11 @@ int run_decompose(int argc, char** argv) {
       {"time-limit", required_argument, nullptr, opt_time_limit},
       {"max-memory", required_argument, nullptr, opt_max_memory},
       {"no-verify", no_argument, nullptr, opt_no_verify},
+      {"weight-fn", required_argument, nullptr, opt_weight_fn},
+      {"area-fn", required_argument, nullptr, opt_area_fn},
+      {"weights", required_argument, nullptr, opt_weights},
+      {"areas", required_argument, nullptr, opt_areas},
+      {"area-bound", required_argument, nullptr, opt_area_bound},
       {"quiet", no_argument, nullptr, 'q'},
       {"verbose", no_argument, nullptr, 'v'},
       {"help", no_argument, nullptr, 'h'},

@@ -20,6 +20,9 @@ GradingMode grading_mode(const Options& options) {
   } else if (options.gradation > 0.0) {
     m.weights = WeightSource::boundary;
   }
+  // A weight function or background weights grade by themselves: without a
+  // gradation factor they count as much as the area (a = 1).
+  if ((m.weights == WeightSource::function || m.weights == WeightSource::background) && !(m.a > 0.0)) m.a = 1.0;
   return m;
 }
 
