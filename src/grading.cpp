@@ -53,7 +53,9 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const O
   const double dy = (hi.y - lo.y) / grid_cells;
   FaceSamples out;
   auto take = [&](Point q, double cell_area) {
-    if (options.weight_function) out.weights.push_back({q, options.weight_function(q.x, q.y) * cell_area});
+    // A density cannot be negative: negative and NaN values count as 0.
+    const double f = options.weight_function ? options.weight_function(q.x, q.y) : 0.0;
+    if (options.weight_function) out.weights.push_back({q, f > 0.0 ? f * cell_area : 0.0});
     if (options.area_function) out.areas.push_back({q, options.area_function(q.x, q.y)});
   };
   // Cell centres, so that the weight is a midpoint-rule integral of f over the face.

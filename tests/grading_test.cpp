@@ -1,0 +1,219 @@
+// Graded decompositions (paper Sec. 5.2): density weights from a function,
+// background points or boundary weights, and required areas. Every test also
+// checks validity (verify_decomposition) and C1 (min new angle >= Phi0).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/metrics.hpp"
+
+namespace {
+
+using madd::Decomposition;
+using madd::Point;
+using madd::Pslg;
+
+// The rectangle [0, w] x [0, h] with `per_unit` boundary points per unit length,
+// one attribute per point (its weight, 0 here).
+Pslg rectangle(double w, double h, int per_unit = 1) {
+  Pslg p;
+  p.first_index = 0;
+  const Point corners[4] = {{0, 0}, {w, 0}, {w, h}, {0, h}};
+  for (int c = 0; c < 4; ++c) {
+    const Point a = corners[c], b = corners[(c + 1) % 4];
+    const int n = std::max(1, static_cast<int>(std::lround(std::hypot(b.x - a.x, b.y - a.y) * per_unit)));
+    for (int k = 0; k < n; ++k) p.points.push_back({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n});
+  }
+  const auto n = static_cast<std::uint32_t>(p.points.size());
+  for (std::uint32_t i = 0; i < n; ++i) p.segments.push_back({i, (i + 1) % n, 0});
+  p.attributes_per_point = 1;
+  p.attributes.assign(n, 0.0);
+  return p;
+}
+
+Point centroid(const Decomposition& d, const std::vector<std::uint32_t>& ring) {
+  double cx = 0, cy = 0, twice = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point a = d.points[ring[k]], b = d.points[ring[(k + 1) % ring.size()]];
+    const double c = a.x * b.y - a.y * b.x;
+    twice += c;
+    cx += (a.x + b.x) * c;
+    cy += (a.y + b.y) * c;
+  }
+  return {cx / (3 * twice), cy / (3 * twice)};
+}
+
+bool inside_ring(const Decomposition& d, const std::vector<std::uint32_t>& ring, Point p) {
+  bool in = false;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point a = d.points[ring[k]], b = d.points[ring[(k + 1) % ring.size()]];
+    if ((a.y > p.y) != (b.y > p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x) in = !in;
+  }
+  return in;
+}
+
+std::vector<double> ranks(const std::vector<double>& v) {
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+  std::vector<double> r(v.size());
+  for (std::size_t i = 0; i < order.size(); ++i) r[order[i]] = static_cast<double>(i);
+  return r;
+}
+
+// Spearman rank correlation (no ties expected in continuous data).
+double spearman(const std::vector<double>& a, const std::vector<double>& b) {
+  const auto ra = ranks(a), rb = ranks(b);
+  const double n = static_cast<double>(a.size());
+  double d2 = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d2 += (ra[i] - rb[i]) * (ra[i] - rb[i]);
+  return 1.0 - 6.0 * d2 / (n * (n * n - 1.0));
+}
+
+double x_area_correlation(const Decomposition& d) {
+  std::vector<double> x, area;
+  for (const auto& s : d.subdomains) {
+    x.push_back(s.interior_point.x);
+    area.push_back(s.area);
+  }
+  return spearman(x, area);
+}
+
+// Validity and C1 for every graded run; returns the decomposition.
+Decomposition checked(const Pslg& domain, const madd::Options& o, std::uint32_t expected) {
+  const Decomposition d = madd::decompose(domain, o);
+  const madd::Verification v = madd::verify_decomposition(d, domain, expected == 0 ? static_cast<std::uint32_t>(d.subdomains.size()) : expected);
+  for (const auto& p : v.problems) INFO(p);
+  CHECK(v.ok());
+  CHECK(madd::metrics(d).angle_min >= o.min_angle_deg);
+  return d;
+}
+
+} // namespace
+
+TEST_SUITE("grading") {
+
+TEST_CASE("weight function proportional to x: subdomains shrink as x grows") {
+  const Pslg domain = rectangle(4, 1);
+  madd::Options o;
+  o.subdomains = 64;
+  o.weight_function = [](double x, double) { return x; };
+  const Decomposition d = checked(domain, o, 64);
+  CHECK(x_area_correlation(d) < -0.5);
+  madd::Options uniform = o;
+  uniform.weight_function = nullptr;
+  CHECK(madd::metrics(checked(domain, uniform, 64)).max_area_over_mean < madd::metrics(d).max_area_over_mean);
+  // The density weights (not the areas) are balanced.
+  CHECK(madd::metrics(d).max_weight_over_mean < madd::metrics(d).max_area_over_mean);
+}
+
+TEST_CASE("area function: no subdomain exceeds its required area times the bound") {
+  const Pslg domain = rectangle(4, 1);
+  madd::Options o;
+  o.subdomains = 1000;  // a maximum: the bound stops the splitting first
+  o.area_function = [](double x, double) { return 0.02 + 0.03 * x; };
+  o.area_ratio_bound = 1.0;
+  const Decomposition d = checked(domain, o, 0);
+  CHECK(d.subdomains.size() > 10);
+  CHECK(d.subdomains.size() < 1000);
+  for (const auto& s : d.subdomains) {
+    // The function is linear: its largest value over a subdomain is at a
+    // vertex, and the required area (a minimum inside) is no larger.
+    double most = 0;
+    for (std::uint32_t v : s.rings[0]) most = std::max(most, 0.02 + 0.03 * d.points[v].x);
+    CHECK(s.area <= o.area_ratio_bound * most * (1 + 1e-9));
+  }
+  CHECK(x_area_correlation(d) > 0.5);
+}
+
+TEST_CASE("area function respects the maximum count") {
+  madd::Options o;
+  o.subdomains = 7;
+  o.area_function = [](double, double) { return 1e-4; };
+  const Decomposition d = checked(rectangle(4, 1), o, 7);
+  CHECK(d.subdomains.size() == 7);
+}
+
+TEST_CASE("boundary weights concentrate subdomains near the weighted vertices") {
+  Pslg domain = rectangle(4, 1, 4);
+  std::vector<Point> weighted;
+  for (std::size_t i = 0; i < domain.points.size(); ++i) {
+    if (domain.points[i].x < 0.6) {
+      domain.attributes[i] = 1.0;
+      weighted.push_back(domain.points[i]);
+    }
+  }
+  madd::Options o;
+  o.subdomains = 32;
+  o.gradation = 3.0;
+  o.interpolation = 0.5;
+  auto mean_distance = [&](const Decomposition& d) {
+    double total = 0;
+    for (const auto& s : d.subdomains) {
+      const Point c = centroid(d, s.rings[0]);
+      double best = INFINITY;
+      for (Point w : weighted) best = std::min(best, std::hypot(c.x - w.x, c.y - w.y));
+      total += best;
+    }
+    return total / static_cast<double>(d.subdomains.size());
+  };
+  const double graded = mean_distance(checked(domain, o, 32));
+  madd::Options uniform = o;
+  uniform.gradation = 0;
+  const double plain = mean_distance(checked(domain, uniform, 32));
+  INFO("graded " << graded << ", uniform " << plain);
+  CHECK(graded < 0.8 * plain);
+}
+
+TEST_CASE("background weights and areas") {
+  const Pslg domain = rectangle(4, 1);
+  madd::Options o;
+  for (int i = 0; i < 80; ++i) {
+    for (int j = 0; j < 20; ++j) {
+      const Point p{(i + 0.5) / 20.0, (j + 0.5) / 20.0};
+      o.background_weights.push_back({p, p.x});
+    }
+  }
+  o.subdomains = 64;
+  const Decomposition d = checked(domain, o, 64);
+  CHECK(x_area_correlation(d) < -0.5);
+
+  madd::Options a;
+  a.subdomains = 1000;
+  for (const auto& p : o.background_weights) a.background_areas.push_back({p.at, 0.02 + 0.03 * p.at.x});
+  const Decomposition da = checked(domain, a, 0);
+  CHECK(da.subdomains.size() > 10);
+  for (const auto& s : da.subdomains) {
+    double least = INFINITY;
+    for (const auto& p : a.background_areas) {
+      if (inside_ring(da, s.rings[0], p.at)) least = std::min(least, p.value);
+    }
+    if (std::isfinite(least)) CHECK(s.area <= a.area_ratio_bound * least * (1 + 1e-9));
+  }
+  CHECK(x_area_correlation(da) > 0.5);
+}
+
+TEST_CASE("graded output is identical for 1 and 2 threads") {
+  Pslg domain = rectangle(4, 1, 4);
+  for (std::size_t i = 0; i < domain.points.size(); ++i) domain.attributes[i] = domain.points[i].x;
+  madd::Options variants[4];
+  variants[0].weight_function = [](double x, double y) { return 1 + x * y; };
+  variants[1].area_function = [](double x, double) { return 0.01 + 0.02 * x; };
+  variants[2].gradation = 2;
+  variants[2].interpolation = 0.5;
+  variants[3].background_weights = {{{0.5, 0.5}, 10}, {{3.5, 0.2}, 1}, {{2, 0.7}, 4}};
+  for (auto& o : variants) {
+    o.subdomains = 40;
+    o.threads = 1;
+    const Decomposition one = checked(domain, o, 0);
+    o.threads = 2;
+    const Decomposition two = madd::decompose(domain, o);
+    CHECK(one == two);
+  }
+}
+
+} // TEST_SUITE
