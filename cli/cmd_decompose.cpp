@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -19,6 +20,9 @@
 #include "madd/poly_io.hpp"
 
 namespace madd::cli {
+
+extern volatile std::sig_atomic_t writing_outputs;  // main.cpp: interrupts unwind instead of exiting
+
 namespace {
 
 constexpr const char* decompose_help =
@@ -207,7 +211,9 @@ int decompose_body(void* context) {
   }
   const Metrics m = metrics(d, times);
   progress.say("writing");
+  writing_outputs = 1;
   write_outputs(args, d, m);
+  writing_outputs = 0;
   progress.done();
   const bool report_on_stdout = args.report && args.report_out.empty();
   if (!args.quiet) print_summary(report_on_stdout ? stderr : stdout, args, d, m);

@@ -17,6 +17,11 @@
 
 namespace madd::cli {
 
+// Set by a command while it writes its outputs (cmd_decompose.cpp): an
+// interrupt then never exits at once, so that a --split staging directory
+// between two files is removed too.
+volatile std::sig_atomic_t writing_outputs = 0;
+
 namespace {
 std::map<std::string, Command>& commands() {
   static std::map<std::string, Command> registry;
@@ -51,7 +56,7 @@ volatile std::sig_atomic_t interrupted_by = 0;
 
 void on_interrupt(int signal_number) {
   interrupted_by = signal_number;
-  if (madd::interrupt_output_writes()) return;
+  if (madd::interrupt_output_writes() || writing_outputs != 0) return;
   const char message[] = "madd: interrupted\n";
   [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
   ::_exit(128 + signal_number);
