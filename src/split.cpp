@@ -66,11 +66,11 @@ EndRef end_ref(const FaceDomain& fd, const MedialGraph& g, std::uint32_t point) 
 }
 
 SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDomain& fd, const Triangulation& tri,
-                        const MedialGraph& g, const std::vector<std::uint8_t>& side) {
+                        const MedialGraph& g, const std::vector<std::uint8_t>& side, const EndSmoothing* smoothing) {
   SplitResult r;
+  std::vector<CutEnd> cut;
   for (const MedialEdge& e : g.edges) {
-    if (!is_cut(g, side, e)) continue;
-    r.edges.push_back({end_ref(fd, g, e.from), end_ref(fd, g, e.to), side[g.coarse[e.left]]});
+    if (is_cut(g, side, e)) cut.push_back({{e.from, e.to}, side[g.coarse[e.left]]});
   }
   r.ring_side.assign(sub.faces[face].rings.size(), 0);
   std::vector<std::uint8_t> seen(r.ring_side.size(), 0);
@@ -95,6 +95,8 @@ SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDo
       r.interior[s] = Point{(c[0].x + c[1].x + c[2].x) / 3.0, (c[0].y + c[1].y + c[2].y) / 3.0};
     }
   }
+  if (smoothing != nullptr) smooth_ends(g, fd, *smoothing, cut, r.weight, r.interior);
+  for (const CutEnd& c : cut) r.edges.push_back({end_ref(fd, g, c.end[0]), end_ref(fd, g, c.end[1]), c.left_side});
   return r;
 }
 
@@ -149,14 +151,24 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
     if (out.quality >= options.good_balance) break;
   }
   if (best_side.empty()) return out;
+  EndSmoothing ends;
   if (smooth) {
     double w[2] = {0.0, 0.0};
     for (std::uint32_t v = 0; v < g.contracted.vertex_count(); ++v) w[best_side[v]] += g.contracted.vertex_weights[v];
     const double floor = std::max(options.imbalance, out.quality - options.smoothing_tolerance);
-    smooth_bisection(g, fd.refs.size(), plan, floor, options.smoothing_iterations, best_side, w);
-    out.quality = balance_quality(plan, w[0], w[1]);
+    ends.iterations = options.smoothing_iterations;
+    ends.min_angle_deg = options.min_angle_deg;
+    ends.plan = plan;
+    ends.min_quality = floor;
+    double area = 0.0;
+    for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
+      const auto c = vertex_triangle_corners(g, tri, v);
+      area += std::abs(signed_area(c[0], c[1], c[2]));
+    }
+    ends.weight_per_area = area > 0.0 ? (w[0] + w[1]) / area : 1.0;
   }
-  out.result = make_result(sub, face, fd, tri, g, best_side);
+  out.result = make_result(sub, face, fd, tri, g, best_side, smooth ? &ends : nullptr);
+  out.quality = balance_quality(plan, out.result.weight[0], out.result.weight[1]);
   return out;
 }
 

@@ -51,14 +51,26 @@ double balance_quality(std::uint32_t plan, double w0, double w1);
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
                                                                      const std::vector<std::uint8_t>& side);
 
-// Sec. 5.1 step 2 on a valid bisection of G'_D: moves G'_D vertices next to the
-// cut to the other side while that lowers the cut's smoothed cost (length x
-// angle coefficient x end bonuses), keeps both sides connected, creates no
-// pinch and keeps balance_quality >= min_quality. w holds the side weights.
-void smooth_bisection(const MedialGraph& g, std::size_t boundary_points, std::uint32_t plan, double min_quality,
-                      int iterations, std::vector<std::uint8_t>& side, double w[2]);
-
 struct FaceDomain;
+
+// A cut partial separator: its two ends (indices into MedialGraph::points) and
+// the side (0/1) on its left going end[0] -> end[1].
+struct CutEnd {
+  std::uint32_t end[2];
+  std::uint8_t left_side = 0;
+};
+
+struct EndSmoothing {
+  int iterations = 1;
+  double min_angle_deg = 60.0;
+  std::uint32_t plan = 2;
+  double min_quality = 0.0;      // balance_quality floor
+  double weight_per_area = 1.0;  // to move weight with the swept area
+};
+
+// Sec. 5.1 step 2 on the ends of the cut separators (see split_ends.cpp).
+void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s, std::vector<CutEnd>& cut,
+                 double w[2], const Point interior[2]);
 // Density weight of every G_D vertex: r * area + a * (its share of the
 // boundary vertex weights, or the weight samples it contains).
 std::vector<double> density_weights(const MedialGraph& g, const Triangulation& tri, const FaceDomain& fd,
