@@ -19,6 +19,7 @@ namespace {
 constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_side * r)
 constexpr double max_working_points = 4.0e5;
 constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
+constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
@@ -166,6 +167,7 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
       area += std::abs(signed_area(c[0], c[1], c[2]));
     }
     ends.weight_per_area = area > 0.0 ? (w[0] + w[1]) / area : 1.0;
+    ends.min_length = min_separator_fraction * std::sqrt(area / plan);
   }
   out.result = make_result(sub, face, fd, tri, g, best_side, smooth ? &ends : nullptr);
   out.quality = balance_quality(plan, out.result.weight[0], out.result.weight[1]);

@@ -66,6 +66,7 @@ struct EndSmoothing {
   std::uint32_t plan = 2;
   double min_quality = 0.0;      // balance_quality floor
   double weight_per_area = 1.0;  // to move weight with the swept area
+  double min_length = 0.0;       // a move never makes a partial separator shorter than this (unless it was)
 };
 
 // Sec. 5.1 step 2 on the ends of the cut separators (see split_ends.cpp).

@@ -6,7 +6,8 @@
 // only when every angle stays >= Phi0, no point of the split lies in the
 // swept triangle (c, p, x) (so nothing is crossed and the sides' interior
 // points stay put), no other cut separator ends at x, and the balance stays
-// within the acceptable imbalance.
+// within the acceptable imbalance, and a separator is not shortened below
+// EndSmoothing::min_length (short separators are the artifact smoothing is for).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -102,7 +103,10 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
               const double moved_weight = area * s.weight_per_area;
               nw[from] -= moved_weight;
               nw[1 - from] += moved_weight;
-              if (sc < best && nw[from] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality &&
+              // Shorter is better, but not down to a sliver of the final subdomains' size.
+              const double len = distance(g.points[c], g.points[y]);
+              const bool long_enough = len >= std::min(distance(g.points[c], g.points[p]), s.min_length);
+              if (sc < best && long_enough && nw[from] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality &&
                   swept_empty(g, c, path, interior)) {
                 best = sc;
                 best_x = y;

@@ -13,6 +13,7 @@ namespace madd::test {
 struct SmoothingFigures {
   double shortest_norm = 0.0;   // shortest new segment / sqrt(mean area)
   std::uint32_t short_count = 0;  // new segments shorter than 5% of sqrt(mean area)
+  std::uint32_t short_separators = 0;  // of which separators
   std::uint32_t ends = 0;       // separator ends: vertices with a separator and degree >= 3
   double on_existing = 0.0;     // share of ends at an input vertex or where >= 2 separators
                                 // meet the same point from both sides (degree >= 4)
@@ -42,6 +43,7 @@ inline SmoothingFigures smoothing_figures(const Decomposition& d, std::size_t in
     const double len = std::hypot(d.points[s.a].x - d.points[s.b].x, d.points[s.a].y - d.points[s.b].y) / scale;
     f.shortest_norm = std::min(f.shortest_norm, len);
     if (len < 0.05) ++f.short_count;
+    if (len < 0.05 && sep) ++f.short_separators;
   }
   std::uint32_t existing = 0;
   for (std::size_t v = 0; v < d.points.size(); ++v) {
