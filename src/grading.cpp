@@ -118,8 +118,8 @@ double base_weight(const Subdivision& sub, const EndRef& e, const std::vector<do
 
 } // namespace
 
-void collect_end_weights(const Subdivision& snapshot, const SplitResult& result, const std::vector<double>& point_weights,
-                         double p, EndWeights& out) {
+void collect_end_weights(const Subdivision& snapshot, const SplitResult& result,
+                         const std::vector<double>& point_weights, double p, EndWeights& out) {
   // Circumcentres: mean of the boundary ends of the spokes meeting there.
   std::vector<std::pair<Point, std::pair<double, int>>> centres;
   auto add_centre = [&](Point c, double w) {

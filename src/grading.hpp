@@ -60,8 +60,8 @@ double sample_weight(const FaceSamples& samples);
 // An end on a segment gets p * the linear interpolation of the segment's end
 // weights; a circumcentre gets p * the mean of its boundary neighbours' interpolated weights.
 using EndWeights = std::vector<std::pair<Point, double>>;
-void collect_end_weights(const Subdivision& snapshot, const SplitResult& result, const std::vector<double>& point_weights,
-                         double p, EndWeights& out);
+void collect_end_weights(const Subdivision& snapshot, const SplitResult& result,
+                         const std::vector<double>& point_weights, double p, EndWeights& out);
 
 // Extends point_weights to every point of `points`, taking new points' weights from `ends`.
 void assign_new_weights(const std::vector<Point>& points, EndWeights ends, std::vector<double>& point_weights);

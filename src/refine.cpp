@@ -69,7 +69,8 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
       const Point a = sub.points[v];
       auto [it, fresh] = working_of.try_emplace(v, 0u);
       if (fresh) {
-        it->second = add_point(a, EndRef{EndRef::vertex, v, 0, a}, static_cast<std::uint32_t>(r), existing_vertex_bonus);
+        const auto ring_id = static_cast<std::uint32_t>(r);
+        it->second = add_point(a, EndRef{EndRef::vertex, v, 0, a}, ring_id, existing_vertex_bonus);
       } else {
         pinched[it->second] = 1;  // the boundary passes here twice: no separator may end here
       }

@@ -69,56 +69,74 @@ double score(const MedialGraph& g, const FaceDomain& fd, std::uint32_t c, std::u
   return distance(g.points[c], g.points[x]) * f0 * static_cast<double>(fd.links[x].bonus);
 }
 
+struct Move {
+  double score = 0.0;
+  std::uint32_t to = no_index;
+  double w[2] = {0.0, 0.0};
+};
+
+// Side weights after moving end p of separator k (fixed end c) to y: the swept
+// triangle goes from the side left of c -> p to the other when y is on its left.
+void moved_weights(const MedialGraph& g, const EndSmoothing& s, const CutEnd& sep, int e, std::uint32_t y,
+                   const double w[2], double out[2]) {
+  const std::uint32_t p = sep.end[e], c = sep.end[1 - e];
+  const double area = std::abs(signed_area(g.points[c], g.points[p], g.points[y]));
+  const int left_of_cp = e == 1 ? sep.left_side : 1 - sep.left_side;
+  const int from = orient2d(g.points[c], g.points[p], g.points[y]) > 0.0 ? left_of_cp : 1 - left_of_cp;
+  out[0] = w[0];
+  out[1] = w[1];
+  out[from] -= area * s.weight_per_area;
+  out[1 - from] += area * s.weight_per_area;
+}
+
+// The best replacement for end e of separator k, or Move::to == no_index.
+Move best_move(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s, const std::vector<CutEnd>& cut,
+               std::size_t k, int e, const double w[2], const Point interior[2]) {
+  const std::uint32_t p = cut[k].end[e], c = cut[k].end[1 - e];
+  Move best;
+  best.score = score(g, fd, c, p, std::max(end_angles(g, fd, cut, k, c, p), s.min_angle_deg), s.min_angle_deg);
+  best.score *= 1.0 - 1e-9;  // only a real improvement moves
+  const double shortest = std::min(distance(g.points[c], g.points[p]), s.min_length);
+  for (int dir = 0; dir < 2; ++dir) {
+    std::vector<std::uint32_t> path{p};
+    for (int step = 0; step < end_search_steps; ++step) {
+      const std::uint32_t y = dir == 0 ? fd.links[path.back()].next : fd.links[path.back()].prev;
+      if (y == no_index || y == c) break;
+      path.push_back(y);
+      const double angle = end_angles(g, fd, cut, k, c, y);
+      double nw[2];
+      moved_weights(g, s, cut[k], e, y, w, nw);
+      // Shorter is better, but not down to a sliver of the final subdomains' size.
+      const bool ok = angle >= s.min_angle_deg + angle_margin_deg && distance(g.points[c], g.points[y]) >= shortest &&
+                      nw[0] > 0.0 && nw[1] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality;
+      const double sc = ok ? score(g, fd, c, y, angle, s.min_angle_deg) : INFINITY;
+      if (sc < best.score && swept_empty(g, c, path, interior)) {
+        best.score = sc;
+        best.to = y;
+        best.w[0] = nw[0];
+        best.w[1] = nw[1];
+      }
+      if (fd.refs[y].kind == EndRef::vertex) break;  // the ring edge ends here: no longer straight
+    }
+  }
+  return best;
+}
+
 } // namespace
 
 void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s, std::vector<CutEnd>& cut,
                  double w[2], const Point interior[2]) {
-  const std::size_t boundary = fd.refs.size();
   for (int it = 0; it < s.iterations; ++it) {
     bool moved = false;
     for (std::size_t k = 0; k < cut.size(); ++k) {
       for (int e = 0; e < 2; ++e) {
-        const std::uint32_t p = cut[k].end[e], c = cut[k].end[1 - e];
-        if (p >= boundary || fd.links[p].prev == no_index) continue;
-        const double current = score(g, fd, c, p, std::max(end_angles(g, fd, cut, k, c, p), s.min_angle_deg),
-                                     s.min_angle_deg);
-        double best = current * (1.0 - 1e-9);
-        std::uint32_t best_x = no_index;
-        double best_w[2] = {w[0], w[1]};
-        for (int dir = 0; dir < 2; ++dir) {
-          std::vector<std::uint32_t> path{p};
-          for (int step = 0; step < end_search_steps; ++step) {
-            const std::uint32_t y = dir == 0 ? fd.links[path.back()].next : fd.links[path.back()].prev;
-            if (y == no_index || y == c) break;
-            path.push_back(y);
-            const double angle = end_angles(g, fd, cut, k, c, y);
-            if (angle >= s.min_angle_deg + angle_margin_deg) {
-              const double sc = score(g, fd, c, y, angle, s.min_angle_deg);
-              // The swept triangle changes sides: from the side left of c -> p when y is to its left.
-              const double area = std::abs(signed_area(g.points[c], g.points[p], g.points[y]));
-              const std::uint8_t left_of_cp = e == 1 ? cut[k].left_side : static_cast<std::uint8_t>(1 - cut[k].left_side);
-              const bool y_left = orient2d(g.points[c], g.points[p], g.points[y]) > 0.0;
-              const int from = y_left ? left_of_cp : 1 - left_of_cp;
-              double nw[2] = {w[0], w[1]};
-              const double moved_weight = area * s.weight_per_area;
-              nw[from] -= moved_weight;
-              nw[1 - from] += moved_weight;
-              // Shorter is better, but not down to a sliver of the final subdomains' size.
-              const double len = distance(g.points[c], g.points[y]);
-              const bool long_enough = len >= std::min(distance(g.points[c], g.points[p]), s.min_length);
-              if (sc < best && long_enough && nw[from] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality &&
-                  swept_empty(g, c, path, interior)) {
-                best = sc;
-                best_x = y;
-                best_w[0] = nw[0], best_w[1] = nw[1];
-              }
-            }
-            if (fd.refs[y].kind == EndRef::vertex) break;  // the ring edge ends here: no longer straight
-          }
-        }
-        if (best_x == no_index) continue;
-        cut[k].end[e] = best_x;
-        w[0] = best_w[0], w[1] = best_w[1];
+        const std::uint32_t p = cut[k].end[e];
+        if (p >= fd.refs.size() || fd.links[p].prev == no_index) continue;
+        const Move m = best_move(g, fd, s, cut, k, e, w, interior);
+        if (m.to == no_index) continue;
+        cut[k].end[e] = m.to;
+        w[0] = m.w[0];
+        w[1] = m.w[1];
         moved = true;
       }
     }

@@ -86,7 +86,8 @@ double x_area_correlation(const Decomposition& d) {
 // Validity and C1 for every graded run; returns the decomposition.
 Decomposition checked(const Pslg& domain, const madd::Options& o, std::uint32_t expected) {
   const Decomposition d = madd::decompose(domain, o);
-  const madd::Verification v = madd::verify_decomposition(d, domain, expected == 0 ? static_cast<std::uint32_t>(d.subdomains.size()) : expected);
+  const auto made = static_cast<std::uint32_t>(d.subdomains.size());
+  const madd::Verification v = madd::verify_decomposition(d, domain, expected == 0 ? made : expected);
   for (const auto& p : v.problems) INFO(p);
   CHECK(v.ok());
   CHECK(madd::metrics(d).angle_min >= o.min_angle_deg);
