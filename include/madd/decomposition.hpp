@@ -30,13 +30,16 @@ struct Options {
   std::uint64_t seed = 1;
   int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split
 
-  // Smoothing (Sec. 5.1): iterations of step 2 (0 turns smoothing off).
+  // Smoothing (Sec. 5.1): iterations of step 2 (0 turns smoothing off,
+  // step 1's edge-weight coefficients included). See docs/smoothing.md.
   int smoothing_iterations = 1;
 
   // Graded decomposition (Sec. 5.2). A subdomain's density weight is
   // refine * area + gradation * weight, where weight comes from, in order:
   // the weight function, the background weights, or the boundary weights
   // (vertex attribute 1; used when gradation > 0 and neither of the others is set).
+  // With a weight function or background weights, gradation 0 counts as 1;
+  // negative or NaN function values count as 0. See docs/grading.md.
   double gradation = 0.0;           // a
   double interpolation = 0.0;       // p: weight of new separator points = p * lerp of endpoint weights
   std::function<double(double x, double y)> weight_function;  // case 3, evaluated on a grid per subdomain
@@ -44,7 +47,8 @@ struct Options {
   std::vector<ValuedPoint> background_weights;  // case 2: a subdomain's weight = sum of those inside it
   std::vector<ValuedPoint> background_areas;    // case 2: required area = min of those inside it
   // With a required area (area_function or background_areas), subdomains are
-  // split while area / required area exceeds this bound, up to `subdomains`.
+  // split while area / required area exceeds this bound, up to `subdomains`
+  // (largest ratio first; docs/grading.md gives the exact rule).
   double area_ratio_bound = 1.0;
 
   // Resource limits (docs/hostile.md): decompose() throws LimitError when a
