@@ -170,6 +170,23 @@ TEST_CASE("boundary weights concentrate subdomains near the weighted vertices") 
   CHECK(graded < 0.8 * plain);
 }
 
+TEST_CASE("boundary weights: a subdomain weighs r * area + a * its boundary vertex weights (p = 0)") {
+  Pslg domain = rectangle(4, 1, 3);
+  for (std::size_t i = 0; i < domain.points.size(); ++i) domain.attributes[i] = 1.0 + domain.points[i].x;
+  madd::Options o;
+  o.subdomains = 12;
+  o.gradation = 0.5;
+  o.interpolation = 0.0;  // new separator points weigh nothing
+  const Decomposition d = checked(domain, o, 12);
+  for (const auto& s : d.subdomains) {
+    double w = 0;
+    for (const auto& ring : s.rings) {
+      for (std::uint32_t v : ring) w += v < domain.points.size() ? domain.attributes[v] : 0.0;
+    }
+    CHECK(s.weight == doctest::Approx(o.refine * s.area + o.gradation * w).epsilon(1e-9));
+  }
+}
+
 TEST_CASE("background weights and areas") {
   const Pslg domain = rectangle(4, 1);
   madd::Options o;
