@@ -110,7 +110,7 @@ TEST_SUITE("graph") {
     }
   }
 
-  TEST_CASE("read_metis_file reports a missing file as a ParseError") {
-    CHECK_THROWS_AS(madd::read_metis_file("/nonexistent/dir/none.graph"), madd::ParseError);
+  TEST_CASE("read_metis_file reports a missing file as an InputFileError (exit 3 in the CLI)") {
+    CHECK_THROWS_AS(madd::read_metis_file("/nonexistent/dir/none.graph"), madd::InputFileError);
   }
 }
