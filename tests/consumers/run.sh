@@ -25,6 +25,12 @@ compiler=""
 if [ -n "${CXX:-}" ]; then compiler="-DCMAKE_CXX_COMPILER=$CXX"; fi
 
 step() { echo "==> $*"; }
+# Runs a command with its output in a log file, shown only when it fails.
+quietly() {
+  log=$1
+  shift
+  "$@" > "$log" 2>&1 || { cat "$log" >&2; exit 1; }
+}
 
 # docs/api.md shows find_package/main.cpp verbatim: the example must compile.
 sed -n '/^<!-- example: tests\/consumers\/find_package\/main.cpp -->$/,/^```$/p' "$source_dir/docs/api.md" |
@@ -40,13 +46,13 @@ if [ $# -ge 1 ]; then
 else
   build=$work/madd-build
   step "building madd (library and CLI) in $build"
-  cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE="$config" -DMADD_BUILD_TESTS=OFF \
-        -DMADD_BUILD_BENCH=OFF $compiler > "$work/madd-configure.log"
+  quietly "$work/madd-configure.log" cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE="$config" \
+          -DMADD_BUILD_TESTS=OFF -DMADD_BUILD_BENCH=OFF $compiler
   cmake --build "$build" --config "$config" -j2
 fi
 
 step "installing $build into $work/prefix"
-cmake --install "$build" --config "$config" --prefix "$work/prefix" > "$work/install.log"
+quietly "$work/install.log" cmake --install "$build" --config "$config" --prefix "$work/prefix"
 for f in include/madd/madd.hpp include/madd/output_formats.hpp share/man/man1/madd.1; do
   if [ ! -f "$work/prefix/$f" ]; then
     echo "run.sh: $f was not installed" >&2
@@ -55,30 +61,27 @@ for f in include/madd/madd.hpp include/madd/output_formats.hpp share/man/man1/ma
 done
 
 step "find_package consumer"
-cmake -S "$here/find_package" -B "$work/find_package" -DCMAKE_BUILD_TYPE="$config" \
-      -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_FLAGS="$flags" $compiler > "$work/fp-configure.log"
-cmake --build "$work/find_package" --config "$config" -j2
+quietly "$work/fp-configure.log" cmake -S "$here/find_package" -B "$work/find_package" \
+        -DCMAKE_BUILD_TYPE="$config" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_CXX_FLAGS="$flags" $compiler
+quietly "$work/fp-build.log" cmake --build "$work/find_package" --config "$config" -j2
 # A multi-config generator puts the program in a per-config directory.
 run_consumer() {
   if [ -x "$1/consumer" ]; then "$1/consumer"; else "$1/$config/consumer"; fi
 }
-run_consumer "$work/find_package" > "$work/fp.out"
+run_consumer "$work/find_package" > "$work/fp.out" || { cat "$work/fp.out"; exit 1; }
 head -n 1 "$work/fp.out"
 
 # Debug (-O0) keeps this second build of the library quick; the program's own
 # checks do not depend on optimisation.
 step "add_subdirectory consumer (builds the library from source)"
-cmake -S "$here/add_subdirectory" -B "$work/add_subdirectory" -DCMAKE_BUILD_TYPE=Debug \
-      -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_CXX_FLAGS="$flags" $compiler > "$work/as-configure.log"
+quietly "$work/as-configure.log" cmake -S "$here/add_subdirectory" -B "$work/add_subdirectory" \
+        -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_CXX_FLAGS="$flags" $compiler
 config=Debug
-cmake --build "$work/add_subdirectory" --config Debug -j2 > "$work/as-build.log" || {
-  cat "$work/as-build.log"
-  exit 1
-}
+quietly "$work/as-build.log" cmake --build "$work/add_subdirectory" --config Debug -j2
 if [ -e "$work/add_subdirectory/madd-build/tests" ] || [ -e "$work/add_subdirectory/madd-build/madd" ]; then
   echo "run.sh: add_subdirectory built madd's tests or CLI; only the library should be built" >&2
   exit 1
 fi
-run_consumer "$work/add_subdirectory" > "$work/as.out"
+run_consumer "$work/add_subdirectory" > "$work/as.out" || { cat "$work/as.out"; exit 1; }
 head -n 1 "$work/as.out"
 step "consumers OK"
