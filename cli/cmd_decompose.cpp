@@ -17,6 +17,7 @@
 #include "madd/expression.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
+#include "madd/output_formats.hpp"
 #include "madd/poly_io.hpp"
 
 namespace madd::cli {
@@ -60,6 +61,9 @@ constexpr const char* decompose_help =
     "      --svg FILE.svg     a picture\n"
     "      --svg-numbers      write subdomain numbers in the picture\n"
     "      --svg-mark-angles DEG   circle the new angles below DEG in the picture\n"
+    "      --geo FILE.geo     a gmsh model: gmsh -2 FILE.geo meshes all subdomains conformingly\n"
+    "      --vtk FILE.vtk     legacy VTK for ParaView: subdomains as triangles with cell data\n"
+    "      --geojson FILE     GeoJSON: one Polygon feature per subdomain\n"
     "      --report[=FILE]    the quality figures as JSON (on stdout without FILE)\n\n"
     "  -q, --quiet            print nothing on success\n"
     "  -v, --verbose          print every quality figure and the phase times\n"
@@ -73,6 +77,7 @@ struct DecomposeArgs {
   std::string input;
   Options options;
   std::string poly_out, split_dir, subdomains_out, svg_out, report_out;
+  std::string geo_out, vtk_out, geojson_out;  // madd/output_formats.hpp
   bool report = false;
   SvgOptions svg;
   bool quiet = false;
@@ -138,7 +143,8 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
                  fig(m.shortest_new_segment_norm, "%.4g").c_str());
     for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-10s %.3f s\n", t.name.c_str(), t.seconds);
   }
-  for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.report_out})
+  for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.geo_out, &args.vtk_out,
+                                    &args.geojson_out, &args.report_out})
     if (!file->empty()) std::fprintf(out, "  wrote %s\n", file->c_str());
   if (!args.split_dir.empty()) {
     const auto n = static_cast<std::uint32_t>(d.subdomains.size());
@@ -155,9 +161,15 @@ void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metr
   const std::string table = args.subdomains_out.empty() ? std::string() : format_subdomain_file(d);
   const std::string svg = args.svg_out.empty() ? std::string() : format_svg(d, args.svg);
   const std::string report = args.report ? format_report_json(m) : std::string();
+  const std::string geo = args.geo_out.empty() ? std::string() : format_geo(d);
+  const std::string vtk = args.vtk_out.empty() ? std::string() : format_vtk(d);
+  const std::string geojson = args.geojson_out.empty() ? std::string() : format_geojson(d);
   if (!args.poly_out.empty()) write_file_atomically(args.poly_out, poly);
   if (!args.subdomains_out.empty()) write_file_atomically(args.subdomains_out, table);
   if (!args.svg_out.empty()) write_file_atomically(args.svg_out, svg);
+  if (!args.geo_out.empty()) write_file_atomically(args.geo_out, geo);
+  if (!args.vtk_out.empty()) write_file_atomically(args.vtk_out, vtk);
+  if (!args.geojson_out.empty()) write_file_atomically(args.geojson_out, geojson);
   if (!args.split_dir.empty()) write_split(d, args.split_dir, stem_of(args.input));
   if (args.report && !args.report_out.empty()) write_file_atomically(args.report_out, report);
   if (args.report && args.report_out.empty()) {
@@ -235,7 +247,7 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
-                      opt_svg_mark, opt_report, opt_time_limit, opt_max_memory, opt_no_verify,
+                      opt_svg_mark, opt_report, opt_geo, opt_vtk, opt_geojson, opt_time_limit, opt_max_memory, opt_no_verify,
                       opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound };
 
 // A background mesh (Sec. 5.2 case 2): the nodes of a .node file, value = first attribute.
@@ -335,6 +347,9 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     if (!parse_number(arg, x) || x <= 0) return "--area-bound needs a number > 0";
     args.options.area_ratio_bound = x;
     return {};
+  case opt_geo: args.geo_out = arg; return {};
+  case opt_vtk: args.vtk_out = arg; return {};
+  case opt_geojson: args.geojson_out = arg; return {};
   case 'q': args.quiet = true; return {};
   case 'v': args.verbose = true; return {};
   default: return "unknown option";
@@ -359,6 +374,9 @@ int run_decompose(int argc, char** argv) {
       {"svg-numbers", no_argument, nullptr, opt_svg_numbers},
       {"svg-mark-angles", required_argument, nullptr, opt_svg_mark},
       {"report", optional_argument, nullptr, opt_report},
+      {"geo", required_argument, nullptr, opt_geo},
+      {"vtk", required_argument, nullptr, opt_vtk},
+      {"geojson", required_argument, nullptr, opt_geojson},
       {"time-limit", required_argument, nullptr, opt_time_limit},
       {"max-memory", required_argument, nullptr, opt_max_memory},
       {"no-verify", no_argument, nullptr, opt_no_verify},
