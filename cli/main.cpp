@@ -89,30 +89,26 @@ int usage_error(const char* command, const std::string& message) {
   return exit_usage;
 }
 
+namespace {
+// The exit code for a madd::Error, from its most specific type.
+int exit_code_of(const Error& e) {
+  if (dynamic_cast<const ParseError*>(&e) || dynamic_cast<const InvalidInputError*>(&e) ||
+      dynamic_cast<const InputFileError*>(&e))
+    return exit_bad_input;
+  if (dynamic_cast<const DecompositionError*>(&e)) return exit_decompose_failed;
+  if (dynamic_cast<const LimitError*>(&e)) return exit_limit;
+  if (dynamic_cast<const InternalError*>(&e)) return exit_internal;
+  return exit_io;  // OutputError, and any other failure to produce an output
+}
+} // namespace
+
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);
-  } catch (const ParseError& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_bad_input;
-  } catch (const InvalidInputError& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_bad_input;
-  } catch (const DecompositionError& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_decompose_failed;
-  } catch (const InputFileError& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_bad_input;
-  } catch (const InternalError& e) {
-    std::fprintf(stderr, "madd %s: internal error: %s\n", command, e.what());
-    return exit_internal;
-  } catch (const LimitError& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_limit;
   } catch (const Error& e) {
-    std::fprintf(stderr, "madd %s: error: %s\n", command, e.what());
-    return exit_io;
+    const int code = exit_code_of(e);
+    std::fprintf(stderr, "madd %s: %s: %s\n", command, code == exit_internal ? "internal error" : "error", e.what());
+    return code;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "madd %s: error: out of memory\n", command);
     return exit_limit;
