@@ -47,6 +47,8 @@ private:
   std::uint32_t fill(const Path& path, std::size_t& next_slot);
   void mark(std::uint32_t h, std::uint32_t s);
   void attach(std::uint32_t inner, std::uint32_t outer);
+  void find_slits(const Path& path);
+  void close_slits();
 
   Mesh& m_;
   const Pslg& pslg_;
@@ -55,6 +57,15 @@ private:
   std::vector<std::uint32_t> crossed_;
   Path upper_, lower_;
   std::vector<Task> tasks_;
+  // A vertex can lie strictly inside the cavity, joined to the rest by an
+  // uncrossed edge inside it (the segment crosses every triangle around it):
+  // that edge then appears twice on a path, once per side, and its two new
+  // half-edges must be linked to each other, not to the old slots.
+  struct Slit {
+    std::uint32_t old_edge, old_twin, seg, fresh;
+  };
+  std::vector<char> in_cavity_;  // per triangle
+  std::vector<Slit> slits_;
 };
 
 SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg) {
@@ -65,6 +76,25 @@ SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_
     if (mesh.tv[c] != mesh.ghost) v2c_[mesh.tv[c]] = c;
   }
   m_.seg.assign(m_.tv.size(), no_index);
+  in_cavity_.assign(m_.tv.size() / 3, 0);
+}
+
+void SegmentInserter::find_slits(const Path& path) {
+  for (const std::uint32_t e : path.ext) {
+    if (in_cavity_[e / 3]) slits_.push_back({e, m_.tn[e], m_.seg[e], no_index});
+  }
+}
+
+void SegmentInserter::close_slits() {
+  for (const Slit& a : slits_) {
+    const auto twin = std::find_if(slits_.begin(), slits_.end(), [&](const Slit& b) { return b.old_edge == a.old_twin; });
+    if (twin == slits_.end() || a.fresh == no_index || twin->fresh == no_index) {
+      throw InternalError("triangulate: internal error: unpaired edge inside a segment cavity");
+    }
+    m_.link(a.fresh, twin->fresh);
+    m_.seg[a.fresh] = a.seg;
+  }
+  for (const std::uint32_t t : crossed_) in_cavity_[t] = 0;
 }
 
 void SegmentInserter::mark(std::uint32_t h, std::uint32_t s) {
@@ -82,12 +112,18 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
   // Fast path, no geometry: most segments are already Delaunay edges.
   const std::uint32_t start = v2c_[a];
   std::uint32_t c = start;
+  std::size_t turns = 0;
   do {
     if (m_.tv[next_edge(c)] == b) {
       corner = prev_edge(c);
       return b;
     }
     c = next_edge(m_.tn[next_edge(c)]);
+    // A consistent mesh brings the rotation back to start within the
+    // triangle count; a broken one must fail loudly, never hang.
+    if (++turns > m_.tv.size() / 3) {
+      throw InternalError("triangulate: internal error: open fan around vertex " + std::to_string(a));
+    }
   } while (c != start);
   const auto& P = m_.points;
   const Point pa = P[a], pb = P[b];
@@ -156,9 +192,17 @@ std::uint32_t SegmentInserter::cross(std::uint32_t a, std::uint32_t b, std::uint
   // The lower side is re-triangulated as a path from end back to a.
   std::reverse(lower_.verts.begin(), lower_.verts.end());
   std::reverse(lower_.ext.begin(), lower_.ext.end());
+  for (const std::uint32_t t : crossed_) {
+    if (in_cavity_[t]) throw InternalError("triangulate: internal error: segment walk revisits a triangle");
+    in_cavity_[t] = 1;
+  }
+  slits_.clear();
+  find_slits(upper_);
+  find_slits(lower_);
   std::size_t next_slot = 0;
   const std::uint32_t top = fill(upper_, next_slot);
   const std::uint32_t bottom = fill(lower_, next_slot);
+  close_slits();
   m_.link(top, bottom);
   m_.seg[top] = s;
   m_.seg[bottom] = s;
@@ -184,7 +228,14 @@ std::uint32_t SegmentInserter::fill(const Path& path, std::size_t& next_slot) {
     const Task task = tasks_.back();
     tasks_.pop_back();
     if (task.j == task.i + 1) {
-      attach(task.parent, path.ext[task.i]);
+      const std::uint32_t ext = path.ext[task.i];
+      if (in_cavity_[ext / 3]) {
+        for (Slit& slit : slits_) {
+          if (slit.old_edge == ext) slit.fresh = task.parent;
+        }
+      } else {
+        attach(task.parent, ext);
+      }
       continue;
     }
     // The vertex whose circle through u, v holds no other path vertex.

@@ -35,24 +35,22 @@ TEST_CASE("needle spike: a 48-segment disk with a 6.7e5-long spike splits in sec
   CHECK(check.ok());
 }
 
-// OPEN (skipped so the suite stays finite): fuzz_decompose timeout, a hang of
-// more than 10 minutes in a Release build. Inside a split (split.cpp
-// try_spacing -> triangulate), insert_segments loops in
-// SegmentInserter::find_exit (cdt_segments.cpp:90, next_edge walk) on the
-// refined face boundary. Input (N = 5, Phi0 = 45 from its last byte '\n')
-// is kept outside the replayed corpus: fuzz/findings/fuzz_decompose/.
-TEST_CASE("cdt find_exit hang: segment insertion during a split terminates" * doctest::skip()) {
+// Was a hang (fuzz_decompose timeout) inside a split: try_spacing ->
+// triangulate -> insert_segments. The refined face boundary is valid, but one
+// segment crossed all three triangles around a vertex lying just above it, so
+// the cavity held an uncrossed edge twice on its upper path; the old fill
+// linked those edges to recycled slots, corrupting the mesh, and the next
+// find_exit rotation never closed. The split is valid, so a valid
+// decomposition is required (no error is acceptable).
+TEST_CASE("cdt find_exit hang: segment insertion during a split terminates") {
   const madd::Pslg domain =
-      madd::read_domain(std::string(MADD_SOURCE_DIR) + "/fuzz/findings/fuzz_decompose/cdt_find_exit_hang");
+      madd::read_domain(std::string(MADD_SOURCE_DIR) + "/fuzz/corpus/fuzz_decompose/cdt_find_exit_hang");
   madd::Options options;
   options.subdomains = 5;
   options.min_angle_deg = 45.0;
   options.threads = 1;
-  try {
-    const madd::Decomposition d = madd::decompose(domain, options);
-    CHECK(madd::verify_decomposition(d, domain, 5).ok());
-  } catch (const madd::DecompositionError&) {
-  }
+  const madd::Decomposition d = madd::decompose(domain, options);
+  CHECK(madd::verify_decomposition(d, domain, 5).ok());
 }
 
 } // TEST_SUITE
