@@ -13,6 +13,13 @@ inline void append_g17(std::string& out, double v) {
   out.append(buffer, result.ptr);
 }
 
+// Appends the shortest text that reads back as exactly v (JSON outputs).
+inline void append_shortest(std::string& out, double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  out.append(buffer, result.ptr);
+}
+
 inline void append_int(std::string& out, std::int64_t v) {
   char buffer[24];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);

@@ -12,18 +12,11 @@
 namespace madd {
 namespace {
 
-// The shortest text that reads back as exactly v (finite: the input was validated).
-void append_shortest(std::string& out, double v) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  out.append(buffer, result.ptr);
-}
-
 void append_position(std::string& out, Point p) {
   out += '[';
-  append_shortest(out, p.x);
+  detail::append_shortest(out, p.x);
   out += ',';
-  append_shortest(out, p.y);
+  detail::append_shortest(out, p.y);
   out += ']';
 }
 
@@ -52,9 +45,9 @@ std::string format_geojson(const Decomposition& decomposition) {
     out += "{\"type\":\"Feature\",\"properties\":{\"id\":";
     detail::append_int(out, static_cast<std::int64_t>(k));
     out += ",\"area\":";
-    append_shortest(out, s.area);
+    detail::append_shortest(out, s.area);
     out += ",\"weight\":";
-    append_shortest(out, s.weight);
+    detail::append_shortest(out, s.weight);
     out += "},";
     append_polygon(out, decomposition, s);
     out += '}';

@@ -11,13 +11,6 @@ namespace madd {
 
 namespace {
 
-// The shortest text that reads back as exactly v.
-void append_shortest(std::string& out, double v) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  out.append(buffer, result.ptr);
-}
-
 class JsonObject {
 public:
   explicit JsonObject(std::string& out) : out_(out) { out_ += "{"; }
@@ -30,7 +23,7 @@ public:
   void number(std::string_view name, double v) {
     key(name);
     if (std::isfinite(v))
-      append_shortest(out_, v);
+      detail::append_shortest(out_, v);
     else
       out_ += "null";  // JSON has no NaN or infinity
   }
@@ -98,7 +91,7 @@ std::string format_report_json(const Metrics& m) {
     out += i == 0 ? "" : ", ";
     append_string(out, m.times[i].name);
     out += ": ";
-    append_shortest(out, m.times[i].seconds);
+    detail::append_shortest(out, m.times[i].seconds);
   }
   out += "}";
   o.close();
