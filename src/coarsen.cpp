@@ -59,18 +59,7 @@ Graph contract_matching(const Graph& graph, const Matching& m) {
     const std::uint32_t members[2] = {v, m.mate[v]};
     coarse.vertex_weights[c] = graph.vertex_weights[v] + (m.mate[v] != v ? graph.vertex_weights[m.mate[v]] : 0.0);
     for (int k = 0; k < (m.mate[v] != v ? 2 : 1); ++k) {
-      const std::uint32_t x = members[k];
-      for (std::uint32_t i = graph.offsets[x]; i < graph.offsets[x + 1]; ++i) {
-        const std::uint32_t cu = m.map[graph.adjacency[i]];
-        if (cu == c) continue;
-        if (slot[cu] != no_vertex && slot[cu] >= begin) {
-          coarse.edge_weights[slot[cu]] += graph.edge_weights[i];
-          continue;
-        }
-        slot[cu] = static_cast<std::uint32_t>(coarse.adjacency.size());
-        coarse.adjacency.push_back(cu);
-        coarse.edge_weights.push_back(graph.edge_weights[i]);
-      }
+      append_merged_edges(graph, m.map, members[k], c, begin, slot, coarse);
     }
     coarse.offsets[c + 1] = static_cast<std::uint32_t>(coarse.adjacency.size());
   }

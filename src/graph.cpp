@@ -116,17 +116,7 @@ Graph contract(const Graph& graph, std::span<const std::uint32_t> map, std::uint
     for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
       const std::uint32_t v = members[k];
       coarse.vertex_weights[c] += graph.vertex_weights[v];
-      for (std::uint32_t i = graph.offsets[v]; i < graph.offsets[v + 1]; ++i) {
-        const std::uint32_t cu = map[graph.adjacency[i]];
-        if (cu == c) continue;
-        if (slot[cu] != no_vertex && slot[cu] >= begin) {
-          coarse.edge_weights[slot[cu]] += graph.edge_weights[i];
-          continue;
-        }
-        slot[cu] = static_cast<std::uint32_t>(coarse.adjacency.size());
-        coarse.adjacency.push_back(cu);
-        coarse.edge_weights.push_back(graph.edge_weights[i]);
-      }
+      append_merged_edges(graph, map, v, c, begin, slot, coarse);
     }
     coarse.offsets[c + 1] = static_cast<std::uint32_t>(coarse.adjacency.size());
   }

@@ -29,6 +29,27 @@ double cut_weight(const Graph& graph, std::span<const std::uint8_t> side);
 // inside a group vanish. Deterministic (neighbour order follows first sight).
 Graph contract(const Graph& graph, std::span<const std::uint32_t> map, std::uint32_t coarse_count);
 
+// Appends fine vertex x's edges to the coarse row being built for coarse
+// vertex c (whose first entry is at `row_begin`): neighbours map through `map`,
+// edges inside c vanish and parallel edges merge with summed weights. `slot`
+// (one entry per coarse vertex, initially no_vertex) remembers where each
+// neighbour sits; entries before row_begin are stale rows and are ignored.
+inline void append_merged_edges(const Graph& graph, std::span<const std::uint32_t> map, std::uint32_t x,
+                                std::uint32_t c, std::uint32_t row_begin, std::vector<std::uint32_t>& slot,
+                                Graph& coarse) {
+  for (std::uint32_t i = graph.offsets[x]; i < graph.offsets[x + 1]; ++i) {
+    const std::uint32_t cu = map[graph.adjacency[i]];
+    if (cu == c) continue;
+    if (slot[cu] != no_vertex && slot[cu] >= row_begin) {
+      coarse.edge_weights[slot[cu]] += graph.edge_weights[i];
+      continue;
+    }
+    slot[cu] = static_cast<std::uint32_t>(coarse.adjacency.size());
+    coarse.adjacency.push_back(cu);
+    coarse.edge_weights.push_back(graph.edge_weights[i]);
+  }
+}
+
 // The subgraph induced by `vertices` (renumbered 0..size-1 in that order).
 Graph induced_subgraph(const Graph& graph, std::span<const std::uint32_t> vertices);
 
