@@ -1,12 +1,10 @@
 // The N-way driver (Algorithm 4, Sec. 5), run in rounds: every face still
 // planned to become k > 1 subdomains is split in the same round, the splits
-// computed in parallel from one snapshot and committed in face-id order, so the
-// output is identical for any thread count.
+// computed in parallel from one snapshot and committed in face-id order
+// (split_round.hpp), so the output is identical for any thread count.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <thread>
 
 #include "madd/decomposition.hpp"
@@ -15,6 +13,7 @@
 #include "grading.hpp"
 #include "resource_limits.hpp"
 #include "split.hpp"
+#include "split_round.hpp"
 #include "subdivision.hpp"
 
 namespace madd {
@@ -33,37 +32,6 @@ using detail::Subdivision;
 unsigned thread_count(const Options& options, std::size_t tasks) {
   unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
-}
-
-// Runs compute_split for every task; errors are kept per task and the first in
-// task order is rethrown, so failures are deterministic too.
-std::vector<detail::SplitResult> compute_round(const Subdivision& sub, const std::vector<std::uint32_t>& tasks,
-                                               const detail::SplitOptions& split_options, unsigned threads,
-                                               const detail::ResourceGuard& guard,
-                                               const std::vector<detail::FaceDensity>& densities) {
-  std::vector<detail::SplitResult> results(tasks.size());
-  std::vector<std::exception_ptr> errors(tasks.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < tasks.size(); i = next++) {
-      try {
-        guard.check(sub.faces.size());  // limits are checked before every split
-        results[i] = detail::compute_split(sub, tasks[i], sub.faces[tasks[i]].plan, split_options, densities[i]);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  if (threads <= 1) {
-    worker();
-  } else {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
-  }
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
-  return results;
 }
 
 // Shares `plan` between the two sides in proportion to what they actually got,
@@ -170,27 +138,25 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
   const detail::SplitOptions split_options = split_options_of(options);
   while (true) {
     if (area_driven) plan_area_round(sub, grading, options);
-    std::vector<std::uint32_t> tasks;
-    std::vector<detail::FaceDensity> densities;
+    std::vector<detail::RoundTask> tasks;
     for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
-      if (sub.faces[f].plan <= 1) continue;
-      tasks.push_back(f);
-      densities.push_back(grading.density(sub, f));
+      if (sub.faces[f].plan > 1) tasks.push_back({f, sub.faces[f].plan, grading.density(sub, f)});
     }
     if (tasks.empty()) break;
     guard.check(sub.faces.size());
-    const auto results =
-        compute_round(sub, tasks, split_options, thread_count(options, tasks.size()), guard, densities);
-    for (const auto& r : results) grading.before_commit(sub, r);
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-      const std::uint32_t f = tasks[i];
-      const std::uint32_t plan = sub.faces[f].plan;
-      const std::uint32_t k0 = side0_plan(plan, results[i].weight[0], results[i].weight[1]);
-      const std::uint32_t g = sub.commit(f, results[i]);
-      sub.faces[f].plan = k0;
-      sub.faces[g].plan = plan - k0;
-      grading.after_commit(sub, f, g);
-    }
+    // Every split of the round reads this snapshot while `sub` takes the commits.
+    const Subdivision snapshot = sub;
+    detail::run_round(snapshot, tasks, split_options, thread_count(options, tasks.size()), guard,
+                      [&](std::size_t i, const detail::SplitResult& r) {
+                        grading.before_commit(snapshot, r);
+                        const std::uint32_t f = tasks[i].face;
+                        const std::uint32_t plan = tasks[i].plan;
+                        const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
+                        const std::uint32_t g = sub.commit(f, r);
+                        sub.faces[f].plan = k0;
+                        sub.faces[g].plan = plan - k0;
+                        grading.after_commit(sub, f, g);
+                      });
     grading.end_round(sub);
   }
   if (sub.faces.size() == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
