@@ -11,6 +11,7 @@
 #include "madd/medial.hpp"
 #include "madd/triangulation.hpp"
 #include "refine.hpp"
+#include "split_chord.hpp"
 
 namespace madd::detail {
 
@@ -21,6 +22,9 @@ constexpr double max_working_points = 4.0e5;
 constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
 constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
+constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split_chord.hpp)
+constexpr double chord_gain = 0.02;             // a chord must balance at least this much better
+constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
@@ -192,6 +196,19 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     if (stalled && best.quality >= options.imbalance) break;
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
+  }
+  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1) {
+    const double h = std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), perimeter / max_chord_points);
+    ChordOptions co;
+    co.min_angle_deg = options.min_angle_deg;
+    co.plan = plan;
+    co.min_quality = best.quality < 0.0 ? options.imbalance : best.quality + chord_gain;
+    co.good_quality = options.good_balance;
+    co.end_bonus = options.smoothing_iterations > 0;
+    if (auto chord = best_chord(refine_face(sub, face, h), co)) {
+      best.result = std::move(chord->result);
+      best.quality = chord->quality;
+    }
   }
   if (best.quality < 0.0) {
     char buf[160];
