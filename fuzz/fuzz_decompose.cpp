@@ -1,10 +1,11 @@
 // libFuzzer target: .poly text -> parse -> validate -> decompose, then the
 // independent verifier. Only small domains (<= 200 segments) at small N, with
 // a time limit inside the library (Options::time_limit_seconds), so one input
-// stays fast. The limit is checked between splits only, and one split refines
-// the boundary at a spacing of sqrt(area) / 12, up to 4e5 working points: a
-// needle-like domain (perimeter >> sqrt(area)) makes a single split of a
-// 48-segment input take seconds (docs/hostile.md), so such inputs are skipped. Only madd::Error may escape the library (DecompositionError and
+// stays fast. The limit is checked between splits and refinement rounds; one
+// split refines the boundary at a spacing of sqrt(area) / 12, up to 2e4
+// working points for a small face: a needle-like domain (perimeter >>
+// sqrt(area)) always reaches that cap, which is slow under ASan
+// (docs/hostile.md), so such inputs are skipped. Only madd::Error may escape the library (DecompositionError and
 // LimitError are expected outcomes); a result that fails verify_decomposition
 // is a bug and aborts.
 #include <cmath>

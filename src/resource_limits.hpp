@@ -1,6 +1,7 @@
 #pragma once
 // Resource limits of one decompose() call (Options::time_limit_seconds and
-// Options::max_memory_bytes): checked between splits, never inside one.
+// Options::max_memory_bytes): checked between splits and between the
+// refinement rounds of one split.
 #include <chrono>
 #include <cstddef>
 #include <cstdint>

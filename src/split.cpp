@@ -18,7 +18,14 @@ namespace madd::detail {
 namespace {
 
 constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_side * r)
+// The refined boundary of one split holds at most max(min_point_cap,
+// points_per_vertex_cap x the face's vertices) points, and never more than
+// max_working_points: a needle-like face (perimeter thousands of times
+// sqrt(area)) would otherwise cost as much as a huge input in every round
+// (docs/hostile.md, "needles").
 constexpr double max_working_points = 4.0e5;
+constexpr double min_point_cap = 2.0e4;
+constexpr double points_per_vertex_cap = 32.0;
 constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
 constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
@@ -181,13 +188,18 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
 } // namespace
 
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
-                          const FaceDensity& density) {
+                          const FaceDensity& density, const ResourceGuard* limits) {
   const double area = sub.face_area(face);
   const double perimeter = face_perimeter(sub, face);
+  std::size_t vertices = 0;
+  for (const auto& ring : sub.faces[face].rings) vertices += ring.size();
+  const double point_cap =
+      std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
   double spacing = std::sqrt(area) / (points_per_side * options.refine);
   Candidate best;
   for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
-    const double h = std::max(spacing, perimeter / max_working_points);
+    if (limits != nullptr && round > 0) limits->check(sub.faces.size());
+    const double h = std::max(spacing, perimeter / point_cap);
     Candidate c = try_spacing(sub, face, plan, h, round, options, density);
     // Refinement that does not improve the balance will not start to: the
     // limit is the shape (where acceptable separators exist), not the spacing.

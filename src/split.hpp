@@ -10,6 +10,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/medial.hpp"
 #include "madd/triangulation.hpp"
+#include "resource_limits.hpp"
 #include "subdivision.hpp"
 
 namespace madd::detail {
@@ -39,8 +40,10 @@ struct FaceDensity {
 // at floor(plan/2)/plan of its weight on side 0. Throws DecompositionError
 // naming the face, its area and Phi0 when no valid separator exists after all
 // refinement rounds.
+// `limits`, when given, is checked before every refinement round after the
+// first, so a time or memory limit stops a long split part way.
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
-                          const FaceDensity& density = {});
+                          const FaceDensity& density = {}, const ResourceGuard* limits = nullptr);
 
 // 1 when the best sharing of `plan` between sides weighing w0 and w1 gives
 // every final subdomain the mean weight, lower as the largest one grows.

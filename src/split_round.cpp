@@ -52,7 +52,7 @@ private:
     try {
       guard_.check(faces_);  // limits are checked before every split
       const RoundTask& t = tasks_[i];
-      results_[i] = compute_split(snapshot_, t.face, t.plan, options_, t.density);
+      results_[i] = compute_split(snapshot_, t.face, t.plan, options_, t.density, &guard_);
     } catch (...) {
       errors_[i] = std::current_exception();
     }

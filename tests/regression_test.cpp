@@ -21,9 +21,10 @@ TEST_SUITE("regression") {
 
 TEST_CASE("needle spike: a 48-segment disk with a 6.7e5-long spike splits in seconds, not forever, and validly") {
   // fuzz_decompose timeout (> 10 s under ASan): one split of this needle
-  // refines the boundary at sqrt(area) / 12 up to the 4e5 working-point cap,
-  // once per refinement round; the time limit is only checked between splits.
-  // The result must still be valid.
+  // refined the boundary at sqrt(area) / 12 up to the 4e5 working-point cap,
+  // once per refinement round. The cap now also scales with the face's own
+  // vertices (at least 2e4 points), and limits are checked between refinement
+  // rounds. The result must still be valid.
   const madd::Pslg domain = madd::read_domain(corpus("fuzz_decompose", "needle_spike_disk"));
   madd::Options options;
   options.subdomains = 2;
@@ -31,6 +32,22 @@ TEST_CASE("needle spike: a 48-segment disk with a 6.7e5-long spike splits in sec
   options.threads = 1;
   const madd::Decomposition d = madd::decompose(domain, options);
   const madd::Verification check = madd::verify_decomposition(d, domain, 2);
+  INFO((check.ok() ? std::string() : check.problems.front()));
+  CHECK(check.ok());
+}
+
+// fuzz_decompose timeout (11 s under ASan, 1 s in Release) after the fix
+// above: a 24-gon with two spikes, 81 and 66,000 long, is not needle-like
+// enough to be skipped (perimeter 730 sqrt(area)) yet refined to 1.4e5 points
+// in its last refinement rounds. Now capped at 2e4 points per split (0.1 s).
+TEST_CASE("star with two needles: the per-face point cap keeps each split small, and the result valid") {
+  const madd::Pslg domain = madd::read_domain(corpus("fuzz_decompose", "star_two_needles"));
+  madd::Options options;
+  options.subdomains = 5;
+  options.min_angle_deg = 45.0;
+  options.threads = 1;
+  const madd::Decomposition d = madd::decompose(domain, options);
+  const madd::Verification check = madd::verify_decomposition(d, domain, 5);
   INFO((check.ok() ? std::string() : check.problems.front()));
   CHECK(check.ok());
 }
