@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 #include <numbers>
 #include <vector>
 
@@ -196,6 +198,33 @@ Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std:
   return side == 0 ? triangulated_interior_point(fd, ring, i, j) : triangulated_interior_point(fd, ring, j, i);
 }
 
+// The areas of side 0 whose two_sided_quality can exceed `min_quality`: for
+// each sharing k0 of the plan, both sides' per-subdomain areas within
+// [q, 1/q] x the mean. Sorted, merged, and a little wider than exact (a cheap
+// prefilter; the quality itself decides).
+std::vector<std::pair<double, double>> balanced_area_ranges(std::uint32_t plan, double total, double min_quality) {
+  std::vector<std::pair<double, double>> out;
+  const double q = std::max(min_quality, 1e-3) * (1.0 - 1e-9), mean = total / plan;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double k1 = plan - k0;
+    const double lo = std::max(k0 * q * mean, total - k1 * mean / q);
+    const double hi = std::min(k0 * mean / q, total - k1 * q * mean);
+    if (!(lo <= hi)) continue;
+    if (!out.empty() && lo <= out.back().second) {
+      out.back().second = std::max(out.back().second, hi);
+    } else {
+      out.emplace_back(lo, hi);
+    }
+  }
+  return out;
+}
+
+bool in_ranges(const std::vector<std::pair<double, double>>& ranges, double a) {
+  auto it = std::upper_bound(ranges.begin(), ranges.end(), a,
+                             [](double x, const std::pair<double, double>& r) { return x < r.first; });
+  return it != ranges.begin() && a <= std::prev(it)->second;
+}
+
 struct Pair {
   std::size_t i, j;
   double quality, length;
@@ -218,13 +247,14 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
   std::vector<Pair> out;
   if (!(total > 0.0)) return out;
   const std::vector<Cone> cone = cones(fd, ring, o.min_angle_deg);
+  const auto ranges = balanced_area_ranges(o.plan, total, o.min_quality);
   const auto& pts = fd.pslg.points;
   for (std::size_t i = 0; i < n; ++i) {
     if (cone[i].empty) continue;
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // neighbours along the ring
       const double a = side_area(fd, ring, i, j);
-      if (!(a > 0.0 && a < total)) continue;
+      if (!(a > 0.0 && a < total) || !in_ranges(ranges, a)) continue;
       const double q = two_sided_quality(o.plan, a, total - a);
       if (!(q > o.min_quality)) continue;
       const std::uint32_t p = ring.at[i], r = ring.at[j];
