@@ -141,7 +141,7 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
     std::fprintf(out, "  weight max/mean %s, min/mean %s; shortest new segment / sqrt(mean area) %s\n",
                  fig(m.max_weight_over_mean, "%.4f").c_str(), fig(m.min_weight_over_mean, "%.4f").c_str(),
                  fig(m.shortest_new_segment_norm, "%.4g").c_str());
-    for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-10s %.3f s\n", t.name.c_str(), t.seconds);
+    for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-12s %.3f s\n", t.name.c_str(), t.seconds);
   }
   for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.geo_out, &args.vtk_out,
                                     &args.geojson_out, &args.report_out})
@@ -203,7 +203,7 @@ int decompose_body(void* context) {
 
   start = std::chrono::steady_clock::now();
   progress.say("decomposing into " + std::to_string(args.options.subdomains) + " subdomains");
-  const Decomposition d = decompose(domain, args.options);
+  const Decomposition d = decompose(domain, args.options, times);
   times.push_back({"decompose", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();

@@ -131,6 +131,11 @@ detail::SplitOptions split_options_of(const Options& options) {
 } // namespace
 
 Decomposition decompose(const Pslg& domain, const Options& options) {
+  std::vector<PhaseTime> ignored;
+  return decompose(domain, options, ignored);
+}
+
+Decomposition decompose(const Pslg& domain, const Options& options, std::vector<PhaseTime>& phases) {
   const detail::ResourceGuard guard(options);
   check_options(options);
   validate(domain);
@@ -139,6 +144,8 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
   const bool area_driven = grading.mode().area_driven;
   sub.faces[0].plan = area_driven ? 1 : options.subdomains;
   const detail::SplitOptions split_options = split_options_of(options);
+  detail::SplitTimes split_times;
+  double insert_seconds = 0.0;
   while (true) {
     if (area_driven) plan_area_round(sub, grading, options);
     std::vector<detail::RoundTask> tasks;
@@ -151,6 +158,8 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
     const Subdivision snapshot = sub;
     detail::run_round(snapshot, tasks, split_options, thread_count(options, tasks.size()), guard,
                       [&](std::size_t i, const detail::SplitResult& r) {
+                        detail::Stopwatch clock;
+                        split_times += r.times;
                         grading.before_commit(snapshot, r);
                         const std::uint32_t f = tasks[i].face;
                         const std::uint32_t plan = tasks[i].plan;
@@ -168,9 +177,15 @@ Decomposition decompose(const Pslg& domain, const Options& options) {
                         sub.faces[f].plan = k0;
                         sub.faces[g].plan = plan - k0;
                         grading.after_commit(sub, f, g);
+                        insert_seconds += clock.lap();
                       });
     grading.end_round(sub);
   }
+  phases.push_back({"refine", split_times.refine});
+  phases.push_back({"triangulate", split_times.triangulate});
+  phases.push_back({"graph", split_times.graph});
+  phases.push_back({"bisect", split_times.bisect});
+  phases.push_back({"insert", insert_seconds});
   if (sub.faces.size() == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
   detail::check_new_angles(sub, options.min_angle_deg);
   return to_decomposition(sub, domain, options, grading);

@@ -136,18 +136,14 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
   return {};
 }
 
-// One refinement round. Side 0 aims at j/plan for j = floor(plan/2) first,
-// then at nearby j when that split is not balanced enough: any j works,
-// because the plan is shared between the sides after the split.
-Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
-                      const SplitOptions& options, const FaceDensity& density) {
+// Side 0 aims at j/plan for j = floor(plan/2) first, then at nearby j when
+// that split is not balanced enough: any j works, because the plan is shared
+// between the sides after the split. Smooths the chosen separator (Sec. 5.1).
+Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, int round,
+                         const SplitOptions& options, const FaceDomain& fd, const Triangulation& tri,
+                         const MedialGraph& g) {
   Candidate out;
-  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
-  const Triangulation tri = triangulate(fd.pslg);
   const bool smooth = options.smoothing_iterations > 0;
-  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, smooth});
-  if (g.contracted.vertex_count() < 2) return out;
-  if (density.graded) set_vertex_weights(g, density_weights(g, tri, fd, density));
   const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
   std::vector<std::uint8_t> best_side;
   const std::uint32_t half = plan / 2;
@@ -185,6 +181,25 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   return out;
 }
 
+// One refinement round at `spacing`: refine, triangulate, build G_D and G'_D,
+// choose the separator; the time of each phase is added to `times`.
+Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
+                      const SplitOptions& options, const FaceDensity& density, SplitTimes& times) {
+  Stopwatch clock;
+  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
+  times.refine += clock.lap();
+  const Triangulation tri = triangulate(fd.pslg);
+  times.triangulate += clock.lap();
+  const bool smooth = options.smoothing_iterations > 0;
+  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, smooth});
+  if (density.graded && g.contracted.vertex_count() >= 2) set_vertex_weights(g, density_weights(g, tri, fd, density));
+  times.graph += clock.lap();
+  if (g.contracted.vertex_count() < 2) return Candidate{};
+  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g);
+  times.bisect += clock.lap();
+  return out;
+}
+
 } // namespace
 
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
@@ -197,10 +212,11 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
       std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
   double spacing = std::sqrt(area) / (points_per_side * options.refine);
   Candidate best;
+  SplitTimes times;
   for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
     if (limits != nullptr && round > 0) limits->check(sub.faces.size());
     const double h = std::max(spacing, perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, round, options, density);
+    Candidate c = try_spacing(sub, face, plan, h, round, options, density, times);
     // Refinement that does not improve the balance will not start to: the
     // limit is the shape (where acceptable separators exist), not the spacing.
     const bool stalled = round > 0 && c.quality < best.quality + 0.01;
@@ -217,7 +233,12 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     co.min_quality = best.quality < 0.0 ? options.imbalance : best.quality + chord_gain;
     co.good_quality = options.good_balance;
     co.end_bonus = options.smoothing_iterations > 0;
-    if (auto chord = best_chord(refine_face(sub, face, h), co)) {
+    Stopwatch clock;
+    const FaceDomain fd = refine_face(sub, face, h);
+    times.refine += clock.lap();
+    auto chord = best_chord(fd, co);
+    times.bisect += clock.lap();
+    if (chord) {
       best.result = std::move(chord->result);
       best.quality = chord->quality;
     }
@@ -228,6 +249,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
                   options.min_angle_deg, face, area);
     throw DecompositionError(buf, face, area, options.min_angle_deg);
   }
+  best.result.times = times;
   return std::move(best.result);
 }
 

@@ -4,6 +4,7 @@
 // pure geometry (SplitResult) and committed here, so that neighbours share
 // every vertex by construction: no T-junctions, ever.
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -30,12 +31,39 @@ struct SeparatorEdge {
   std::uint8_t left_side = 0;
 };
 
+// Seconds one split spent in each phase (QUALITY.md "wall time per phase").
+struct SplitTimes {
+  double refine = 0.0, triangulate = 0.0, graph = 0.0, bisect = 0.0;
+  SplitTimes& operator+=(const SplitTimes& o) {
+    refine += o.refine;
+    triangulate += o.triangulate;
+    graph += o.graph;
+    bisect += o.bisect;
+    return *this;
+  }
+};
+
+// Wall seconds since construction or the previous lap.
+class Stopwatch {
+public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 // The outcome of splitting one face (Algorithm 3 as geometry).
 struct SplitResult {
   std::vector<SeparatorEdge> edges;
   std::vector<std::uint8_t> ring_side;  // per ring of the face: the side its inner neighbourhood joins
   double weight[2] = {0.0, 0.0};
   Point interior[2];                    // a point strictly inside each side
+  SplitTimes times;                     // how long computing it took (not part of the geometry)
 };
 
 struct Face {

@@ -216,6 +216,25 @@ TEST_CASE("no valid separator: a typed error naming the subdomain, never a parti
   }
 }
 
+TEST_CASE("phase times: every split phase and the commits are timed, and timing changes nothing") {
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
+  madd::Options o;
+  o.subdomains = 40;
+  o.threads = 2;
+  std::vector<madd::PhaseTime> phases;
+  const Decomposition timed = madd::decompose(domain, o, phases);
+  CHECK(timed == madd::decompose(domain, o));
+  const std::vector<std::string> names{"refine", "triangulate", "graph", "bisect", "insert"};
+  REQUIRE(phases.size() == names.size());
+  double total = 0.0;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    CHECK(phases[k].name == names[k]);
+    CHECK(phases[k].seconds >= 0.0);
+    total += phases[k].seconds;
+  }
+  CHECK(total > 0.0);  // 39 splits cannot all take no time
+}
+
 TEST_CASE("bad options are rejected") {
   const Pslg square = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
   madd::Options o;

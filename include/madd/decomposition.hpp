@@ -93,4 +93,17 @@ struct Decomposition {
 // naming the subdomain that could not be split; never returns a partial result.
 Decomposition decompose(const Pslg& domain, const Options& options = {});
 
+// Wall time of one phase of a run ("read", "refine", "verify"...).
+struct PhaseTime {
+  std::string name;
+  double seconds = 0.0;
+  friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
+};
+
+// decompose(), also appending the time of its phases to `phases` (QUALITY.md):
+// "refine", "triangulate", "graph" and "bisect" summed over every split (on
+// all threads, so with several threads they add up to more than the wall
+// time), then "insert", committing the splits to the subdivision (one thread).
+Decomposition decompose(const Pslg& domain, const Options& options, std::vector<PhaseTime>& phases);
+
 } // namespace madd

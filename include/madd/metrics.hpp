@@ -11,13 +11,6 @@
 
 namespace madd {
 
-// Wall time of one phase of a run ("read", "decompose", "verify", "write"...).
-struct PhaseTime {
-  std::string name;
-  double seconds = 0.0;
-  friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
-};
-
 // Every figure of QUALITY.md. Angles in degrees. A figure that does not exist
 // for this decomposition (no new angle when N = 1, no separator) is NaN.
 // Quantiles follow Python's statistics.quantiles(n=10) ("exclusive" method),
