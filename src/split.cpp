@@ -225,7 +225,8 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }
-  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1) {
+  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
+      static_cast<double>(vertices) <= max_chord_points) {
     const double h = std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), perimeter / max_chord_points);
     ChordOptions co;
     co.min_angle_deg = options.min_angle_deg;

@@ -22,6 +22,7 @@ namespace {
 
 constexpr double angle_margin_deg = 1e-9;  // as medial.cpp: the committed check never disagrees
 constexpr std::size_t max_exact_checks = 256;
+constexpr std::size_t max_ring_points = 4000;
 
 struct Ring {
   std::vector<std::uint32_t> at;  // working points in ring order
@@ -272,7 +273,7 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
 
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
   const Ring ring = ring_of(fd);
-  if (ring.at.empty()) return std::nullopt;
+  if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
   const std::size_t n = ring.at.size();
   const double min_angle = options.min_angle_deg + angle_margin_deg;

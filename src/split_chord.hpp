@@ -29,7 +29,8 @@ struct ChordOptions {
 
 // A chord found on face `fd` (the refined boundary of a face with a single
 // ring and no point where the ring passes twice), with the balance quality it
-// achieves, or nothing. Areas are the weights.
+// achieves, or nothing. Areas are the weights. Quadratic in the points of
+// `fd`: nothing is searched beyond a few thousand of them.
 struct Chord {
   SplitResult result;
   double quality = 0.0;

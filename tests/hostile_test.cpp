@@ -172,6 +172,22 @@ TEST_CASE("a 100,000-segment circle validates and splits in two") {
   expect_valid(p, 2);
 }
 
+TEST_CASE("a 1,000,000-segment domain validates and splits in two") {
+  // A wavy star r(t) = 1 + 0.1 sin 7t: every split's refinement, triangulation
+  // and bisection runs on a million boundary points.
+  std::vector<Point> ring;
+  const int n = 1000000;
+  ring.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    const double r = 1.0 + 0.1 * std::sin(7.0 * t);
+    ring.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  const Pslg p = polygon({ring});
+  madd::validate(p);
+  expect_valid(p, 2);
+}
+
 TEST_CASE("Phi0 = 89 still decomposes a triangle; Phi0 = 89.99 fails naming the subdomain, its area and Phi0") {
   // Bent medial-axis separators meet two non-parallel sides at nearly 90
   // degrees, so even Phi0 = 89 works on an equilateral triangle.
