@@ -52,7 +52,7 @@ private:
 
   Mesh& m_;
   const Pslg& pslg_;
-  std::vector<std::uint32_t> rank_;  // input index -> mesh vertex
+  std::span<const Point> P_;         // the mesh's vertices are indices into it
   std::vector<std::uint32_t> v2c_;   // per vertex: a corner (3t+i) holding it
   std::vector<std::uint32_t> crossed_;
   Path upper_, lower_;
@@ -68,10 +68,8 @@ private:
   std::vector<Slit> slits_;
 };
 
-SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg) {
-  rank_.resize(mesh.order.size());
-  for (std::uint32_t r = 0; r < rank_.size(); ++r) rank_[mesh.order[r]] = r;
-  v2c_.assign(mesh.points.size(), no_index);
+SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg), P_(pslg.points) {
+  v2c_.assign(P_.size(), no_index);
   for (std::uint32_t c = 0; c < mesh.tv.size(); ++c) {
     if (mesh.tv[c] != mesh.ghost) v2c_[mesh.tv[c]] = c;
   }
@@ -125,7 +123,7 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
       throw InternalError("triangulate: internal error: open fan around vertex " + std::to_string(a));
     }
   } while (c != start);
-  const auto& P = m_.points;
+  const auto& P = P_;
   const Point pa = P[a], pb = P[b];
   for (std::size_t guard = 0; guard <= m_.tv.size(); ++guard) {
     const std::uint32_t x = m_.tv[next_edge(c)], y = m_.tv[prev_edge(c)];
@@ -158,7 +156,7 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
 // vertex lying exactly on the segment).
 std::uint32_t SegmentInserter::cross(std::uint32_t a, std::uint32_t b, std::uint32_t t0, std::uint32_t h,
                                      std::uint32_t s) {
-  const auto& P = m_.points;
+  const auto& P = P_;
   upper_.verts = {a, m_.tv[prev_edge(t0)]};
   upper_.ext = {m_.tn[next_edge(t0)]};
   lower_.verts = {a, m_.tv[next_edge(t0)]};
@@ -219,7 +217,7 @@ void SegmentInserter::attach(std::uint32_t inner, std::uint32_t outer) {
 // path from u to v (on its left). Reuses crossed_ slots. Returns the
 // half-edge u->v of the triangle on it.
 std::uint32_t SegmentInserter::fill(const Path& path, std::size_t& next_slot) {
-  const auto& P = m_.points;
+  const auto& P = P_;
   const auto& V = path.verts;
   std::uint32_t top = no_index;
   tasks_.clear();
@@ -264,10 +262,10 @@ std::uint32_t SegmentInserter::fill(const Path& path, std::size_t& next_slot) {
 }
 
 void SegmentInserter::insert(std::uint32_t s) {
-  const std::uint32_t b = rank_[pslg_.segments[s].b];
-  std::uint32_t a = rank_[pslg_.segments[s].a];
+  const std::uint32_t b = pslg_.segments[s].b;
+  std::uint32_t a = pslg_.segments[s].a;
   for (std::size_t guard = 0; a != b; ++guard) {
-    if (guard > m_.points.size()) throw InternalError("triangulate: internal error: segment walk did not end");
+    if (guard > P_.size()) throw InternalError("triangulate: internal error: segment walk did not end");
     std::uint32_t corner = 0;
     const std::uint32_t x = find_exit(a, b, corner);
     if (x != no_index) {
@@ -286,8 +284,7 @@ void insert_segments(Mesh& mesh, const Pslg& pslg) {
   for (std::uint32_t s = 0; s < pslg.segments.size(); ++s) inserter.insert(s);
 }
 
-std::uint32_t walk_to(const Mesh& mesh, Point p, std::uint32_t start) {
-  const auto& P = mesh.points;
+std::uint32_t walk_to(const Mesh& mesh, std::span<const Point> P, Point p, std::uint32_t start) {
   std::uint32_t t = start;
   std::uint32_t rng = 2463534242u;
   for (std::size_t steps = 0; steps < 16 * mesh.tv.size() + 64; ++steps) {

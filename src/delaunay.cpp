@@ -32,12 +32,14 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
   return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
 }
 
+// Works on vertex numbers that are insertion ranks: points[rank] is input
+// point order[rank], so consecutive insertions touch nearby memory.
 class Inserter {
 public:
   // Every insertion adds two triangles (ghosts included): 2n - 2 in the end.
-  explicit Inserter(Mesh& mesh)
-      : m_(mesh), link_(mesh.points.size() + 1), in_cavity_(2 * mesh.points.size()) {
-    m_.tv.resize(3 * (2 * mesh.points.size() - 2));
+  Inserter(Mesh& mesh, std::span<const Point> points, std::span<const std::uint32_t> order)
+      : m_(mesh), P_(points), order_(order), link_(points.size() + 1), in_cavity_(2 * points.size()) {
+    m_.tv.resize(3 * (2 * points.size() - 2));
     m_.tn.resize(m_.tv.size());
   }
 
@@ -55,6 +57,8 @@ private:
     std::uint32_t a, b, outer;  // cavity boundary edge a->b and its twin outside
   };
   Mesh& m_;
+  std::span<const Point> P_;
+  std::span<const std::uint32_t> order_;
   std::vector<std::uint32_t> link_;    // per vertex (+ghost): new triangle whose rim edge starts there
   std::vector<std::uint8_t> in_cavity_;
   std::vector<std::uint32_t> stack_, cavity_;
@@ -79,7 +83,7 @@ void Inserter::start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 }
 
 bool Inserter::ghost_conflict(std::uint32_t a, std::uint32_t b, Point p) const noexcept {
-  const Point pa = m_.points[a], pb = m_.points[b];
+  const Point pa = P_[a], pb = P_[b];
   const double o = orient2d(pa, pb, p);
   return o > 0 || (o == 0 && strictly_between(pa, pb, p));
 }
@@ -90,13 +94,13 @@ bool Inserter::in_conflict(std::uint32_t t, Point p) const noexcept {
   if (c == g) return ghost_conflict(a, b, p);
   if (a == g) return ghost_conflict(b, c, p);
   if (b == g) return ghost_conflict(c, a, p);
-  return incircle(m_.points[a], m_.points[b], m_.points[c], p) > 0;
+  return incircle(P_[a], P_[b], P_[c], p) > 0;
 }
 
 // Visibility walk from the last insertion. On a Delaunay triangulation it
 // always terminates; the rotating first edge only avoids pathological orders.
 std::uint32_t Inserter::locate(std::uint32_t v) {
-  const Point p = m_.points[v];
+  const Point p = P_[v];
   const std::uint32_t g = m_.ghost;
   std::uint32_t t = last_;
   std::uint32_t came = no_index;  // half-edge we entered through (known side)
@@ -116,7 +120,7 @@ std::uint32_t Inserter::locate(std::uint32_t v) {
     for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
       const std::uint32_t h = 3 * t + (r + k) % 3;
       if (h == came) continue;
-      if (orient2d(m_.points[m_.origin(h)], m_.points[m_.dest(h)], p) < 0) {
+      if (orient2d(P_[m_.origin(h)], P_[m_.dest(h)], p) < 0) {
         came = m_.tn[h];
         t = came / 3;
         moved = true;
@@ -124,7 +128,7 @@ std::uint32_t Inserter::locate(std::uint32_t v) {
     }
     if (!moved) {
       for (int k = 0; k < 3; ++k) {
-        if (m_.points[tv[k]] == p) throw_duplicate(m_.points, m_.order[tv[k]], m_.order[v]);
+        if (P_[tv[k]] == p) throw_duplicate(P_, order_[tv[k]], order_[v]);
       }
       return t;
     }
@@ -175,20 +179,20 @@ void Inserter::fill_cavity(std::uint32_t v) {
     m_.tv[3 * s + 1] = r.a;
     m_.tv[3 * s + 2] = r.b;
     m_.link(3 * s, r.outer);
-    link_[r.a == m_.ghost ? m_.points.size() : r.a] = s;
+    link_[r.a] = s;  // the ghost is vertex n: link_ has n + 1 entries
   }
   // Edge 1 (b -> v) of the triangle over a->b meets edge 2 (v -> b) of the one over b->c.
   for (std::size_t i = 0; i < k; ++i) {
     const std::uint32_t s = m_.tn[rim_[i].outer] / 3;
     const std::uint32_t b = rim_[i].b;
-    m_.link(3 * s + 1, 3 * link_[b == m_.ghost ? m_.points.size() : b] + 2);
+    m_.link(3 * s + 1, 3 * link_[b] + 2);
   }
   last_ = first;
 }
 
 void Inserter::insert(std::uint32_t v) {
   const std::uint32_t t = locate(v);
-  dig_cavity(t, m_.points[v]);
+  dig_cavity(t, P_[v]);
   fill_cavity(v);
 }
 
@@ -240,12 +244,17 @@ bool build_delaunay(Mesh& mesh, std::span<const Point> input) {
   }
   if (orient2d(input[order[0]], input[order[1]], input[order[2]]) < 0) std::swap(order[1], order[2]);
   const auto n = static_cast<std::uint32_t>(order.size());
-  mesh.points.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) mesh.points[i] = input[order[i]];
-  mesh.order = std::move(order);
-  Inserter ins(mesh);
-  ins.start(0, 1, 2);
-  for (std::uint32_t i = 3; i < n; ++i) ins.insert(i);
+  {
+    std::vector<Point> sorted(n);
+    for (std::uint32_t i = 0; i < n; ++i) sorted[i] = input[order[i]];
+    Inserter ins(mesh, sorted, order);
+    ins.start(0, 1, 2);
+    for (std::uint32_t i = 3; i < n; ++i) ins.insert(i);
+  }
+  // Back to input indices; the ghost (n) is the same in both numberings.
+  for (std::uint32_t& v : mesh.tv) {
+    if (v != mesh.ghost) v = order[v];
+  }
   return true;
 }
 

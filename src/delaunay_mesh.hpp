@@ -18,11 +18,9 @@ namespace madd::detail {
 inline std::uint32_t next_edge(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
 inline std::uint32_t prev_edge(std::uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
 
-// Vertices are numbered by insertion rank (points[] is the input sorted in
-// insertion order, for cache locality); order[rank] is the input index.
+// Vertices are input indices, so the mesh holds no copy of the points: every
+// user passes the input's points alongside it.
 struct Mesh {
-  std::vector<Point> points;
-  std::vector<std::uint32_t> order;
   std::uint32_t ghost = 0;           // the virtual vertex: index points.size()
   std::vector<std::uint32_t> tv;     // 3 vertex ids per triangle
   std::vector<std::uint32_t> tn;     // twin half-edge per half-edge
@@ -42,6 +40,7 @@ struct Mesh {
 
 // Builds the Delaunay triangulation (with ghost triangles) of `input` into
 // `mesh`. Returns false when every point is collinear (mesh left empty).
+// Inserts in a sorted copy of the points for locality, then relabels.
 // Throws InvalidInputError on duplicate points (naming input indices).
 bool build_delaunay(Mesh& mesh, std::span<const Point> input);
 
@@ -51,6 +50,6 @@ void insert_segments(Mesh& mesh, const Pslg& pslg);
 
 // A triangle containing p in its closure found by a stochastic visibility walk
 // from `start`, or a ghost triangle when p lies outside the convex hull.
-std::uint32_t walk_to(const Mesh& mesh, Point p, std::uint32_t start);
+std::uint32_t walk_to(const Mesh& mesh, std::span<const Point> points, Point p, std::uint32_t start);
 
 } // namespace madd::detail

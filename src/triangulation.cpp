@@ -10,39 +10,68 @@ namespace madd {
 namespace {
 
 using detail::Mesh;
+using Triples = std::vector<std::array<std::uint32_t, 3>>;
+
+// Turns the flags (nonzero = dead) into the new index of each live triangle,
+// in slot order, and no_index for the dead. Returns the live count.
+std::uint32_t renumber(std::vector<std::uint32_t>& dead) {
+  std::uint32_t live = 0;
+  for (std::uint32_t& d : dead) d = d ? no_index : live++;
+  return live;
+}
+
+// Moves the triple of each live triangle t to slot index[t] <= t, so one
+// forward pass never overwrites a triple it has yet to read.
+void compact(std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& index, std::uint32_t live) {
+  for (std::uint32_t t = 0; t < index.size(); ++t) {
+    if (index[t] == no_index) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) a[3 * index[t] + i] = a[3 * t + i];
+  }
+  a.resize(3 * std::size_t{live});
+}
+
+// Twin half-edges become the new index of the neighbouring triangle
+// (no_index across into a dead one), compacted like compact().
+void compact_neighbours(std::vector<std::uint32_t>& tn, const std::vector<std::uint32_t>& index,
+                        std::uint32_t live) {
+  for (std::uint32_t t = 0; t < index.size(); ++t) {
+    if (index[t] == no_index) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) tn[3 * index[t] + i] = index[tn[3 * t + i] / 3];
+  }
+  tn.resize(3 * std::size_t{live});
+}
+
+// An exact-size copy of a flat array of triples; the flat array is released.
+Triples to_triples(std::vector<std::uint32_t>& flat) {
+  Triples out(flat.size() / 3);
+  for (std::size_t t = 0; t < out.size(); ++t) {
+    for (std::size_t i = 0; i < 3; ++i) out[t][i] = flat[3 * t + i];
+  }
+  std::vector<std::uint32_t>().swap(flat);
+  return out;
+}
 
 // Moves the triangles not flagged in `dead` (ghosts are always dead) into a
 // Triangulation, renumbering them in order and mapping removed neighbours to
-// no_index. `dead` is reused for the new indices, and each working array is
-// released as soon as it is copied, to keep the peak memory low.
+// no_index. Peak memory: the working arrays are compacted in place and `dead`
+// released before any output array exists, then each working array is
+// released as soon as its exact-size copy is made, and the points come last.
 Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points) {
-  std::vector<Point>().swap(mesh.points);
-  Triangulation out;
-  out.points.assign(points.begin(), points.end());
-  const std::uint32_t nt = mesh.triangle_count();
-  std::uint32_t live = 0;
-  for (std::uint32_t t = 0; t < nt; ++t) dead[t] = dead[t] ? no_index : live++;
-  out.triangles.resize(live);
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (dead[t] == no_index) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) out.triangles[dead[t]][i] = mesh.order[mesh.tv[3 * t + i]];
-  }
-  std::vector<std::uint32_t>().swap(mesh.tv);
-  std::vector<std::uint32_t>().swap(mesh.order);
-  out.neighbours.resize(live);
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (dead[t] == no_index) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) out.neighbours[dead[t]][i] = dead[mesh.tn[3 * t + i] / 3];
-  }
-  std::vector<std::uint32_t>().swap(mesh.tn);
+  const std::uint32_t live = renumber(dead);
+  compact(mesh.tv, dead, live);
+  compact_neighbours(mesh.tn, dead, live);
   const bool constrained = !mesh.seg.empty();
-  out.segment_of.resize(live);
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (dead[t] == no_index) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      out.segment_of[dead[t]][i] = constrained ? mesh.seg[3 * t + i] : no_index;
-    }
+  if (constrained) compact(mesh.seg, dead, live);
+  std::vector<std::uint32_t>().swap(dead);
+  Triangulation out;
+  out.triangles = to_triples(mesh.tv);
+  out.neighbours = to_triples(mesh.tn);
+  if (constrained) {
+    out.segment_of = to_triples(mesh.seg);
+  } else {
+    out.segment_of.assign(live, {no_index, no_index, no_index});
   }
+  out.points.assign(points.begin(), points.end());
   return out;
 }
 
@@ -73,17 +102,19 @@ std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg) {
   if (pslg.segments.empty()) return dead;  // no boundary: keep the convex hull
   std::vector<std::uint32_t> stack;
   std::uint32_t some_live = no_index;
+  // One ghost at a time: the stack then holds at most the region being
+  // flooded, not every hull edge at once (half the mesh for a convex polygon).
   for (std::uint32_t t = 0; t < dead.size(); ++t) {
-    if (dead[t]) {
-      stack.push_back(t);
-    } else if (some_live == no_index) {
-      some_live = t;
+    if (!mesh.is_ghost(t)) {
+      if (some_live == no_index) some_live = t;
+      continue;
     }
+    stack.push_back(t);
+    flood(mesh, dead, stack);
   }
-  flood(mesh, dead, stack);
   for (const Point& hole : pslg.holes) {
     if (some_live == no_index) break;
-    const std::uint32_t t = detail::walk_to(mesh, hole, some_live);
+    const std::uint32_t t = detail::walk_to(mesh, pslg.points, hole, some_live);
     if (t == no_index || dead[t]) continue;
     dead[t] = 1;
     stack.push_back(t);
