@@ -1,5 +1,6 @@
 // `madd triangulate [-o PREFIX] FILE.poly`: constrained Delaunay triangulation
 // of a domain, written as Triangle writes it (.node, .ele, .neigh, .edge).
+// A FILE.node (points only) gives the Delaunay triangulation of its points.
 #include <getopt.h>
 
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"
 
@@ -14,15 +16,17 @@ namespace madd::cli {
 namespace {
 
 constexpr const char* triangulate_help =
-    "usage: madd triangulate [options] FILE.poly\n\n"
+    "usage: madd triangulate [options] FILE.poly|FILE.node\n\n"
     "Constrained Delaunay triangulation of the domain in FILE.poly (holes and the\n"
-    "outside removed, as Triangle -p does), checked by verify_triangulation, then\n"
-    "written in Triangle's formats: PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge.\n"
-    "Ids start at the input file's first index. Markers follow Triangle: constrained\n"
-    "edges carry their segment's marker, other edges 0; vertices keep a nonzero input\n"
-    "marker, else take a marker of a segment through them, else 1 on the boundary.\n\n"
+    "outside removed, as Triangle -p does), or the Delaunay triangulation of the\n"
+    "points of FILE.node (covering their convex hull, as Triangle does), checked by\n"
+    "verify_triangulation, then written in Triangle's formats: PREFIX.node,\n"
+    "PREFIX.ele, PREFIX.neigh, PREFIX.edge. Ids start at the input file's first index.\n"
+    "Markers follow Triangle: constrained edges carry their segment's marker, other\n"
+    "edges 0 (hull edges 1 for a FILE.node); vertices keep a nonzero input marker,\n"
+    "else take a marker of a segment through them, else 1 on the boundary.\n\n"
     "options:\n"
-    "  -o, --output PREFIX  output prefix (default: FILE without .poly, plus \".1\")\n"
+    "  -o, --output PREFIX  output prefix (default: FILE without .poly or .node, plus \".1\")\n"
     "  -q, --quiet          print nothing on success\n"
     "  -h, --help           this text\n\n"
     "exit codes: 0 ok, 2 usage error, 3 bad input, 5 output not written, 70 internal error\n";
@@ -122,11 +126,33 @@ std::string edge_text(const Pslg& pslg, const Triangulation& tri) {
   return out + body;
 }
 
+bool ends_with(const std::string& s, const char* suffix) {
+  const std::string tail = suffix;
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// A .node file holds points only: triangulate them over their convex hull.
+// Validation still rejects duplicates (naming both ids) and unsupported
+// coordinates; a set with no triangle at all (collinear) is refused here.
+Triangulation triangulate_points(const Pslg& pslg, const std::string& path) {
+  Triangulation tri = delaunay(pslg.points);
+  if (tri.triangle_count() == 0) {
+    const std::size_t n = pslg.points.size();
+    const std::string why = n < 3 ? "only " + std::to_string(n) + " point(s)"
+                                  : "all " + std::to_string(n) + " points lie on one line";
+    throw InvalidInputError(InputProblem::empty_domain, why + ": there is no triangle", {}, {}, path, 0, 0);
+  }
+  return tri;
+}
+
 int triangulate_body(void* context) {
   const auto& args = *static_cast<Args*>(context);
-  const Pslg pslg = read_domain(args.input);
-  const Triangulation tri = triangulate(pslg);
-  const Verification check = verify_triangulation(tri, &pslg);
+  ValidateOptions options;
+  options.allow_point_set = ends_with(args.input, ".node");
+  const Pslg pslg = read_domain(args.input, options);
+  const bool points_only = pslg.segments.empty();
+  const Triangulation tri = points_only ? triangulate_points(pslg, args.input) : triangulate(pslg);
+  const Verification check = verify_triangulation(tri, points_only ? nullptr : &pslg);
   if (!check.ok()) {
     std::fprintf(stderr, "madd triangulate: internal error: the triangulation failed its check: %s\n",
                  check.problems.front().c_str());
@@ -164,7 +190,7 @@ int run_triangulate(int argc, char** argv) {
   if (args.prefix.empty()) {
     std::string stem = args.input;
     for (const char* ext : {".poly", ".node"}) {
-      if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ext) == 0) {
+      if (stem.size() > 5 && ends_with(stem, ext)) {
         stem.resize(stem.size() - 5);
         break;
       }

@@ -251,6 +251,10 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
 void validate(const Pslg& pslg, const SourceMap& source, const ValidateOptions& options) {
   const Reporter r(pslg, source);
   check_values(pslg, r, options);
+  if (pslg.segments.empty() && pslg.holes.empty() && options.allow_point_set) {
+    check_duplicates(pslg, r);
+    return;
+  }
   if (pslg.segments.empty())
     throw InvalidInputError(InputProblem::empty_domain, "there are no segments, so there is no domain", {}, {},
                             source.path, 0, 0);

@@ -1,14 +1,22 @@
 // Tests for delaunay(), triangulate() and verify_triangulation(): brute-force
-// checks on small inputs, degenerate inputs, constrained domains with holes.
+// checks on small inputs, degenerate inputs, constrained domains with holes;
+// and `madd triangulate` of a points-only .node file, run as a program.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
@@ -108,6 +116,54 @@ madd::Pslg star_with_holes(std::size_t n, std::size_t k, std::size_t m, unsigned
     pslg.holes.push_back(c);
   }
   return pslg;
+}
+
+// Points as a Triangle .node file with 1-based ids.
+std::string node_text(const std::vector<Point>& pts) {
+  std::string text = std::to_string(pts.size()) + " 2 0 0\n";
+  char line[96];
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::snprintf(line, sizeof line, "%zu %.17g %.17g\n", i + 1, pts[i].x, pts[i].y);
+    text += line;
+  }
+  return text;
+}
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Reads Triangle's .ele and .neigh files (1-based ids, -1 for no neighbour)
+// back into `tri`.
+void read_ele_neigh(const std::string& ele, const std::string& neigh, madd::Triangulation& tri) {
+  std::istringstream e(ele), n(neigh);
+  std::size_t count = 0, corners = 0, attributes = 0, neigh_count = 0, sides = 0;
+  e >> count >> corners >> attributes;
+  n >> neigh_count >> sides;
+  REQUIRE(corners == 3);
+  REQUIRE(neigh_count == count);
+  tri.triangles.resize(count);
+  tri.neighbours.resize(count);
+  tri.segment_of.assign(count, {madd::no_index, madd::no_index, madd::no_index});
+  for (std::size_t t = 0; t < count; ++t) {
+    long long id = 0, nid = 0;
+    e >> id;
+    n >> nid;
+    REQUIRE(id == static_cast<long long>(t + 1));
+    REQUIRE(nid == id);
+    for (int i = 0; i < 3; ++i) {
+      long long v = 0, u = 0;
+      e >> v;
+      n >> u;
+      tri.triangles[t][i] = static_cast<std::uint32_t>(v - 1);
+      tri.neighbours[t][i] = u < 0 ? madd::no_index : static_cast<std::uint32_t>(u - 1);
+    }
+  }
+  REQUIRE(e);
+  REQUIRE(n);
 }
 
 void check_constrained(const madd::Pslg& pslg) {
@@ -336,6 +392,79 @@ TEST_SUITE("triangulation") {
       }
       check_constrained(pslg);
     }
+  }
+
+  TEST_CASE("a points-only .node file triangulates over its convex hull") {
+    // Random points inside the unit square plus points along its sides, so the
+    // hull has collinear vertices that must all be triangle corners.
+    std::vector<Point> pts = random_points(300, 31);
+    for (int k = 0; k <= 20; ++k) {
+      const double t = k / 20.0;
+      for (const Point p : {Point{t, 0}, Point{1, t}, Point{1 - t, 1}, Point{0, 1 - t}}) {
+        if (std::find(pts.begin(), pts.end(), p) == pts.end()) pts.push_back(p);
+      }
+    }
+    const madd::PolyFile file = madd::parse_node(node_text(pts), "points.node");
+    REQUIRE(file.pslg.points == pts);
+    madd::ValidateOptions options;
+    options.allow_point_set = true;
+    REQUIRE_NOTHROW(madd::validate(file.pslg, file.source, options));
+    const madd::Triangulation tri = madd::delaunay(file.pslg.points);
+    const madd::Verification v = madd::verify_triangulation(tri);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    check_brute_force_delaunay(pts, tri);
+    CHECK(total_area(tri) == doctest::Approx(1.0).epsilon(1e-12));
+  }
+
+  TEST_CASE("madd triangulate FILE.node writes the Delaunay triangulation of the points") {
+#ifndef MADD_CLI_PATH
+    MESSAGE("skipped: the madd CLI is not built");
+#else
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("madd-triangulate-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const auto run = [&](const std::string& name) {
+      const std::string command = std::string("'") + MADD_CLI_PATH + "' triangulate -q '" +
+                                  (dir / name).string() + "' > '" + (dir / "log").string() + "' 2>&1";
+      const int status = std::system(command.c_str());
+      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    std::vector<Point> pts = random_points(400, 8);
+    for (int k = 0; k < 10; ++k) pts.push_back({k / 10.0, -0.5});  // collinear hull points
+    std::ofstream(dir / "pts.node") << node_text(pts);
+    REQUIRE_MESSAGE(run("pts.node") == 0, slurp(dir / "log"));
+
+    madd::Triangulation tri;
+    tri.points = madd::read_poly_file((dir / "pts.1.node").string()).pslg.points;
+    REQUIRE(tri.points == pts);
+    read_ele_neigh(slurp(dir / "pts.1.ele"), slurp(dir / "pts.1.neigh"), tri);
+    const madd::Verification v = madd::verify_triangulation(tri);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    const std::size_t h = hull_point_count(pts);
+    CHECK(tri.triangle_count() == 2 * pts.size() - 2 - h);
+    // Every edge once, the h hull edges (and only they) with marker 1.
+    std::istringstream edges(slurp(dir / "pts.1.edge"));
+    std::size_t edge_count = 0, with_markers = 0, hull_edges = 0;
+    edges >> edge_count >> with_markers;
+    CHECK(edge_count == (3 * tri.triangle_count() + h) / 2);
+    for (std::size_t k = 0; k < edge_count; ++k) {
+      long long id = 0, a = 0, b = 0, marker = -1;
+      edges >> id >> a >> b >> marker;
+      if (marker == 1) ++hull_edges;
+    }
+    CHECK(edges);
+    CHECK(hull_edges == h);
+
+    // A duplicate is refused, naming both vertices.
+    pts.push_back(pts[41]);
+    std::ofstream(dir / "dup.node") << node_text(pts);
+    CHECK(run("dup.node") == 3);
+    const std::string log = slurp(dir / "log");
+    CHECK_MESSAGE(log.find("vertex 42") != std::string::npos, log);
+    CHECK_MESSAGE(log.find("vertex " + std::to_string(pts.size())) != std::string::npos, log);
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+#endif
   }
 
   TEST_CASE("verify_triangulation catches broken triangulations") {

@@ -319,4 +319,41 @@ TEST_CASE("long segments over a fine grid: a many-sided polygon with a comb of l
   CHECK(e->problem() == InputProblem::segments_intersect);
 }
 
+TEST_CASE("allow_point_set: a points-only file is accepted, duplicates and bad coordinates are not") {
+  const std::string text = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n";
+  madd::ValidateOptions points;
+  points.allow_point_set = true;
+  const madd::PolyFile square = madd::parse_node(text, "square.node");
+  CHECK_NOTHROW(madd::validate(square.pslg, square.source, points));
+  // Without the option there is still no domain.
+  const auto refused = error_of(square.pslg);
+  REQUIRE(refused);
+  CHECK(refused->problem() == InputProblem::empty_domain);
+  // Holes without segments are not a point set either.
+  madd::Pslg holed = square.pslg;
+  holed.holes.push_back({0.5, 0.5});
+  CHECK(error_of(holed, points));
+
+  // Vertex 5 repeats vertex 2: both named, in the file's base, at vertex 5's line.
+  const madd::PolyFile dup = madd::parse_node("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 0\n", "dup.node");
+  try {
+    madd::validate(dup.pslg, dup.source, points);
+    FAIL("no error");
+  } catch (const madd::InvalidInputError& e) {
+    CHECK(e.problem() == InputProblem::duplicate_vertex);
+    std::vector<std::int64_t> ids = e.ids();
+    std::sort(ids.begin(), ids.end());
+    CHECK(ids == std::vector<std::int64_t>{2, 5});
+    CHECK(e.line() == 6);
+    const std::string message = e.what();
+    CHECK(message.find("vertex 5") != std::string::npos);
+    CHECK(message.find("vertex 2") != std::string::npos);
+  }
+  madd::Pslg huge = square.pslg;
+  huge.points[3].x = 1e300;
+  const auto range = error_of(huge, points);
+  REQUIRE(range);
+  CHECK(range->ids() == std::vector<std::int64_t>{4});
+}
+
 } // TEST_SUITE

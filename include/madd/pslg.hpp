@@ -59,6 +59,10 @@ struct ValidateOptions {
   // Check vertex attribute 1 as a boundary density weight (finite, >= 0);
   // only wanted when boundary-weight grading is on (FORMATS.md).
   bool check_weights = false;
+  // Accept a Pslg with no segments and no holes as a point set, to be
+  // triangulated over its convex hull (madd triangulate FILE.node): only the
+  // coordinate range and duplicate vertices are then checked.
+  bool allow_point_set = false;
 };
 
 // Checks that `pslg` describes one valid domain (FORMATS.md, "Bad input"):
