@@ -108,25 +108,36 @@ madd::Pslg star(std::size_t n, std::size_t k, std::size_t m, unsigned seed) {
   return pslg;
 }
 
+struct Workload {
+  std::string kind;  // "uniform", "circle" or "star"
+  std::size_t n = 0;
+};
+
 // "uniform-N", "circle-N" (regular N-gon) or "star-N" (N vertices, 9 holes of
-// 64); N may be written 1e5.
-madd::Pslg workload(const std::string& name) {
-  madd::Pslg pslg;
+// 64); N may be written 1e5. Exits with a message on anything else.
+Workload parse_workload(const std::string& name) {
   const std::size_t dash = name.find('-');
-  const std::string kind = name.substr(0, dash);
-  const auto n = dash == std::string::npos ? 0 : static_cast<std::size_t>(std::atof(name.c_str() + dash + 1));
-  if (kind == "uniform" && n > 0) {
-    std::mt19937_64 rng(1);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    pslg.points.resize(n);
-    for (auto& p : pslg.points) p = {u(rng), u(rng)};
-  } else if (kind == "circle" && n >= 3) {
-    add_ring(pslg, ring(n, {0, 0}, 1.0, 0.0, false), 1);
-  } else if (kind == "star" && n >= 3) {
-    pslg = star(n, 9, 64, 1);
-  } else {
+  Workload w{name.substr(0, dash), 0};
+  if (dash != std::string::npos) w.n = static_cast<std::size_t>(std::atof(name.c_str() + dash + 1));
+  const bool known = (w.kind == "uniform" && w.n > 0) || ((w.kind == "circle" || w.kind == "star") && w.n >= 3);
+  if (!known) {
     std::fprintf(stderr, "unknown workload %s (uniform-N, circle-N, star-N)\n", name.c_str());
     std::exit(2);
+  }
+  return w;
+}
+
+madd::Pslg generate(const Workload& w) {
+  madd::Pslg pslg;
+  if (w.kind == "uniform") {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    pslg.points.resize(w.n);
+    for (auto& p : pslg.points) p = {u(rng), u(rng)};
+  } else if (w.kind == "circle") {
+    add_ring(pslg, ring(w.n, {0, 0}, 1.0, 0.0, false), 1);
+  } else {
+    pslg = star(w.n, 9, 64, 1);
   }
   // Exact-size storage, so the input counts once in the peak memory figure.
   pslg.points.shrink_to_fit();
@@ -142,8 +153,8 @@ madd::Triangulation run_workload(const madd::Pslg& pslg) {
 // libraries': a fixed cost, which would read as 40 bytes/point at 10^4) by a
 // run of the same kind on a few hundred points, then hands the heap it used
 // back to the system, so that it cannot lower the figure that follows.
-void warm_up(const std::string& name) {
-  (void)run_workload(workload(name.substr(0, name.find('-')) + "-200"));
+void warm_up(const Workload& w) {
+  (void)run_workload(generate({w.kind, 200}));
   malloc_trim(0);
 }
 
@@ -152,10 +163,11 @@ void warm_up(const std::string& name) {
 // measured from after a warm-up; the figure with the first touch of the code
 // (from a cold start) follows in parentheses.
 int run_one(const std::string& name, int runs) {
+  const Workload w = parse_workload(name);
   const long long rss_cold = current_rss_bytes();
-  warm_up(name);
+  warm_up(w);
   const long long rss0 = current_rss_bytes();
-  const madd::Pslg pslg = workload(name);
+  const madd::Pslg pslg = generate(w);
   std::vector<double> times, cpu;
   std::size_t triangles = 0;
   for (int r = 0; r < runs; ++r) {
