@@ -3,6 +3,8 @@
 // A FILE.node (points only) gives the Delaunay triangulation of its points.
 #include <getopt.h>
 
+#include <charconv>
+#include <concepts>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -37,10 +39,22 @@ struct Args {
   bool quiet = false;
 };
 
-void append(std::string& out, const char* fmt, auto... values) {
-  char buf[256];
-  const int n = std::snprintf(buf, sizeof buf, fmt, values...);
-  if (n > 0) out.append(buf, static_cast<std::size_t>(n));
+// One output line: the values separated by spaces. Numbers go through
+// std::to_chars (doubles as the shortest text that reads back to the same
+// value): the files of a 10^6-point triangulation hold ~10^7 numbers, and
+// printf-style formatting of them cost more than the triangulation itself.
+void put(std::string& out, double value) {
+  char buf[32];
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, value).ptr);
+}
+void put(std::string& out, std::integral auto value) {
+  char buf[24];
+  out.append(buf, std::to_chars(buf, buf + sizeof buf, value).ptr);
+}
+void line(std::string& out, auto first, auto... rest) {
+  put(out, first);
+  ((out += ' ', put(out, rest)), ...);
+  out += '\n';
 }
 
 // Output marker of constrained edge (t, i): the segment's marker, or 1 when the
@@ -72,11 +86,13 @@ std::string node_text(const Pslg& pslg, const Triangulation& tri) {
   const std::vector<int> mark = vertex_markers(pslg, tri);
   const unsigned base = pslg.first_index;
   std::string out;
-  append(out, "%zu 2 %u 1\n", tri.points.size(), pslg.attributes_per_point);
+  line(out, tri.points.size(), 2, pslg.attributes_per_point, 1);
   for (std::size_t v = 0; v < tri.points.size(); ++v) {
-    append(out, "%zu %.17g %.17g", v + base, tri.points[v].x, tri.points[v].y);
-    for (std::size_t k = 0; k < pslg.attributes_per_point; ++k) append(out, " %.17g", pslg.attribute(v, k));
-    append(out, " %d\n", mark[v]);
+    put(out, v + base);
+    for (const double x : {tri.points[v].x, tri.points[v].y}) (out += ' ', put(out, x));
+    for (std::size_t k = 0; k < pslg.attributes_per_point; ++k) (out += ' ', put(out, pslg.attribute(v, k)));
+    out += ' ';
+    line(out, mark[v]);
   }
   return out;
 }
@@ -84,10 +100,10 @@ std::string node_text(const Pslg& pslg, const Triangulation& tri) {
 std::string ele_text(const Pslg& pslg, const Triangulation& tri) {
   const unsigned base = pslg.first_index;
   std::string out;
-  append(out, "%zu 3 0\n", tri.triangle_count());
+  line(out, tri.triangle_count(), 3, 0);
   for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
     const auto& c = tri.triangles[t];
-    append(out, "%zu %u %u %u\n", t + base, c[0] + base, c[1] + base, c[2] + base);
+    line(out, t + base, c[0] + base, c[1] + base, c[2] + base);
   }
   return out;
 }
@@ -95,11 +111,11 @@ std::string ele_text(const Pslg& pslg, const Triangulation& tri) {
 std::string neigh_text(const Pslg& pslg, const Triangulation& tri) {
   const long long base = pslg.first_index;
   std::string out;
-  append(out, "%zu 3\n", tri.triangle_count());
+  line(out, tri.triangle_count(), 3);
   for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
     long long n[3];
     for (int i = 0; i < 3; ++i) n[i] = tri.neighbours[t][i] == no_index ? -1 : tri.neighbours[t][i] + base;
-    append(out, "%lld %lld %lld %lld\n", static_cast<long long>(t) + base, n[0], n[1], n[2]);
+    line(out, static_cast<long long>(t) + base, n[0], n[1], n[2]);
   }
   return out;
 }
@@ -117,12 +133,11 @@ std::string edge_text(const Pslg& pslg, const Triangulation& tri) {
       int m = edge_marker(pslg, tri, t, i);
       if (hull_marks && u == no_index) m = 1;
       ++count;
-      append(body, "%zu %u %u %d\n", count - 1 + base, tri.triangles[t][(i + 1) % 3] + base,
-             tri.triangles[t][(i + 2) % 3] + base, m);
+      line(body, count - 1 + base, tri.triangles[t][(i + 1) % 3] + base, tri.triangles[t][(i + 2) % 3] + base, m);
     }
   }
   std::string out;
-  append(out, "%zu 1\n", count);
+  line(out, count, 1);
   return out + body;
 }
 

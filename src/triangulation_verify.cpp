@@ -13,8 +13,15 @@ namespace {
 
 struct DirectedEdge {
   std::uint32_t from, to, tri, edge;
+  std::uint32_t lo() const noexcept { return std::min(from, to); }
+  std::uint32_t hi() const noexcept { return std::max(from, to); }
+  // By undirected edge, then the direction from lo to hi first: an edge's
+  // twin sits next to it, so no search is needed.
   bool operator<(const DirectedEdge& o) const noexcept {
-    return from < o.from || (from == o.from && (to < o.to || (to == o.to && tri < o.tri)));
+    if (lo() != o.lo()) return lo() < o.lo();
+    if (hi() != o.hi()) return hi() < o.hi();
+    if (from != o.from) return from < o.from;
+    return tri < o.tri;
   }
 };
 
@@ -68,25 +75,34 @@ void check_adjacency(const Triangulation& tri, Verification& v) {
     for (std::uint32_t i = 0; i < 3; ++i) edges.push_back({c[(i + 1) % 3], c[(i + 2) % 3], t, i});
   }
   std::sort(edges.begin(), edges.end());
-  for (std::size_t k = 1; k < edges.size(); ++k) {
-    if (edges[k].from == edges[k - 1].from && edges[k].to == edges[k - 1].to) {
-      report(v, "edge " + std::to_string(edges[k].from) + "-" + std::to_string(edges[k].to) + " is used twice");
+  for (std::size_t first = 0; first < edges.size();) {
+    // [first, last): one undirected edge; [first, mid) runs lo -> hi, [mid, last) hi -> lo.
+    std::size_t last = first, mid = first;
+    while (last < edges.size() && edges[last].lo() == edges[first].lo() && edges[last].hi() == edges[first].hi()) {
+      if (edges[last].from < edges[last].to) mid = last + 1;
+      ++last;
     }
-  }
-  for (const DirectedEdge& e : edges) {
-    const DirectedEdge key{e.to, e.from, 0, 0};
-    auto it = std::lower_bound(edges.begin(), edges.end(), key);
-    const bool has_twin = it != edges.end() && it->from == e.to && it->to == e.from;
-    const std::uint32_t nb = tri.neighbours[e.tri][e.edge];
-    if (!has_twin) {
-      if (nb != no_index) report(v, tri_name(e.tri) + " names a neighbour across an unshared edge");
-      continue;
+    if (mid - first > 1 || last - mid > 1) {
+      const DirectedEdge& e = mid - first > 1 ? edges[first] : edges[mid];
+      report(v, "edge " + std::to_string(e.from) + "-" + std::to_string(e.to) + " is used twice");
     }
-    if (nb != it->tri || tri.neighbours[it->tri][it->edge] != e.tri) {
-      report(v, tri_name(e.tri) + " and " + tri_name(it->tri) + " share an edge but are not mutual neighbours");
-    } else if (tri.segment_of[e.tri][e.edge] != tri.segment_of[it->tri][it->edge]) {
-      report(v, tri_name(e.tri) + " and " + tri_name(it->tri) + " disagree on segment_of");
+    for (std::size_t k = first; k < last; ++k) {
+      const DirectedEdge& e = edges[k];
+      const bool forward = k < mid;
+      const bool has_twin = forward ? mid < last : first < mid;
+      const std::uint32_t nb = tri.neighbours[e.tri][e.edge];
+      if (!has_twin) {
+        if (nb != no_index) report(v, tri_name(e.tri) + " names a neighbour across an unshared edge");
+        continue;
+      }
+      const DirectedEdge& twin = forward ? edges[mid] : edges[first];
+      if (nb != twin.tri || tri.neighbours[twin.tri][twin.edge] != e.tri) {
+        report(v, tri_name(e.tri) + " and " + tri_name(twin.tri) + " share an edge but are not mutual neighbours");
+      } else if (tri.segment_of[e.tri][e.edge] != tri.segment_of[twin.tri][twin.edge]) {
+        report(v, tri_name(e.tri) + " and " + tri_name(twin.tri) + " disagree on segment_of");
+      }
     }
+    first = last;
   }
 }
 
