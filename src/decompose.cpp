@@ -52,21 +52,6 @@ std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
   return best;
 }
 
-Point largest_triangle_centroid(const Pslg& domain) {
-  const Triangulation tri = triangulate(domain);
-  double best = -1.0;
-  Point at;
-  for (const auto& t : tri.triangles) {
-    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
-    const double area = signed_area(a, b, c);
-    if (area > best) {
-      best = area;
-      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
-    }
-  }
-  return at;
-}
-
 Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options,
                                const detail::GradingState& grading) {
   Decomposition d;
@@ -186,7 +171,7 @@ Decomposition decompose(const Pslg& domain, const Options& options, std::vector<
   phases.push_back({"graph", split_times.graph});
   phases.push_back({"bisect", split_times.bisect});
   phases.push_back({"insert", insert_seconds});
-  if (sub.faces.size() == 1) sub.faces[0].interior = largest_triangle_centroid(domain);
+  if (sub.faces.size() == 1) sub.faces[0].interior = detail::largest_triangle_centroid(domain);
   detail::check_new_angles(sub, options.min_angle_deg);
   return to_decomposition(sub, domain, options, grading);
 }

@@ -59,6 +59,21 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const Media
   return out;
 }
 
+Point largest_triangle_centroid(const Pslg& domain) {
+  const Triangulation tri = triangulate(domain);
+  double best = -1.0;
+  Point at;
+  for (const auto& t : tri.triangles) {
+    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
+    const double area = signed_area(a, b, c);
+    if (area > best) {
+      best = area;
+      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+    }
+  }
+  return at;
+}
+
 double balance_quality(std::uint32_t plan, double w0, double w1) {
   double best = INFINITY;
   for (std::uint32_t k0 = 1; k0 < plan; ++k0) best = std::min(best, std::max(w0 / k0, w1 / (plan - k0)));

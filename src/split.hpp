@@ -45,6 +45,10 @@ struct FaceDensity {
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
                           const FaceDensity& density = {}, const ResourceGuard* limits = nullptr);
 
+// A point strictly inside a (validated, non-empty) domain: the centroid of
+// the largest triangle of its constrained Delaunay triangulation.
+Point largest_triangle_centroid(const Pslg& domain);
+
 // 1 when the best sharing of `plan` between sides weighing w0 and w1 gives
 // every final subdomain the mean weight, lower as the largest one grows.
 double balance_quality(std::uint32_t plan, double w0, double w1);

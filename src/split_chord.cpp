@@ -13,8 +13,8 @@
 
 #include "madd/medial.hpp"
 #include "madd/predicates.hpp"
-#include "madd/triangulation.hpp"
 #include "split.hpp"
+#include "validate_detail.hpp"
 
 namespace madd::detail {
 
@@ -114,33 +114,19 @@ double distance_to_segment(Point x, Point a, Point b) {
   return distance(x, lerp(a, b, t));
 }
 
-// Segments pq and ab share a point (touching counts). Exact.
-bool segments_meet(Point p, Point q, Point a, Point b) {
-  const double o1 = orient2d(p, q, a), o2 = orient2d(p, q, b);
-  const double o3 = orient2d(a, b, p), o4 = orient2d(a, b, q);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return true;
-  auto on = [](Point s, Point t, Point x, double o) {
-    return o == 0 && std::min(s.x, t.x) <= x.x && x.x <= std::max(s.x, t.x) && std::min(s.y, t.y) <= x.y &&
-           x.y <= std::max(s.y, t.y);
-  };
-  return on(p, q, a, o1) || on(p, q, b, o2) || on(a, b, p, o3) || on(a, b, q, o4);
-}
-
-// The chord from ring position i to j meets no ring edge except the four at its ends.
+// The chord from ring position i to j meets the boundary only at its two ends
+// (exact, validate's segment test: touching or overlapping counts).
 bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
-  const auto& pts = fd.pslg.points;
   const std::size_t n = ring.at.size();
-  const Point p = pts[ring.at[i]], q = pts[ring.at[j]];
+  const Segment chord{ring.at[i], ring.at[j], 0};
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t k1 = (k + 1) % n;
-    if (k == i || k1 == i || k == j || k1 == j) continue;
-    if (segments_meet(p, q, pts[ring.at[k]], pts[ring.at[k1]])) return false;
+    const Segment edge{ring.at[k], ring.at[(k + 1) % n], 0};
+    if (classify_contact(fd.pslg.points, chord, edge).kind != Contact::none) return false;
   }
   return true;
 }
 
-// A point strictly inside the polygon of ring positions i..j (cyclic): the
-// centroid of the largest triangle of its constrained Delaunay triangulation.
+// A point strictly inside the polygon of ring positions i..j (cyclic).
 Point triangulated_interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
   const std::size_t n = ring.at.size();
   Pslg side;
@@ -151,35 +137,13 @@ Point triangulated_interior_point(const FaceDomain& fd, const Ring& ring, std::s
   }
   const auto m = static_cast<std::uint32_t>(side.points.size());
   for (std::uint32_t k = 0; k < m; ++k) side.segments.push_back({k, (k + 1) % m, 1});
-  const Triangulation tri = triangulate(side);
-  double best = -1.0;
-  Point at = side.points[0];
-  for (const auto& t : tri.triangles) {
-    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
-    const double area = signed_area(a, b, c);
-    if (area > best) {
-      best = area;
-      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
-    }
-  }
-  return at;
-}
-
-// balance_quality that also counts the lighter side: with the best sharing of
-// `plan`, the worse of mean / heaviest and lightest / mean per final subdomain.
-double two_sided_quality(std::uint32_t plan, double w0, double w1) {
-  const double mean = (w0 + w1) / plan;
-  double best = 0.0;
-  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
-    const double a = w0 / k0, b = w1 / (plan - k0);
-    best = std::max(best, std::min(mean / std::max(a, b), std::min(a, b) / mean));
-  }
-  return best;
+  return largest_triangle_centroid(side);
 }
 
 // A point strictly inside side 0 (left of chord q -> p) or side 1: the chord's
-// midpoint moved off it by half its distance to the rest of the boundary, so
-// that nothing lies between. Checked exactly; falls back to a triangulation.
+// midpoint moved off it by a quarter of its distance to the boundary, so that
+// no boundary lies between them. The side is checked exactly, and the move
+// for rounding; otherwise a triangulation of the side decides.
 Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j, int side) {
   const auto& pts = fd.pslg.points;
   const Point p = pts[ring.at[i]], q = pts[ring.at[j]];
@@ -197,6 +161,18 @@ Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std:
     if (distance(x, m) < 0.5 * clear) return x;
   }
   return side == 0 ? triangulated_interior_point(fd, ring, i, j) : triangulated_interior_point(fd, ring, j, i);
+}
+
+// balance_quality that also counts the lighter side: with the best sharing of
+// `plan`, the worse of mean / heaviest and lightest / mean per final subdomain.
+double two_sided_quality(std::uint32_t plan, double w0, double w1) {
+  const double mean = (w0 + w1) / plan;
+  double best = 0.0;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double a = w0 / k0, b = w1 / (plan - k0);
+    best = std::max(best, std::min(mean / std::max(a, b), std::min(a, b) / mean));
+  }
+  return best;
 }
 
 // The areas of side 0 whose two_sided_quality can exceed `min_quality`: for
