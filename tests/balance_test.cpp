@@ -12,6 +12,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "decomposition_check.hpp"
 
 namespace {
 
@@ -29,19 +30,8 @@ Pslg ring(const std::vector<Point>& pts) {
   return p;
 }
 
-// Decomposes, checks validity and C1 independently, returns the figures.
 madd::Metrics checked(const Pslg& domain, std::uint32_t n, double min_angle = 60.0) {
-  madd::Options o;
-  o.subdomains = n;
-  o.min_angle_deg = min_angle;
-  o.threads = 1;
-  const madd::Decomposition d = madd::decompose(domain, o);
-  const madd::Verification v = madd::verify_decomposition(d, domain, n);
-  for (const auto& p : v.problems) INFO(p);
-  REQUIRE(v.ok());
-  const madd::Metrics m = madd::metrics(d);
-  CHECK(m.angle_min >= min_angle);
-  return m;
+  return madd::test::checked_decomposition(domain, n, min_angle);
 }
 
 } // namespace

@@ -17,6 +17,7 @@
 #include "madd/error.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "decomposition_check.hpp"
 
 namespace {
 
@@ -45,17 +46,7 @@ std::vector<Point> rectangle(double x0, double y0, double x1, double y1, bool cl
 
 // Decomposes and checks the full contract: verified, N subdomains, min angle.
 void expect_valid(const Pslg& domain, std::uint32_t n, double min_angle = 60.0) {
-  madd::Options options;
-  options.subdomains = n;
-  options.min_angle_deg = min_angle;
-  options.threads = 1;
-  const madd::Decomposition d = madd::decompose(domain, options);
-  const madd::Verification check = madd::verify_decomposition(d, domain, n);
-  INFO((check.ok() ? std::string() : check.problems.front()));
-  CHECK(check.ok());
-  CHECK(d.subdomains.size() == n);
-  const madd::Metrics m = madd::metrics(d);
-  if (!std::isnan(m.angle_min)) CHECK(m.angle_min >= min_angle - 1e-9);
+  madd::test::checked_decomposition(domain, n, min_angle);
 }
 
 madd::InvalidInputError expect_invalid(const Pslg& domain) {

@@ -8,6 +8,7 @@
 #include "madd/error.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "decomposition_check.hpp"
 
 namespace {
 
@@ -25,15 +26,7 @@ TEST_CASE("needle spike: a 48-segment disk with a 6.7e5-long spike splits in sec
   // once per refinement round. The cap now also scales with the face's own
   // vertices (at least 2e4 points), and limits are checked between refinement
   // rounds. The result must still be valid.
-  const madd::Pslg domain = madd::read_domain(corpus("fuzz_decompose", "needle_spike_disk"));
-  madd::Options options;
-  options.subdomains = 2;
-  options.min_angle_deg = 45.0;
-  options.threads = 1;
-  const madd::Decomposition d = madd::decompose(domain, options);
-  const madd::Verification check = madd::verify_decomposition(d, domain, 2);
-  INFO((check.ok() ? std::string() : check.problems.front()));
-  CHECK(check.ok());
+  madd::test::checked_decomposition(madd::read_domain(corpus("fuzz_decompose", "needle_spike_disk")), 2, 45.0);
 }
 
 // fuzz_decompose timeout (11 s under ASan, 1 s in Release) after the fix
@@ -41,15 +34,7 @@ TEST_CASE("needle spike: a 48-segment disk with a 6.7e5-long spike splits in sec
 // enough to be skipped (perimeter 730 sqrt(area)) yet refined to 1.4e5 points
 // in its last refinement rounds. Now capped at 2e4 points per split (0.1 s).
 TEST_CASE("star with two needles: the per-face point cap keeps each split small, and the result valid") {
-  const madd::Pslg domain = madd::read_domain(corpus("fuzz_decompose", "star_two_needles"));
-  madd::Options options;
-  options.subdomains = 5;
-  options.min_angle_deg = 45.0;
-  options.threads = 1;
-  const madd::Decomposition d = madd::decompose(domain, options);
-  const madd::Verification check = madd::verify_decomposition(d, domain, 5);
-  INFO((check.ok() ? std::string() : check.problems.front()));
-  CHECK(check.ok());
+  madd::test::checked_decomposition(madd::read_domain(corpus("fuzz_decompose", "star_two_needles")), 5, 45.0);
 }
 
 // Was a hang (fuzz_decompose timeout) inside a split: try_spacing ->
@@ -60,14 +45,7 @@ TEST_CASE("star with two needles: the per-face point cap keeps each split small,
 // find_exit rotation never closed. The split is valid, so a valid
 // decomposition is required (no error is acceptable).
 TEST_CASE("cdt find_exit hang: segment insertion during a split terminates") {
-  const madd::Pslg domain =
-      madd::read_domain(std::string(MADD_SOURCE_DIR) + "/fuzz/corpus/fuzz_decompose/cdt_find_exit_hang");
-  madd::Options options;
-  options.subdomains = 5;
-  options.min_angle_deg = 45.0;
-  options.threads = 1;
-  const madd::Decomposition d = madd::decompose(domain, options);
-  CHECK(madd::verify_decomposition(d, domain, 5).ok());
+  madd::test::checked_decomposition(madd::read_domain(corpus("fuzz_decompose", "cdt_find_exit_hang")), 5, 45.0);
 }
 
 } // TEST_SUITE
