@@ -498,4 +498,46 @@ TEST_SUITE("triangulation") {
     REQUIRE(flipped_one);
     CHECK_FALSE(madd::verify_triangulation(bad).ok());
   }
+
+  TEST_CASE("verify_triangulation names each kind of broken adjacency") {
+    const auto pts = random_points(200, 5);
+    const madd::Triangulation good = madd::delaunay(pts);
+    REQUIRE(madd::verify_triangulation(good).ok());
+    auto says = [](const madd::Triangulation& t, const std::string& what) {
+      const madd::Verification v = madd::verify_triangulation(t);
+      bool found = false;
+      for (const std::string& p : v.problems) found = found || p.find(what) != std::string::npos;
+      return found;
+    };
+    // An interior edge of triangle t, as (t, i, u = the neighbour across it).
+    std::uint32_t t = 0;
+    int i = 0;
+    while (good.neighbours[t][i] == madd::no_index) {
+      if (++i == 3) {
+        i = 0;
+        ++t;
+      }
+    }
+    const std::uint32_t u = good.neighbours[t][i];
+    madd::Triangulation twice = good;  // a second copy of triangle t over triangle u's slot
+    twice.triangles[u] = good.triangles[t];
+    CHECK(says(twice, "is used twice"));
+    madd::Triangulation one_way = good;  // t points elsewhere, u still points at t
+    one_way.neighbours[t][i] = static_cast<std::uint32_t>((u + 1) % good.triangle_count());
+    CHECK(says(one_way, "are not mutual neighbours"));
+    madd::Triangulation half_constrained = good;  // only one side calls the edge a segment
+    half_constrained.segment_of[t][i] = 0;
+    CHECK(says(half_constrained, "disagree on segment_of"));
+    madd::Triangulation dangling = good;  // a neighbour across a hull edge
+    std::uint32_t h = 0;
+    int k = 0;
+    while (good.neighbours[h][k] != madd::no_index) {
+      if (++k == 3) {
+        k = 0;
+        ++h;
+      }
+    }
+    dangling.neighbours[h][k] = static_cast<std::uint32_t>((h + 1) % good.triangle_count());
+    CHECK(says(dangling, "names a neighbour across an unshared edge"));
+  }
 }
