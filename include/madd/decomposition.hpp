@@ -52,8 +52,9 @@ struct Options {
   double area_ratio_bound = 1.0;
 
   // Resource limits (docs/hostile.md): decompose() throws LimitError when a
-  // split starts after this many seconds, or when the process's resident
-  // memory exceeds this many bytes (checked between splits). 0 = no limit.
+  // split, or a refinement round of one, starts after this many seconds, or
+  // when the process's resident memory exceeds this many bytes (checked at
+  // the same points). 0 = no limit.
   double time_limit_seconds = 0.0;
   std::size_t max_memory_bytes = 0;
 };
