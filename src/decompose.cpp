@@ -4,19 +4,16 @@
 // (split_round.hpp), so the output is identical for any thread count.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <thread>
 
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
-#include "madd/poly_io.hpp"
-#include <string>
 #include "madd/triangulation.hpp"
 #include "grading.hpp"
 #include "resource_limits.hpp"
 #include "split.hpp"
 #include "split_round.hpp"
+#include "stopwatch.hpp"
 #include "subdivision.hpp"
 
 namespace madd {
@@ -149,16 +146,7 @@ Decomposition decompose(const Pslg& domain, const Options& options, std::vector<
                         const std::uint32_t f = tasks[i].face;
                         const std::uint32_t plan = tasks[i].plan;
                         const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
-                        if (std::getenv("MADD_TRACE") && plan == 2 && detail::balance_quality(plan, r.weight[0], r.weight[1]) < 0.8) {
-                          Pslg out; const auto& face = snapshot.faces[f];
-                          for (std::size_t ri = 0; ri < face.rings.size(); ++ri) { const auto base = static_cast<std::uint32_t>(out.points.size());
-                            for (std::size_t k = 0; k < face.rings[ri].size(); ++k) { out.points.push_back(snapshot.points[face.rings[ri][k]]);
-                              out.segments.push_back({base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>((k + 1) % face.rings[ri].size()), 1}); }
-                            if (ri > 0) out.holes.push_back(snapshot.hole_point(f, ri)); }
-                          write_file_atomically("/tmp/badface_" + std::to_string(f) + ".poly", format_poly(out));
-                        }
                         const std::uint32_t g = sub.commit(f, r);
-                        if (std::getenv("MADD_TRACE")) std::fprintf(stderr, "split face %u plan %u k0 %u w %.5g %.5g q %.3f\n", f, plan, k0, r.weight[0], r.weight[1], detail::balance_quality(plan, r.weight[0], r.weight[1]));
                         sub.faces[f].plan = k0;
                         sub.faces[g].plan = plan - k0;
                         grading.after_commit(sub, f, g);

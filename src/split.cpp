@@ -1,6 +1,7 @@
 // One split: Sec. 3 (refinement, medial axis), Sec. 4.1-4.3 (graphs,
 // partition, repartition), as pure geometry for Subdivision::commit.
 #include "split.hpp"
+#include "stopwatch.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -4,7 +4,6 @@
 // pure geometry (SplitResult) and committed here, so that neighbours share
 // every vertex by construction: no T-junctions, ever.
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -41,20 +40,6 @@ struct SplitTimes {
     bisect += o.bisect;
     return *this;
   }
-};
-
-// Wall seconds since construction or the previous lap.
-class Stopwatch {
-public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
-private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
 // The outcome of splitting one face (Algorithm 3 as geometry).
