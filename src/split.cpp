@@ -1,10 +1,10 @@
 // One split: Sec. 3 (refinement, medial axis), Sec. 4.1-4.3 (graphs,
 // partition, repartition), as pure geometry for Subdivision::commit.
 #include "split.hpp"
-#include "stopwatch.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "madd/bisect.hpp"
@@ -13,6 +13,7 @@
 #include "madd/triangulation.hpp"
 #include "refine.hpp"
 #include "split_chord.hpp"
+#include "stopwatch.hpp"
 
 namespace madd::detail {
 
@@ -216,6 +217,28 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   return out;
 }
 
+// The chord fallback (split_chord.hpp) for a face whose best split so far
+// has balance quality `best` (< 0: none found), on its boundary refined at
+// half the first spacing.
+std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan,
+                                 const SplitOptions& options, double best, SplitTimes& times) {
+  const double area = sub.face_area(face);
+  const double h =
+      std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), face_perimeter(sub, face) / max_chord_points);
+  ChordOptions co;
+  co.min_angle_deg = options.min_angle_deg;
+  co.plan = plan;
+  co.min_quality = best < 0.0 ? options.imbalance : best + chord_gain;
+  co.good_quality = options.good_balance;
+  co.end_bonus = options.smoothing_iterations > 0;
+  Stopwatch clock;
+  const FaceDomain fd = refine_face(sub, face, h);
+  times.refine += clock.lap();
+  auto chord = best_chord(fd, co);
+  times.bisect += clock.lap();
+  return chord;
+}
+
 } // namespace
 
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
@@ -243,19 +266,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   }
   if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
       static_cast<double>(vertices) <= max_chord_points) {
-    const double h = std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), perimeter / max_chord_points);
-    ChordOptions co;
-    co.min_angle_deg = options.min_angle_deg;
-    co.plan = plan;
-    co.min_quality = best.quality < 0.0 ? options.imbalance : best.quality + chord_gain;
-    co.good_quality = options.good_balance;
-    co.end_bonus = options.smoothing_iterations > 0;
-    Stopwatch clock;
-    const FaceDomain fd = refine_face(sub, face, h);
-    times.refine += clock.lap();
-    auto chord = best_chord(fd, co);
-    times.bisect += clock.lap();
-    if (chord) {
+    if (auto chord = chord_split(sub, face, plan, options, best.quality, times)) {
       best.result = std::move(chord->result);
       best.quality = chord->quality;
     }
