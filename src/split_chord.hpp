@@ -21,15 +21,18 @@ namespace madd::detail {
 
 struct ChordOptions {
   double min_angle_deg = 60.0;  // Phi0: both ends, both sides
-  std::uint32_t plan = 2;       // final subdomains of the face (balance_quality)
+  std::uint32_t plan = 2;       // final subdomains of the face
+  // Chords are rated by a two-sided balance quality: like balance_quality
+  // (split.hpp), but the lightest final subdomain counts as well as the
+  // heaviest, so it never exceeds balance_quality for the same areas.
   double min_quality = 0.0;     // a chord must balance better than this
   double good_quality = 0.95;   // among chords at least this good, the shortest wins
   bool end_bonus = true;        // Sec. 5.1 smoothing: lengths scaled by the end bonuses (existing vertices, midpoints)
 };
 
 // A chord found on face `fd` (the refined boundary of a face with a single
-// ring and no point where the ring passes twice), with the balance quality it
-// achieves, or nothing. Areas are the weights. Quadratic in the points of
+// ring and no point where the ring passes twice), with the two-sided balance
+// quality it achieves, or nothing. Areas are the weights. Quadratic in the points of
 // `fd`: nothing is searched beyond a few thousand of them.
 struct Chord {
   SplitResult result;
