@@ -1,0 +1,2 @@
+# Empty dependencies file for madd_tests.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,167 @@
+// The N-way driver (Algorithm 4, Sec. 5), run in rounds: every face still
+// planned to become k > 1 subdomains is split in the same round, the splits
+// computed in parallel from one snapshot and committed in face-id order
+// (decompose/scheduler.hpp), so the output is identical for any thread count.
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/triangulation.hpp"
+#include "decompose/grading.hpp"
+#include "kernel/resource_limits.hpp"
+#include "split/split.hpp"
+#include "decompose/scheduler.hpp"
+#include "kernel/stopwatch.hpp"
+#include "subdivision/subdivision.hpp"
+
+namespace madd {
+
+namespace detail {
+
+// New-angle check of the committed geometry (C1), independent of the split logic.
+void check_new_angles(const Subdivision& sub, double min_angle_deg);
+
+} // namespace detail
+
+namespace {
+
+using detail::Subdivision;
+
+unsigned thread_count(const Options& options, std::size_t tasks) {
+  unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
+}
+
+// Shares `plan` between the two sides in proportion to what they actually got,
+// so that the imbalance of one level does not compound down the recursion.
+std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
+  std::uint32_t best = plan / 2;
+  double best_cost = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double cost = std::max(w0 / k0, w1 / (plan - k0));
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = k0;
+    }
+  }
+  return best;
+}
+
+Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options,
+                               const detail::GradingState& grading) {
+  Decomposition d;
+  d.points = sub.points;
+  d.segments = sub.segments;
+  d.segment_origin = sub.origin;
+  d.holes = domain.holes;
+  d.min_angle_deg = options.min_angle_deg;
+  for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    Subdomain s;
+    s.rings = sub.faces[f].rings;
+    s.ring_segments = sub.faces[f].ring_segments;
+    s.area = sub.face_area(f);
+    s.weight = grading.weight(sub, f);
+    s.interior_point = sub.faces[f].interior;
+    for (std::size_t r = 1; r < s.rings.size(); ++r) s.hole_points.push_back(sub.hole_point(f, r));
+    d.subdomains.push_back(std::move(s));
+  }
+  return d;
+}
+
+void check_options(const Options& options) {
+  if (options.subdomains == 0) {
+    throw InvalidInputError(InputProblem::other, "the number of subdomains must be at least 1");
+  }
+  if (!(options.min_angle_deg > 0.0 && options.min_angle_deg < 90.0)) {
+    throw InvalidInputError(InputProblem::other, "the minimum angle must lie strictly between 0 and 90 degrees");
+  }
+  if (!(options.refine > 0.0) || !std::isfinite(options.refine)) {
+    throw InvalidInputError(InputProblem::other, "the refinement factor must be positive");
+  }
+}
+
+// Area-driven grading (Sec. 5.2): each round plans one split for every face
+// whose area exceeds area_ratio_bound x its required area (the smallest
+// required area inside it; none inside: unconstrained), the largest ratios
+// first (ties: lower face id), while the total stays <= options.subdomains.
+void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const Options& options) {
+  std::vector<std::pair<double, std::uint32_t>> over;
+  for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    const double required = grading.required(sub, f);
+    if (!std::isfinite(required)) continue;
+    const double ratio = sub.face_area(f) / required;
+    if (ratio > options.area_ratio_bound) over.emplace_back(-ratio, f);
+  }
+  std::sort(over.begin(), over.end());
+  const std::size_t budget = options.subdomains > sub.faces.size() ? options.subdomains - sub.faces.size() : 0;
+  for (std::size_t k = 0; k < std::min(budget, over.size()); ++k) sub.faces[over[k].second].plan = 2;
+}
+
+detail::SplitOptions split_options_of(const Options& options) {
+  detail::SplitOptions split_options;
+  split_options.min_angle_deg = options.min_angle_deg;
+  split_options.refine = options.refine;
+  split_options.imbalance = options.imbalance;
+  split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
+  split_options.seed = options.seed;
+  split_options.smoothing_iterations = std::max(0, options.smoothing_iterations);
+  return split_options;
+}
+
+} // namespace
+
+Decomposition decompose(const Pslg& domain, const Options& options) {
+  std::vector<PhaseTime> ignored;
+  return decompose(domain, options, ignored);
+}
+
+Decomposition decompose(const Pslg& domain, const Options& options, std::vector<PhaseTime>& phases) {
+  const detail::ResourceGuard guard(options);
+  check_options(options);
+  validate(domain);
+  Subdivision sub = Subdivision::from_domain(domain);
+  detail::GradingState grading(options, domain);
+  const bool area_driven = grading.mode().area_driven;
+  sub.faces[0].plan = area_driven ? 1 : options.subdomains;
+  const detail::SplitOptions split_options = split_options_of(options);
+  detail::SplitTimes split_times;
+  double insert_seconds = 0.0;
+  while (true) {
+    if (area_driven) plan_area_round(sub, grading, options);
+    std::vector<detail::RoundTask> tasks;
+    for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+      if (sub.faces[f].plan > 1) tasks.push_back({f, sub.faces[f].plan, grading.density(sub, f)});
+    }
+    if (tasks.empty()) break;
+    guard.check(sub.faces.size());
+    // Every split of the round reads this snapshot while `sub` takes the commits.
+    const Subdivision snapshot = sub;
+    detail::run_round(snapshot, tasks, split_options, thread_count(options, tasks.size()), guard,
+                      [&](std::size_t i, const detail::SplitResult& r) {
+                        detail::Stopwatch clock;
+                        split_times += r.times;
+                        grading.before_commit(snapshot, r);
+                        const std::uint32_t f = tasks[i].face;
+                        const std::uint32_t plan = tasks[i].plan;
+                        const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
+                        const std::uint32_t g = sub.commit(f, r);
+                        sub.faces[f].plan = k0;
+                        sub.faces[g].plan = plan - k0;
+                        grading.after_commit(sub, f, g);
+                        insert_seconds += clock.lap();
+                      });
+    grading.end_round(sub);
+  }
+  phases.push_back({"refine", split_times.refine});
+  phases.push_back({"triangulate", split_times.triangulate});
+  phases.push_back({"graph", split_times.graph});
+  phases.push_back({"bisect", split_times.bisect});
+  phases.push_back({"insert", insert_seconds});
+  if (sub.faces.size() == 1) sub.faces[0].interior = detail::largest_triangle_centroid(domain);
+  detail::check_new_angles(sub, options.min_angle_deg);
+  return to_decomposition(sub, domain, options, grading);
+}
+
+} // namespace madd

@@ -1,0 +1,158 @@
+// Graded decompositions (Sec. 5.2): per-face weights and required areas.
+#include "decompose/grading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace madd::detail {
+
+GradingMode grading_mode(const Options& options) {
+  GradingMode m;
+  m.area_driven = static_cast<bool>(options.area_function) || !options.background_areas.empty();
+  m.a = options.gradation;
+  m.p = options.interpolation;
+  m.r = options.refine;
+  if (options.weight_function) {
+    m.weights = WeightSource::function;
+  } else if (!options.background_weights.empty()) {
+    m.weights = WeightSource::background;
+  } else if (options.gradation > 0.0) {
+    m.weights = WeightSource::boundary;
+  }
+  // A weight function or background weights grade by themselves: without a
+  // gradation factor they count as much as the area (a = 1).
+  if ((m.weights == WeightSource::function || m.weights == WeightSource::background) && !(m.a > 0.0)) m.a = 1.0;
+  return m;
+}
+
+bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p) {
+  bool inside = false;
+  for (const auto& ring : sub.faces[face].rings) {
+    const std::size_t n = ring.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Point a = sub.points[ring[k]];
+      const Point b = sub.points[ring[(k + 1) % n]];
+      // Half-open rule on y, so that a vertex at the ray's height counts once.
+      if ((a.y > p.y) == (b.y > p.y)) continue;
+      const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+      if (x > p.x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const Options& options) {
+  Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  for (std::uint32_t v : sub.faces[face].rings[0]) {
+    const Point q = sub.points[v];
+    lo = Point{std::min(lo.x, q.x), std::min(lo.y, q.y)};
+    hi = Point{std::max(hi.x, q.x), std::max(hi.y, q.y)};
+  }
+  const double dx = (hi.x - lo.x) / grid_cells;
+  const double dy = (hi.y - lo.y) / grid_cells;
+  FaceSamples out;
+  auto take = [&](Point q, double cell_area) {
+    // A density cannot be negative: negative and NaN values count as 0.
+    const double f = options.weight_function ? options.weight_function(q.x, q.y) : 0.0;
+    if (options.weight_function) out.weights.push_back({q, f > 0.0 ? f * cell_area : 0.0});
+    if (options.area_function) out.areas.push_back({q, options.area_function(q.x, q.y)});
+  };
+  // Cell centres, so that the weight is a midpoint-rule integral of f over the face.
+  for (int i = 0; i < grid_cells; ++i) {
+    for (int j = 0; j < grid_cells; ++j) {
+      const Point q{lo.x + (i + 0.5) * dx, lo.y + (j + 0.5) * dy};
+      if (point_in_face(sub, face, q)) take(q, dx * dy);
+    }
+  }
+  // A sliver no grid point falls into is still sampled once, at its interior point.
+  if (out.weights.empty() && out.areas.empty()) take(sub.faces[face].interior, sub.face_area(face));
+  return out;
+}
+
+FaceSamples background_samples(const Options& options, const std::vector<std::uint32_t>& weights_inside,
+                               const std::vector<std::uint32_t>& areas_inside) {
+  FaceSamples out;
+  for (std::uint32_t i : weights_inside) out.weights.push_back(options.background_weights[i]);
+  for (std::uint32_t i : areas_inside) out.areas.push_back(options.background_areas[i]);
+  return out;
+}
+
+double boundary_weight(const Subdivision& sub, std::uint32_t face, const std::vector<double>& point_weights) {
+  double total = 0.0;
+  for (const auto& ring : sub.faces[face].rings) {
+    for (std::uint32_t v : ring) total += point_weights[v];
+  }
+  return total;
+}
+
+double required_area(const FaceSamples& samples) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const ValuedPoint& s : samples.areas) {
+    if (s.value > 0.0) best = std::min(best, s.value);
+  }
+  return best;
+}
+
+double sample_weight(const FaceSamples& samples) {
+  double total = 0.0;
+  for (const ValuedPoint& s : samples.weights) total += s.value;
+  return total;
+}
+
+namespace {
+
+double weight_along(const Subdivision& sub, std::uint32_t segment, Point at, const std::vector<double>& w) {
+  const Segment& s = sub.segments[segment];
+  const Point a = sub.points[s.a], b = sub.points[s.b];
+  const double len = distance(a, b);
+  const double t = len > 0.0 ? std::clamp(distance(a, at) / len, 0.0, 1.0) : 0.5;
+  return (1.0 - t) * w[s.a] + t * w[s.b];
+}
+
+double base_weight(const Subdivision& sub, const EndRef& e, const std::vector<double>& w) {
+  if (e.kind == EndRef::vertex) return w[e.id];
+  if (e.kind == EndRef::on_segment) return weight_along(sub, e.id, e.p, w);
+  return 0.0;
+}
+
+} // namespace
+
+void collect_end_weights(const Subdivision& snapshot, const SplitResult& result,
+                         const std::vector<double>& point_weights, double p, EndWeights& out) {
+  // Circumcentres: mean of the boundary ends of the spokes meeting there.
+  std::vector<std::pair<Point, std::pair<double, int>>> centres;
+  auto add_centre = [&](Point c, double w) {
+    for (auto& entry : centres) {
+      if (entry.first == c) {
+        entry.second.first += w;
+        ++entry.second.second;
+        return;
+      }
+    }
+    centres.push_back({c, {w, 1}});
+  };
+  for (const SeparatorEdge& e : result.edges) {
+    for (const EndRef* end : {&e.a, &e.b}) {
+      const EndRef* other = end == &e.a ? &e.b : &e.a;
+      if (end->kind == EndRef::on_segment) out.push_back({end->p, p * base_weight(snapshot, *end, point_weights)});
+      if (end->kind == EndRef::centre && other->kind != EndRef::centre) {
+        add_centre(end->p, base_weight(snapshot, *other, point_weights));
+      }
+    }
+  }
+  for (const auto& [c, sum] : centres) out.push_back({c, p * sum.first / sum.second});
+}
+
+void assign_new_weights(const std::vector<Point>& points, EndWeights ends, std::vector<double>& point_weights) {
+  const auto key = [](const std::pair<Point, double>& e) { return std::pair{e.first.x, e.first.y}; };
+  std::stable_sort(ends.begin(), ends.end(), [&](const auto& l, const auto& r) { return key(l) < key(r); });
+  for (std::size_t v = point_weights.size(); v < points.size(); ++v) {
+    const std::pair<double, double> k{points[v].x, points[v].y};
+    const auto it = std::lower_bound(ends.begin(), ends.end(), k,
+                                     [&](const auto& e, const std::pair<double, double>& q) { return key(e) < q; });
+    point_weights.push_back(it != ends.end() && key(*it) == k ? it->second : 0.0);
+  }
+}
+
+} // namespace madd::detail

@@ -1,0 +1,105 @@
+// The driver's grading state between rounds (Sec. 5.2).
+#include <numeric>
+
+#include "decompose/grading.hpp"
+
+namespace madd::detail {
+
+GradingState::GradingState(const Options& options, const Pslg& domain)
+    : options_(options), mode_(grading_mode(options)) {
+  if (mode_.weights == WeightSource::boundary) {
+    point_weights_.assign(domain.points.size(), 0.0);
+    if (domain.attributes_per_point > 0) {
+      for (std::size_t i = 0; i < domain.points.size(); ++i) point_weights_[i] = domain.attribute(i, 0);
+    }
+  }
+  // Face 0 is the whole domain: every background point starts there (points
+  // outside the domain are dropped on the first split, or by required()).
+  weights_inside_.resize(1);
+  areas_inside_.resize(1);
+  if (mode_.weights == WeightSource::background) {
+    weights_inside_[0].resize(options.background_weights.size());
+    std::iota(weights_inside_[0].begin(), weights_inside_[0].end(), 0u);
+  }
+  if (!options.area_function && !options.background_areas.empty()) {
+    areas_inside_[0].resize(options.background_areas.size());
+    std::iota(areas_inside_[0].begin(), areas_inside_[0].end(), 0u);
+  }
+}
+
+FaceSamples GradingState::samples(const Subdivision& sub, std::uint32_t face) const {
+  FaceSamples out;
+  if (options_.weight_function || options_.area_function) out = function_samples(sub, face, options_);
+  FaceSamples bg = background_samples(options_, weights_inside_[face], areas_inside_[face]);
+  // The first face holds every point, some perhaps outside the domain: filter them.
+  const bool filter = sub.faces.size() == 1;
+  if (!options_.weight_function) {
+    for (const ValuedPoint& p : bg.weights) {
+      if (!filter || point_in_face(sub, face, p.at)) out.weights.push_back(p);
+    }
+  }
+  if (!options_.area_function) {
+    for (const ValuedPoint& p : bg.areas) {
+      if (!filter || point_in_face(sub, face, p.at)) out.areas.push_back(p);
+    }
+  }
+  return out;
+}
+
+FaceDensity GradingState::density(const Subdivision& sub, std::uint32_t face) const {
+  FaceDensity d;
+  if (!mode_.graded()) return d;
+  d.graded = true;
+  d.r = mode_.r;
+  d.a = mode_.a;
+  if (mode_.weights == WeightSource::boundary) {
+    d.point_weights = &point_weights_;
+  } else {
+    d.samples = samples(sub, face).weights;
+  }
+  return d;
+}
+
+double GradingState::weight(const Subdivision& sub, std::uint32_t face) const {
+  const double area = sub.face_area(face);
+  if (!mode_.graded()) return area;
+  const double w = mode_.weights == WeightSource::boundary ? boundary_weight(sub, face, point_weights_)
+                                                           : sample_weight(samples(sub, face));
+  return mode_.r * area + mode_.a * w;
+}
+
+double GradingState::required(const Subdivision& sub, std::uint32_t face) const {
+  return required_area(samples(sub, face));
+}
+
+void GradingState::before_commit(const Subdivision& snapshot, const SplitResult& result) {
+  if (mode_.weights == WeightSource::boundary) collect_end_weights(snapshot, result, point_weights_, mode_.p, ends_);
+}
+
+void GradingState::after_commit(const Subdivision& sub, std::uint32_t face, std::uint32_t added) {
+  weights_inside_.resize(sub.faces.size());
+  areas_inside_.resize(sub.faces.size());
+  // Each point goes to exactly one side: the face it is in, else the other.
+  for (auto* lists : {&weights_inside_, &areas_inside_}) {
+    const auto& pts = lists == &weights_inside_ ? options_.background_weights : options_.background_areas;
+    std::vector<std::uint32_t> keep, moved;
+    const bool first = sub.faces.size() == 2;
+    for (std::uint32_t i : (*lists)[face]) {
+      if (point_in_face(sub, face, pts[i].at)) {
+        keep.push_back(i);
+      } else if (!first || point_in_face(sub, added, pts[i].at)) {
+        moved.push_back(i);
+      }
+    }
+    (*lists)[face] = std::move(keep);
+    (*lists)[added] = std::move(moved);
+  }
+}
+
+void GradingState::end_round(const Subdivision& sub) {
+  if (mode_.weights != WeightSource::boundary) return;
+  assign_new_weights(sub.points, std::move(ends_), point_weights_);
+  ends_.clear();
+}
+
+} // namespace madd::detail

@@ -1,0 +1,101 @@
+// Output 5: the quality report, every figure of docs/QUALITY.md as one JSON
+// object. Key names match shared/tools/ddcheck.py where both compute a figure.
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "madd/output.hpp"
+#include "kernel/number_format.hpp"
+
+namespace madd {
+
+namespace {
+
+class JsonObject {
+public:
+  explicit JsonObject(std::string& out) : out_(out) { out_ += "{"; }
+  void key(std::string_view name) {
+    out_ += first_ ? "\n  \"" : ",\n  \"";
+    first_ = false;
+    out_.append(name);
+    out_ += "\": ";
+  }
+  void number(std::string_view name, double v) {
+    key(name);
+    if (std::isfinite(v))
+      detail::append_shortest(out_, v);
+    else
+      out_ += "null";  // JSON has no NaN or infinity
+  }
+  void count(std::string_view name, std::uint64_t v) {
+    key(name);
+    detail::append_int(out_, static_cast<std::int64_t>(v));
+  }
+  void close() { out_ += "\n}\n"; }
+
+private:
+  std::string& out_;
+  bool first_ = true;
+};
+
+// JSON string escaping for phase names.
+void append_string(std::string& out, std::string_view s) {
+  out += '"';
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
+      out += buffer;
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+}
+
+} // namespace
+
+std::string format_report_json(const Metrics& m) {
+  std::string out;
+  JsonObject o(out);
+  o.count("subdomains", m.subdomains);
+  o.count("points", m.points);
+  o.count("segments", m.segments);
+  o.count("separator_segments", m.separator_segments);
+  o.number("domain_area", m.domain_area);
+  o.number("mean_area", m.mean_area);
+  o.number("min_angle_bound", m.min_angle_bound_deg);
+  o.count("new_angles", m.new_angles);
+  o.number("angle_min", m.angle_min);
+  o.number("angle_p10", m.angle_p10);
+  o.number("angle_median", m.angle_median);
+  o.number("angle_p90", m.angle_p90);
+  o.count("boundary_angles", m.boundary_angles);
+  o.number("boundary_angle_min", m.boundary_angle_min);
+  o.number("boundary_angle_median", m.boundary_angle_median);
+  o.number("separator_length", m.separator_length);
+  o.number("separator_length_norm", m.separator_length_norm);
+  o.number("mean_separator_per_subdomain", m.mean_separator_per_subdomain);
+  o.number("max_sep_len_over_area_norm", m.max_separator_over_area_norm);
+  o.number("max_area_over_mean", m.max_area_over_mean);
+  o.number("min_area_over_mean", m.min_area_over_mean);
+  o.number("max_weight_over_mean", m.max_weight_over_mean);
+  o.number("min_weight_over_mean", m.min_weight_over_mean);
+  o.number("shortest_new_segment_norm", m.shortest_new_segment_norm);
+  o.key("times");
+  out += "{";
+  for (std::size_t i = 0; i < m.times.size(); ++i) {
+    out += i == 0 ? "" : ", ";
+    append_string(out, m.times[i].name);
+    out += ": ";
+    detail::append_shortest(out, m.times[i].seconds);
+  }
+  out += "}";
+  o.close();
+  return out;
+}
+
+} // namespace madd

@@ -1,0 +1,282 @@
+// validate() and domain_area(): the semantic checks of FORMATS.md, "Bad input".
+// Checks run from the most local to the most global, so that each error names
+// the real cause: vertices, then segments, then intersections (exact, on a
+// grid), then the regions left after flooding from the outside and the holes.
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "pslg/validate_detail.hpp"
+#include "madd/error.hpp"
+
+namespace madd {
+namespace {
+
+using detail::Contact;
+
+std::string number(double v) {
+  char buf[40];
+  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  (void)ec;
+  return std::string(buf, ptr);
+}
+std::string at(Point p) {
+  std::string s(1, '(');
+  s += number(p.x);
+  s += ", ";
+  s += number(p.y);
+  s += ')';
+  return s;
+}
+
+// Builds every InvalidInputError: ids in the file's base, line from the SourceMap.
+class Reporter {
+public:
+  Reporter(const Pslg& p, const SourceMap& s) : p_(p), s_(s) {}
+  std::int64_t id(std::size_t index) const { return static_cast<std::int64_t>(index) + p_.first_index; }
+  std::string vertex(std::uint32_t v) const { return "vertex " + std::to_string(id(v)) + " " + at(p_.points[v]); }
+  std::string segment(std::uint32_t s) const {
+    return "segment " + std::to_string(id(s)) + " (vertices " + std::to_string(id(p_.segments[s].a)) + "-" +
+           std::to_string(id(p_.segments[s].b)) + ")";
+  }
+  std::string hole(std::uint32_t h) const { return "hole " + std::to_string(id(h)) + " " + at(p_.holes[h]); }
+
+  enum class Item { point, segment, hole };
+  [[noreturn]] void fail(InputProblem problem, const std::string& message, std::vector<std::int64_t> ids,
+                         std::vector<Point> points, Item item, std::uint32_t index) const {
+    const std::vector<std::uint32_t>& lines =
+        item == Item::point ? s_.point_lines : item == Item::segment ? s_.segment_lines : s_.hole_lines;
+    const std::string& path = item == Item::point && !s_.point_path.empty() ? s_.point_path : s_.path;
+    const std::size_t line = index < lines.size() ? lines[index] : 0;
+    throw InvalidInputError(problem, message, std::move(ids), std::move(points), path, line, line ? 1 : 0);
+  }
+
+private:
+  const Pslg& p_;
+  const SourceMap& s_;
+};
+using Item = Reporter::Item;
+
+// The exact predicates are exact only without overflow or underflow in their
+// products (predicates.hpp: nonzero magnitudes within about [1e-60, 1e76] for
+// incircle). Coordinates that are 0 or within [1e-40, 1e70] keep every value and
+// every difference of two values inside that range, with margin for the
+// constructions (midpoints, circumcentres) made from them later.
+constexpr double min_magnitude = 1e-40;
+constexpr double max_magnitude = 1e70;
+bool supported(double v) noexcept {
+  const double m = std::abs(v);
+  return m == 0.0 || (m >= min_magnitude && m <= max_magnitude);
+}
+bool supported(Point q) noexcept { return supported(q.x) && supported(q.y); }
+const char* const range_note =
+    " is outside the supported range: every coordinate must be 0 or of magnitude within [1e-40, 1e70]";
+
+void check_values(const Pslg& p, const Reporter& r, const ValidateOptions& options) {
+  for (std::uint32_t v = 0; v < p.points.size(); ++v)
+    if (!supported(p.points[v]))
+      r.fail(InputProblem::other, r.vertex(v) + range_note, {r.id(v)}, {p.points[v]}, Item::point, v);
+  for (std::uint32_t h = 0; h < p.holes.size(); ++h)
+    if (!supported(p.holes[h]))
+      r.fail(InputProblem::other, r.hole(h) + range_note, {r.id(h)}, {p.holes[h]}, Item::hole, h);
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s)
+    if (p.segments[s].a >= p.points.size() || p.segments[s].b >= p.points.size())
+      r.fail(InputProblem::other, "segment " + std::to_string(r.id(s)) + " refers to a missing vertex", {r.id(s)},
+             {}, Item::segment, s);
+  if (!options.check_weights || p.attributes_per_point == 0) return;
+  for (std::uint32_t v = 0; v < p.points.size(); ++v) {
+    const double w = p.attribute(v, 0);
+    if (!std::isfinite(w) || w < 0.0)
+      r.fail(InputProblem::bad_weight, r.vertex(v) + " has boundary weight " + number(w) +
+                                           "; weights must be finite and >= 0 when grading by weight",
+             {r.id(v)}, {p.points[v]}, Item::point, v);
+  }
+}
+
+std::uint64_t mix(std::uint64_t x) noexcept {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+std::uint64_t bits(double v) noexcept {
+  v += 0.0; // -0.0 becomes +0.0: they are the same point
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// Open-addressing hash on exact coordinates: O(n), and the reported pair is
+// the first vertex (in file order) that repeats an earlier one.
+void check_duplicates(const Pslg& p, const Reporter& r) {
+  std::size_t size = 16;
+  while (size < 2 * p.points.size()) size *= 2;
+  std::vector<std::uint32_t> table(size, no_index);
+  for (std::uint32_t v = 0; v < p.points.size(); ++v) {
+    const Point q = p.points[v];
+    std::size_t slot = mix(bits(q.x) ^ mix(bits(q.y))) & (size - 1);
+    while (table[slot] != no_index) {
+      const Point o = p.points[table[slot]];
+      if (o.x == q.x && o.y == q.y)
+        r.fail(InputProblem::duplicate_vertex,
+               "vertex " + std::to_string(r.id(v)) + " repeats the coordinates of " + r.vertex(table[slot]),
+               {r.id(v), r.id(table[slot])}, {q}, Item::point, v);
+      slot = (slot + 1) & (size - 1);
+    }
+    table[slot] = v;
+  }
+}
+
+std::vector<std::uint32_t> check_segments_and_degrees(const Pslg& p, const Reporter& r) {
+  std::vector<std::uint32_t> degree(p.points.size(), 0);
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
+    const Segment& seg = p.segments[s];
+    if (seg.a == seg.b)
+      r.fail(InputProblem::zero_length_segment, r.segment(s) + " has zero length", {r.id(s)}, {p.points[seg.a]},
+             Item::segment, s);
+    ++degree[seg.a];
+    ++degree[seg.b];
+  }
+  for (std::uint32_t v = 0; v < p.points.size(); ++v)
+    if (degree[v] == 0)
+      r.fail(InputProblem::isolated_vertex,
+             r.vertex(v) + " is on no segment; isolated vertices are not supported (FORMATS.md)", {r.id(v)},
+             {p.points[v]}, Item::point, v);
+  return degree;
+}
+
+void check_intersections(const Pslg& p, const detail::SegmentGrid& grid, const Reporter& r) {
+  const auto conflict = detail::find_segment_conflict(p, grid);
+  if (!conflict) return;
+  const char* verb = conflict->contact.kind == Contact::cross   ? " crosses "
+                     : conflict->contact.kind == Contact::touch ? " touches "
+                                                                : " overlaps ";
+  r.fail(InputProblem::segments_intersect,
+         r.segment(conflict->later) + verb + r.segment(conflict->earlier) + " at " + at(conflict->contact.at),
+         {r.id(conflict->later), r.id(conflict->earlier)}, {conflict->contact.at}, Item::segment, conflict->later);
+}
+
+void check_holes_on_segments(const Pslg& p, const detail::SegmentGrid& grid, const Reporter& r) {
+  for (std::uint32_t h = 0; h < p.holes.size(); ++h) {
+    if (const auto s = detail::segment_under(p, grid, p.holes[h]))
+      r.fail(InputProblem::hole_on_segment, r.hole(h) + " lies on " + r.segment(*s), {r.id(h), r.id(*s)},
+             {p.holes[h]}, Item::hole, h);
+  }
+}
+
+// With exactly one kept face `domain`, every segment must have it on exactly one side.
+void check_bounds_domain(const Pslg& p, const detail::FaceMap& fm, std::uint32_t domain,
+                         const std::vector<std::uint32_t>& hole_of_face, const Reporter& r) {
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
+    const std::uint32_t f = fm.face_of_half_edge(2 * s), g = fm.face_of_half_edge(2 * s + 1);
+    if (f == domain && g == domain)
+      r.fail(InputProblem::interior_segment, r.segment(s) + " has the domain on both sides", {r.id(s)},
+             {p.points[p.segments[s].a]}, Item::segment, s);
+    if (f == domain || g == domain) continue;
+    const std::uint32_t other = f == no_index ? g : f;
+    if ((f == no_index || g == no_index) && other != no_index && hole_of_face[other] != no_index) {
+      const std::uint32_t h = hole_of_face[other];
+      r.fail(InputProblem::hole_outside_domain,
+             r.hole(h) + " lies outside the domain, in the region bounded by " + r.segment(s),
+             {r.id(h), r.id(s)}, {p.holes[h]}, Item::hole, h);
+    }
+    r.fail(InputProblem::interior_segment,
+           r.segment(s) + " does not bound the domain: the regions on both sides of it are removed",
+           {r.id(s)}, {p.points[p.segments[s].a]}, Item::segment, s);
+  }
+}
+
+// The domain is what Triangle keeps after flooding from the outside and from
+// every hole point: it must be exactly one face of the segment graph, and
+// every segment must have it on exactly one side (FORMATS.md, "The domain").
+void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<std::uint32_t>& degree,
+                   const Reporter& r) {
+  std::vector<std::uint32_t> hole_of_face(fm.ring_count(), no_index);
+  for (std::uint32_t h = 0; h < p.holes.size(); ++h) {
+    const std::uint32_t f = fm.hole_face[h];
+    if (f == no_index)
+      r.fail(InputProblem::hole_outside_domain, r.hole(h) + " lies outside every boundary", {r.id(h)},
+             {p.holes[h]}, Item::hole, h);
+    if (hole_of_face[f] == no_index) hole_of_face[f] = h;
+  }
+  const std::vector<bool> kept = detail::kept_faces(fm);
+  const auto sides = [&](std::uint32_t s) {
+    return std::pair{fm.face_of_half_edge(2 * s), fm.face_of_half_edge(2 * s + 1)};
+  };
+  const auto is_kept = [&](std::uint32_t f) { return f != no_index && kept[f]; };
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
+    const auto [f, g] = sides(s);
+    if (f != g && is_kept(f) && is_kept(g))
+      r.fail(InputProblem::interior_segment,
+             r.segment(s) + " has the domain on both sides; interior segments (as in Triangle's face.poly) "
+                            "are not supported",
+             {r.id(s)}, {p.points[p.segments[s].a], p.points[p.segments[s].b]}, Item::segment, s);
+  }
+  for (std::uint32_t v = 0; v < p.points.size(); ++v)
+    if (degree[v] % 2 != 0)
+      r.fail(InputProblem::open_boundary,
+             r.vertex(v) + " is an endpoint of " + std::to_string(degree[v]) +
+                 " segment(s), an odd number: the boundary is not closed there",
+             {r.id(v)}, {p.points[v]}, Item::point, v);
+  std::vector<std::uint32_t> parts; // first segment bounding each kept face
+  std::vector<bool> seen(fm.ring_count(), false);
+  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
+    for (std::uint32_t f : {sides(s).first, sides(s).second}) {
+      if (is_kept(f) && !seen[f]) {
+        seen[f] = true;
+        parts.push_back(s);
+      }
+    }
+  }
+  if (parts.empty()) {
+    std::uint32_t h = 0;
+    while (h + 1 < p.holes.size() && hole_of_face[fm.hole_face[h]] != h) ++h;
+    r.fail(InputProblem::empty_domain,
+           "the hole points remove every region bounded by the segments; " + r.hole(h) + " removes one of them",
+           {r.id(h)}, {p.holes[h]}, Item::hole, h);
+  }
+  if (parts.size() > 1)
+    r.fail(InputProblem::disconnected_domain,
+           "the domain has " + std::to_string(parts.size()) + " disconnected parts: " + r.segment(parts[1]) +
+               " bounds one, " + r.segment(parts[0]) + " another",
+           {r.id(parts[1]), r.id(parts[0])}, {p.points[p.segments[parts[1]].a], p.points[p.segments[parts[0]].a]},
+           Item::segment, parts[1]);
+  const std::uint32_t domain = is_kept(sides(parts[0]).first) ? sides(parts[0]).first : sides(parts[0]).second;
+  check_bounds_domain(p, fm, domain, hole_of_face, r);
+}
+
+} // namespace
+
+void validate(const Pslg& pslg, const SourceMap& source, const ValidateOptions& options) {
+  const Reporter r(pslg, source);
+  check_values(pslg, r, options);
+  if (pslg.segments.empty() && pslg.holes.empty() && options.allow_point_set) {
+    check_duplicates(pslg, r);
+    return;
+  }
+  if (pslg.segments.empty())
+    throw InvalidInputError(InputProblem::empty_domain, "there are no segments, so there is no domain", {}, {},
+                            source.path, 0, 0);
+  check_duplicates(pslg, r);
+  const std::vector<std::uint32_t> degree = check_segments_and_degrees(pslg, r);
+  const detail::SegmentGrid grid(pslg.points, pslg.segments);
+  check_intersections(pslg, grid, r);
+  check_holes_on_segments(pslg, grid, r);
+  check_regions(pslg, detail::build_face_map(pslg, grid), degree, r);
+}
+
+double domain_area(const Pslg& pslg) {
+  if (pslg.segments.empty()) return 0.0;
+  const detail::SegmentGrid grid(pslg.points, pslg.segments);
+  const detail::FaceMap fm = detail::build_face_map(pslg, grid);
+  const std::vector<bool> kept = detail::kept_faces(fm);
+  double area = 0.0;
+  for (std::uint32_t ring = 0; ring < fm.ring_count(); ++ring) {
+    const std::uint32_t face = fm.face_of_ring[ring];
+    if (face != no_index && kept[face]) area += fm.ring_area[ring];
+  }
+  return area;
+}
+
+} // namespace madd

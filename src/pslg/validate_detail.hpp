@@ -1,0 +1,54 @@
+#pragma once
+// Internal pieces of validate(): the exact segment-pair test, the grid-driven
+// search for conflicting pairs, and the face structure of the segment graph.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "madd/pslg.hpp"
+#include "kernel/segment_grid.hpp"
+
+namespace madd::detail {
+
+enum class Contact : std::uint8_t { none, cross, touch, overlap };
+
+// How segments s and t meet, decided exactly with orient2d. Sharing an
+// endpoint index without being collinear in the same direction is `none`.
+// `at` is a point they share (approximate only for a proper crossing).
+// Precondition: no two distinct point indices have equal coordinates.
+struct ContactResult {
+  Contact kind = Contact::none;
+  Point at;
+};
+ContactResult classify_contact(const std::vector<Point>& pts, const Segment& s, const Segment& t);
+
+// The conflicting pair (first by the later segment's index, then the earlier)
+// among all segments, or nothing. Sub-quadratic through the grid.
+struct SegmentConflict {
+  std::uint32_t later = 0;
+  std::uint32_t earlier = 0;
+  ContactResult contact;
+};
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid);
+
+// First segment (by index) that a point lies on, endpoints included.
+std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p);
+
+// The faces of the planar graph of segments. Precondition: no crossings,
+// overlaps, duplicate points or zero-length segments. Half-edge 2s runs a->b
+// of segment s, 2s+1 runs b->a; each ring is the boundary walk of the face on
+// its left. A face is named by its outer ring, or `no_index` (the unbounded face).
+struct FaceMap {
+  std::vector<std::uint32_t> ring_of;       // per half-edge
+  std::vector<double> ring_area;            // signed, per ring
+  std::vector<std::uint32_t> face_of_ring;  // per ring
+  std::vector<std::uint32_t> hole_face;     // per hole point
+  std::uint32_t face_of_half_edge(std::uint32_t h) const { return face_of_ring[ring_of[h]]; }
+  std::uint32_t ring_count() const { return static_cast<std::uint32_t>(ring_area.size()); }
+};
+FaceMap build_face_map(const Pslg& pslg, const SegmentGrid& grid);
+
+// Per ring (= per bounded face): true when no hole point lies in the face.
+std::vector<bool> kept_faces(const FaceMap& faces);
+
+} // namespace madd::detail

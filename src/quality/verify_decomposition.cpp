@@ -1,0 +1,226 @@
+// verify_decomposition(): recomputes every validity invariant of QUALITY.md
+// from the decomposition and the input domain, trusting neither.
+#include <algorithm>
+#include <cmath>
+
+#include "madd/metrics.hpp"
+#include "quality/metrics_detail.hpp"
+#include "quality/verify_decomposition_detail.hpp"
+
+namespace madd {
+
+namespace {
+
+using detail::ProblemLog;
+using detail::point_text;
+
+std::string sub_name(std::size_t s) { return "subdomain " + std::to_string(s); }
+
+// Index ranges and sizes; everything after relies on these.
+bool check_structure(const Decomposition& d, const Pslg& domain, ProblemLog& log) {
+  const std::size_t before = log.count();
+  const auto np = d.points.size();
+  if (d.segment_origin.size() != d.segments.size()) log.add("segment_origin and segments differ in size");
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    const Segment& g = d.segments[s];
+    if (g.a >= np || g.b >= np || g.a == g.b) log.add("segment " + std::to_string(s) + " has bad endpoints");
+    if (s < d.segment_origin.size() && d.segment_origin[s] != no_index && d.segment_origin[s] >= domain.segments.size())
+      log.add("segment " + std::to_string(s) + " comes from a nonexistent input segment");
+  }
+  if (np < domain.points.size() || !std::equal(domain.points.begin(), domain.points.end(), d.points.begin()))
+    log.add("the input points are not the first points, with the same indices");
+  if (d.holes != domain.holes) log.add("the hole points differ from the input's");
+  for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+    const Subdomain& sub = d.subdomains[s];
+    if (sub.rings.empty() || sub.ring_segments.size() != sub.rings.size()) {
+      log.add(sub_name(s) + " has no rings, or rings and ring_segments differ in count");
+      continue;
+    }
+    if (sub.hole_points.size() + 1 != sub.rings.size())
+      log.add(sub_name(s) + " has " + std::to_string(sub.rings.size() - 1) + " hole rings but " +
+              std::to_string(sub.hole_points.size()) + " hole points");
+    for (std::size_t r = 0; r < sub.rings.size(); ++r) {
+      const auto& ring = sub.rings[r];
+      const auto& segs = sub.ring_segments[r];
+      const bool ok = ring.size() >= 3 && segs.size() == ring.size() &&
+                      std::all_of(ring.begin(), ring.end(), [&](std::uint32_t p) { return p < np; }) &&
+                      std::all_of(segs.begin(), segs.end(), [&](std::uint32_t g) { return g < d.segments.size(); });
+      if (!ok) log.add(sub_name(s) + " ring " + std::to_string(r) + " is malformed (size or index out of range)");
+    }
+  }
+  return log.count() == before;
+}
+
+struct Use {
+  std::uint32_t subdomain;
+  bool forward;  // walked from segment.a to segment.b
+};
+
+// Rings closed and consistent with their segments; one CCW outer ring with CW
+// holes inside it ("connected"); areas as claimed. Returns the uses of each segment.
+std::vector<std::vector<Use>> check_rings(const Decomposition& d, double domain_area, ProblemLog& log) {
+  std::vector<std::vector<Use>> uses(d.segments.size());
+  for (std::uint32_t s = 0; s < d.subdomains.size(); ++s) {
+    const Subdomain& sub = d.subdomains[s];
+    double area = 0.0;
+    for (std::size_t r = 0; r < sub.rings.size(); ++r) {
+      const auto& ring = sub.rings[r];
+      const std::size_t n = ring.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const Segment& g = d.segments[sub.ring_segments[r][k]];
+        const std::uint32_t p = ring[k], q = ring[(k + 1) % n];
+        if (!((g.a == p && g.b == q) || (g.a == q && g.b == p))) {
+          log.add(sub_name(s) + " ring " + std::to_string(r) + " position " + std::to_string(k) +
+                  ": segment " + std::to_string(sub.ring_segments[r][k]) + " does not join its ring vertices");
+          continue;
+        }
+        uses[sub.ring_segments[r][k]].push_back({s, g.a == p});
+      }
+      const double ring_area = detail::ring_signed_area(d.points, ring);
+      area += ring_area;
+      if (r == 0 && !(ring_area > 0.0)) log.add(sub_name(s) + " outer ring is not counter-clockwise");
+      if (r > 0 && !(ring_area < 0.0)) log.add(sub_name(s) + " hole ring " + std::to_string(r) + " is not clockwise");
+      if (r > 0) {
+        const Point probe = midpoint(d.points[ring[0]], d.points[ring[1]]);
+        if (detail::locate_in_ring(d.points, sub.rings[0], probe) < 0)
+          log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies outside its outer ring (not one connected polygon)");
+        // A hole inside another hole would be a second, separate piece. Quadratic
+        // in the hole count, so only checked where that stays cheap.
+        for (std::size_t q = 1; q < sub.rings.size() && sub.rings.size() <= 1000; ++q)
+          if (q != r && detail::locate_in_ring(d.points, sub.rings[q], probe) > 0)
+            log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies inside hole ring " + std::to_string(q) +
+                    " (not one connected polygon)");
+      }
+    }
+    if (!(std::abs(area - sub.area) <= 1e-9 * std::max(domain_area, std::abs(area))))
+      log.add(sub_name(s) + " claims area " + detail::number_text(sub.area) + " but its rings enclose " + detail::number_text(area));
+  }
+  return uses;
+}
+
+// Conforming: a separator in exactly two rings of different subdomains in
+// opposite directions, a boundary piece in exactly one.
+void check_uses(const Decomposition& d, const std::vector<std::vector<Use>>& uses, ProblemLog& log) {
+  for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
+    const auto& u = uses[g];
+    const std::string name = "segment " + std::to_string(g) + " " + point_text(d.points[d.segments[g].a]) + "-" +
+                             point_text(d.points[d.segments[g].b]);
+    if (d.is_separator(g)) {
+      if (u.size() != 2)
+        log.add("separator " + name + " is in " + std::to_string(u.size()) + " subdomain rings instead of 2");
+      else if (u[0].forward == u[1].forward || u[0].subdomain == u[1].subdomain)
+        log.add("separator " + name + " is not walked in opposite directions by two different subdomains");
+    } else if (u.size() != 1) {
+      log.add("boundary piece " + name + " is in " + std::to_string(u.size()) + " subdomain rings instead of 1");
+    }
+  }
+}
+
+// The boundary pieces of each input segment lie on it and add up to it; markers.
+// A vertex a separator put on an input segment was computed in floating point
+// and is generally not exactly on it, so "on" means within 1e-9 sqrt(domain
+// area), the tolerance of QUALITY.md (and of ddcheck.py).
+void check_boundary_pieces(const Decomposition& d, const Pslg& domain, double domain_area, ProblemLog& log) {
+  const double tolerance = 1e-9 * std::sqrt(domain_area);
+  std::vector<double> covered(domain.segments.size(), 0.0);
+  for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
+    const Segment& piece = d.segments[g];
+    const std::uint32_t origin = d.segment_origin[g];
+    if (origin == no_index) {
+      if (piece.marker != 0) log.add("separator segment " + std::to_string(g) + " has marker " + std::to_string(piece.marker));
+      continue;
+    }
+    const Segment& whole = domain.segments[origin];
+    const Point a = domain.points[whole.a], b = domain.points[whole.b];
+    const double len = distance(a, b);
+    for (const Point p : {d.points[piece.a], d.points[piece.b]}) {
+      const double t = dot(p - a, b - a) / (len * len);
+      const double off = std::abs(cross(b - a, p - a)) / len;
+      if (!(off <= tolerance && t * len >= -tolerance && (t - 1.0) * len <= tolerance))
+        log.add("boundary piece " + std::to_string(g) + " leaves input segment " + std::to_string(origin) + " at " +
+                point_text(p) + " (off by " + detail::number_text(off) + ")");
+    }
+    covered[origin] += distance(d.points[piece.a], d.points[piece.b]);
+    const int want = domain.has_segment_markers && whole.marker != 0 ? whole.marker : 1;
+    if (piece.marker != want)
+      log.add("boundary piece " + std::to_string(g) + " has marker " + std::to_string(piece.marker) + ", expected " + std::to_string(want));
+  }
+  for (std::uint32_t i = 0; i < domain.segments.size(); ++i) {
+    const double len = distance(domain.points[domain.segments[i].a], domain.points[domain.segments[i].b]);
+    if (!(std::abs(covered[i] - len) <= 1e-9 * len))
+      log.add("input segment " + std::to_string(i) + " is covered by pieces of total length " + detail::number_text(covered[i]) +
+              " instead of " + detail::number_text(len));
+  }
+}
+
+void check_points(const Decomposition& d, ProblemLog& log) {
+  std::vector<std::uint8_t> used(d.points.size(), 0);
+  for (const Segment& g : d.segments) used[g.a] = used[g.b] = 1;
+  for (std::size_t p = 0; p < d.points.size(); ++p)
+    if (used[p] == 0) log.add("point " + std::to_string(p) + " " + point_text(d.points[p]) + " is on no segment");
+  std::vector<std::uint32_t> order(d.points.size());
+  for (std::uint32_t p = 0; p < order.size(); ++p) order[p] = p;
+  const auto less = [&](std::uint32_t i, std::uint32_t j) {
+    return d.points[i].x < d.points[j].x || (d.points[i].x == d.points[j].x && d.points[i].y < d.points[j].y);
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (d.points[order[k]] == d.points[order[k - 1]])
+      log.add("points " + std::to_string(order[k - 1]) + " and " + std::to_string(order[k]) + " coincide at " +
+              point_text(d.points[order[k]]));
+}
+
+// interior_point strictly inside the subdomain; each hole point strictly inside its hole ring.
+void check_inner_points(const Decomposition& d, ProblemLog& log) {
+  for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+    const Subdomain& sub = d.subdomains[s];
+    bool inside = detail::locate_in_ring(d.points, sub.rings[0], sub.interior_point) > 0;
+    for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
+      inside = detail::locate_in_ring(d.points, sub.rings[r], sub.interior_point) < 0;
+    if (!inside) log.add(sub_name(s) + " interior point " + point_text(sub.interior_point) + " is not strictly inside it");
+    for (std::size_t h = 0; h < sub.hole_points.size() && h + 1 < sub.rings.size(); ++h)
+      if (detail::locate_in_ring(d.points, sub.rings[h + 1], sub.hole_points[h]) <= 0)
+        log.add(sub_name(s) + " hole point " + point_text(sub.hole_points[h]) + " is not strictly inside hole ring " +
+                std::to_string(h + 1));
+  }
+}
+
+void check_angles(const Decomposition& d, ProblemLog& log) {
+  const double bound = d.min_angle_deg - 1e-9;
+  detail::for_each_new_angle(d, [&](std::uint32_t s, std::uint32_t r, std::uint32_t k, double angle) {
+    if (angle < bound)
+      log.add(sub_name(s) + " has a new angle of " + detail::number_text(angle) + " deg < " + detail::number_text(d.min_angle_deg) +
+              " at " + point_text(d.points[d.subdomains[s].rings[r][k]]));
+  });
+}
+
+} // namespace
+
+Verification verify_decomposition(const Decomposition& d, const Pslg& domain, std::uint32_t expected_count) {
+  Verification result;
+  ProblemLog log(result);
+  if (d.subdomains.size() != expected_count)
+    log.add("expected " + std::to_string(expected_count) + " subdomains, found " + std::to_string(d.subdomains.size()));
+  if (!check_structure(d, domain, log)) {
+    log.finish();
+    return result;
+  }
+  const double area = domain_area(domain);
+  const auto uses = check_rings(d, area, log);
+  check_uses(d, uses, log);
+  check_boundary_pieces(d, domain, area, log);
+  check_points(d, log);
+  detail::check_segments_disjoint(d.points, d.segments, log);
+  check_inner_points(d, log);
+  check_angles(d, log);
+  double total = 0.0;
+  for (const Subdomain& sub : d.subdomains)
+    for (const auto& ring : sub.rings) total += detail::ring_signed_area(d.points, ring);
+  if (!(std::abs(total - area) <= 1e-9 * area))
+    log.add("the subdomains' areas add up to " + detail::number_text(total) + " but the domain's is " +
+            detail::number_text(area) + ": a gap or an overlap");
+  log.finish();
+  return result;
+}
+
+} // namespace madd

@@ -1,0 +1,280 @@
+// The chord fallback (split_chord.hpp): every pair of refined boundary points
+// is rated by the balance it would give, in O(1) from prefix sums of the
+// shoelace terms; only balanced pairs have their end angles measured, and
+// only the best few are checked exactly against the boundary.
+#include "split/chord.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <utility>
+#include <numbers>
+#include <vector>
+
+#include "madd/medial.hpp"
+#include "madd/predicates.hpp"
+#include "split/split.hpp"
+#include "pslg/validate_detail.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+constexpr double angle_margin_deg = 1e-9;  // as medial.cpp: the committed check never disagrees
+constexpr std::size_t max_exact_checks = 256;
+constexpr std::size_t max_ring_points = 4000;
+
+struct Ring {
+  std::vector<std::uint32_t> at;  // working points in ring order
+  std::vector<double> prefix;     // prefix[k]: twice the area swept by ring edges 0..k-1
+  Point origin;                   // shoelace terms are taken relative to it (fewer cancellations)
+};
+
+// The one ring of `fd`, in order. Empty when the face has holes or a point
+// where the ring passes twice (the chord rules below assume a simple polygon).
+Ring ring_of(const FaceDomain& fd) {
+  Ring ring;
+  const auto& pts = fd.pslg.points;
+  if (!fd.pslg.holes.empty() || pts.size() < 4) return ring;
+  for (const BoundaryLinks& l : fd.links) {
+    if (l.prev == no_index) return ring;
+  }
+  ring.origin = pts[0];
+  std::uint32_t v = 0;
+  do {
+    ring.at.push_back(v);
+    v = fd.links[v].next;
+  } while (v != 0 && ring.at.size() <= pts.size());
+  if (ring.at.size() != pts.size()) return Ring{};
+  ring.prefix.assign(ring.at.size() + 1, 0.0);
+  for (std::size_t k = 0; k < ring.at.size(); ++k) {
+    const Point a = pts[ring.at[k]] - ring.origin;
+    const Point b = pts[ring.at[(k + 1) % ring.at.size()]] - ring.origin;
+    ring.prefix[k + 1] = ring.prefix[k] + cross(a, b);
+  }
+  return ring;
+}
+
+// Area of the part bounded by the ring from position i to j and the chord back.
+double side_area(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
+  const Point pi = fd.pslg.points[ring.at[i]] - ring.origin;
+  const Point pj = fd.pslg.points[ring.at[j]] - ring.origin;
+  return 0.5 * (ring.prefix[j] - ring.prefix[i] + cross(pj, pi));
+}
+
+// Per boundary point: the directions that leave it at exactly Phi0 from the
+// ring edge to next (turned counter-clockwise) and to prev (turned
+// clockwise). A chord meets Phi0 there when it leaves between the two. An
+// inexact prefilter: the chosen chord is measured again with boundary_angle.
+struct Cone {
+  Point from, to;
+  bool empty = true;  // the wedge is narrower than 2 Phi0
+  bool reflex = false;
+};
+
+Point rotate(Point d, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * d.x - s * d.y, s * d.x + c * d.y};
+}
+
+std::vector<Cone> cones(const FaceDomain& fd, const Ring& ring, double min_angle_deg) {
+  const auto& pts = fd.pslg.points;
+  std::vector<Cone> out(ring.at.size());
+  const double phi = radians(min_angle_deg);
+  for (std::size_t k = 0; k < ring.at.size(); ++k) {
+    const std::uint32_t v = ring.at[k];
+    const Point o = pts[v], next = pts[fd.links[v].next] - o, prev = pts[fd.links[v].prev] - o;
+    double wedge = std::atan2(cross(next, prev), dot(next, prev));
+    if (wedge < 0.0) wedge += 2.0 * std::numbers::pi;
+    Cone& c = out[k];
+    c.empty = !(wedge > 2.0 * phi);
+    c.reflex = wedge - 2.0 * phi > std::numbers::pi;
+    c.from = rotate(next, phi);
+    c.to = rotate(prev, -phi);
+  }
+  return out;
+}
+
+bool inside_cone(const Cone& c, Point d) {
+  if (c.empty) return false;
+  const bool after_from = cross(c.from, d) >= 0.0, before_to = cross(d, c.to) >= 0.0;
+  return c.reflex ? (after_from || before_to) : (after_from && before_to);
+}
+
+double end_angle(const FaceDomain& fd, std::uint32_t at, std::uint32_t towards) {
+  const auto& pts = fd.pslg.points;
+  const BoundaryLinks& l = fd.links[at];
+  return boundary_angle(pts[at], pts[l.prev], pts[l.next], pts[towards]);
+}
+
+double distance_to_segment(Point x, Point a, Point b) {
+  const Point ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return distance(x, lerp(a, b, t));
+}
+
+// The chord from ring position i to j meets the boundary only at its two ends
+// (exact, validate's segment test: touching or overlapping counts).
+bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
+  const std::size_t n = ring.at.size();
+  const Segment chord{ring.at[i], ring.at[j], 0};
+  for (std::size_t k = 0; k < n; ++k) {
+    const Segment edge{ring.at[k], ring.at[(k + 1) % n], 0};
+    if (classify_contact(fd.pslg.points, chord, edge).kind != Contact::none) return false;
+  }
+  return true;
+}
+
+// A point strictly inside the polygon of ring positions i..j (cyclic).
+Point triangulated_interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
+  const std::size_t n = ring.at.size();
+  Pslg side;
+  side.first_index = 0;
+  for (std::size_t k = i;; k = (k + 1) % n) {
+    side.points.push_back(fd.pslg.points[ring.at[k]]);
+    if (k == j) break;
+  }
+  const auto m = static_cast<std::uint32_t>(side.points.size());
+  for (std::uint32_t k = 0; k < m; ++k) side.segments.push_back({k, (k + 1) % m, 1});
+  return largest_triangle_centroid(side);
+}
+
+// A point strictly inside side 0 (left of chord q -> p) or side 1: the chord's
+// midpoint moved off it by a quarter of its distance to the boundary, so that
+// no boundary lies between them. The side is checked exactly, and the move
+// for rounding; otherwise a triangulation of the side decides.
+Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j, int side) {
+  const auto& pts = fd.pslg.points;
+  const Point p = pts[ring.at[i]], q = pts[ring.at[j]];
+  const Point m = midpoint(p, q);
+  double clear = distance(p, q);
+  const std::size_t n = ring.at.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    clear = std::min(clear, distance_to_segment(m, pts[ring.at[k]], pts[ring.at[(k + 1) % n]]));
+  }
+  const Point d = q - p;
+  const Point left = (1.0 / length(d)) * Point{d.y, -d.x};  // left of q -> p
+  const Point x = m + (side == 0 ? 0.25 * clear : -0.25 * clear) * left;
+  const double o = orient2d(q, p, x);
+  if ((side == 0 && o > 0.0) || (side == 1 && o < 0.0)) {
+    if (distance(x, m) < 0.5 * clear) return x;
+  }
+  return side == 0 ? triangulated_interior_point(fd, ring, i, j) : triangulated_interior_point(fd, ring, j, i);
+}
+
+// balance_quality that also counts the lighter side: with the best sharing of
+// `plan`, the worse of mean / heaviest and lightest / mean per final subdomain.
+double two_sided_quality(std::uint32_t plan, double w0, double w1) {
+  const double mean = (w0 + w1) / plan;
+  double best = 0.0;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double a = w0 / k0, b = w1 / (plan - k0);
+    best = std::max(best, std::min(mean / std::max(a, b), std::min(a, b) / mean));
+  }
+  return best;
+}
+
+// The areas of side 0 whose two_sided_quality can exceed `min_quality`: for
+// each sharing k0 of the plan, both sides' per-subdomain areas within
+// [q, 1/q] x the mean. Sorted, merged, and a little wider than exact (a cheap
+// prefilter; the quality itself decides).
+std::vector<std::pair<double, double>> balanced_area_ranges(std::uint32_t plan, double total, double min_quality) {
+  std::vector<std::pair<double, double>> out;
+  const double q = std::max(min_quality, 1e-3) * (1.0 - 1e-9), mean = total / plan;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double k1 = plan - k0;
+    const double lo = std::max(k0 * q * mean, total - k1 * mean / q);
+    const double hi = std::min(k0 * mean / q, total - k1 * q * mean);
+    if (!(lo <= hi)) continue;
+    if (!out.empty() && lo <= out.back().second) {
+      out.back().second = std::max(out.back().second, hi);
+    } else {
+      out.emplace_back(lo, hi);
+    }
+  }
+  return out;
+}
+
+bool in_ranges(const std::vector<std::pair<double, double>>& ranges, double a) {
+  auto it = std::upper_bound(ranges.begin(), ranges.end(), a,
+                             [](double x, const std::pair<double, double>& r) { return x < r.first; });
+  return it != ranges.begin() && a <= std::prev(it)->second;
+}
+
+struct Pair {
+  std::size_t i, j;
+  double quality, length;
+  bool good;  // quality >= good_quality
+};
+
+// Good chords first, the shortest first; then the others, the best balanced first.
+bool better(const Pair& x, const Pair& y) {
+  if (x.good != y.good) return x.good;
+  const double kx = x.good ? x.length : -x.quality, ky = y.good ? y.length : -y.quality;
+  if (kx != ky) return kx < ky;
+  return x.i < y.i || (x.i == y.i && x.j < y.j);
+}
+
+// Every chord that balances better than min_quality and meets Phi0 at both
+// ends, best first.
+std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const ChordOptions& o) {
+  const std::size_t n = ring.at.size();
+  const double total = 0.5 * ring.prefix[n];
+  std::vector<Pair> out;
+  if (!(total > 0.0)) return out;
+  const std::vector<Cone> cone = cones(fd, ring, o.min_angle_deg);
+  const auto ranges = balanced_area_ranges(o.plan, total, o.min_quality);
+  const auto& pts = fd.pslg.points;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (cone[i].empty) continue;
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours along the ring
+      const double a = side_area(fd, ring, i, j);
+      if (!(a > 0.0 && a < total) || !in_ranges(ranges, a)) continue;
+      const double q = two_sided_quality(o.plan, a, total - a);
+      if (!(q > o.min_quality)) continue;
+      const std::uint32_t p = ring.at[i], r = ring.at[j];
+      if (!inside_cone(cone[i], pts[r] - pts[p]) || !inside_cone(cone[j], pts[p] - pts[r])) continue;
+      double len = distance(pts[p], pts[r]);
+      if (o.end_bonus) len *= static_cast<double>(fd.links[p].bonus) * static_cast<double>(fd.links[r].bonus);
+      out.push_back({i, j, q, len, q >= o.good_quality});
+    }
+  }
+  std::sort(out.begin(), out.end(), better);
+  return out;
+}
+
+} // namespace
+
+std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
+  const Ring ring = ring_of(fd);
+  if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
+  const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
+  const std::size_t n = ring.at.size();
+  const double min_angle = options.min_angle_deg + angle_margin_deg;
+  for (std::size_t k = 0; k < std::min(pairs.size(), max_exact_checks); ++k) {
+    const Pair& c = pairs[k];
+    const std::uint32_t p = ring.at[c.i], r = ring.at[c.j];
+    if (end_angle(fd, p, r) < min_angle || end_angle(fd, r, p) < min_angle) continue;
+    if (!chord_is_clear(fd, ring, c.i, c.j)) continue;
+    // Side 0 is bounded by the ring from i to j and the chord j -> i, on its left.
+    Chord out;
+    out.quality = c.quality;
+    SeparatorEdge e;
+    e.a = fd.refs[ring.at[c.j]];
+    e.b = fd.refs[ring.at[c.i]];
+    e.left_side = 0;
+    out.result.edges.push_back(e);
+    out.result.ring_side.assign(1, 0);
+    const double a = side_area(fd, ring, c.i, c.j);
+    out.result.weight[0] = a;
+    out.result.weight[1] = 0.5 * ring.prefix[n] - a;
+    out.result.interior[0] = interior_point(fd, ring, c.i, c.j, 0);
+    out.result.interior[1] = interior_point(fd, ring, c.i, c.j, 1);
+    return out;
+  }
+  return std::nullopt;
+}
+
+} // namespace madd::detail

@@ -1,0 +1,43 @@
+#pragma once
+// A balance fallback for one split (our extension of Sec. 4, not in the
+// paper): a single straight separator between two boundary points.
+//
+// With no interior points, the circumcentre approximation of the medial axis
+// of a near-square face has one junction near its centre, so every complete
+// separator built from its partial separators cuts off a quadrant or so: the
+// best bisection may split 0.65 / 0.35 however fine the boundary. When that
+// happens on the last levels it is the largest subdomain of the whole
+// decomposition (C3). A chord across the face, such as the one between the
+// midpoints of two opposite sides, often balances it exactly while meeting
+// the boundary at close to 90 degrees; it is taken only when it satisfies
+// every rule the partial separators do (Phi0 at both ends, inside the face).
+#include <cstdint>
+#include <optional>
+
+#include "split/refine.hpp"
+#include "subdivision/subdivision.hpp"
+
+namespace madd::detail {
+
+struct ChordOptions {
+  double min_angle_deg = 60.0;  // Phi0: both ends, both sides
+  std::uint32_t plan = 2;       // final subdomains of the face
+  // Chords are rated by a two-sided balance quality: like balance_quality
+  // (split.hpp), but the lightest final subdomain counts as well as the
+  // heaviest, so it never exceeds balance_quality for the same areas.
+  double min_quality = 0.0;     // a chord must balance better than this
+  double good_quality = 0.95;   // among chords at least this good, the shortest wins
+  bool end_bonus = true;        // Sec. 5.1 smoothing: lengths scaled by the end bonuses (existing vertices, midpoints)
+};
+
+// A chord found on face `fd` (the refined boundary of a face with a single
+// ring and no point where the ring passes twice), with the two-sided balance
+// quality it achieves, or nothing. Areas are the weights. Quadratic in the points of
+// `fd`: nothing is searched beyond a few thousand of them.
+struct Chord {
+  SplitResult result;
+  double quality = 0.0;
+};
+std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options);
+
+} // namespace madd::detail

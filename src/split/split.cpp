@@ -1,0 +1,284 @@
+// One split: Sec. 3 (refinement, medial axis), Sec. 4.1-4.3 (graphs,
+// partition, repartition), as pure geometry for Subdivision::commit.
+#include "split/split.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "madd/bisect.hpp"
+#include "madd/error.hpp"
+#include "madd/medial.hpp"
+#include "madd/triangulation.hpp"
+#include "split/refine.hpp"
+#include "split/chord.hpp"
+#include "kernel/stopwatch.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_side * r)
+// The refined boundary of one split holds at most max(min_point_cap,
+// points_per_vertex_cap x the face's vertices) points, and never more than
+// max_working_points: a needle-like face (perimeter thousands of times
+// sqrt(area)) would otherwise cost as much as a huge input in every round
+// (docs/hostile.md, "needles").
+constexpr double max_working_points = 4.0e5;
+constexpr double min_point_cap = 2.0e4;
+constexpr double points_per_vertex_cap = 32.0;
+constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
+constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
+constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
+constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split_chord.hpp)
+constexpr double chord_gain = 0.02;             // a chord must balance at least this much better
+constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
+
+bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
+  return side[g.coarse[e.left]] != side[g.coarse[e.right]];
+}
+
+} // namespace
+
+// Two cut partial separators meeting at one boundary point would pinch a side
+// there (and may form an angle below Phi0). Returns pairs of G'_D vertices to
+// keep together so that the later of the two is not cut.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
+                                                                     const std::vector<std::uint8_t>& side) {
+  std::vector<std::uint8_t> used(boundary_points, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (const MedialEdge& e : g.edges) {
+    if (!is_cut(g, side, e)) continue;
+    bool clash = false;
+    for (std::uint32_t p : {e.from, e.to}) {
+      if (p >= boundary_points) continue;
+      clash = clash || used[p];
+      used[p] = 1;
+    }
+    if (clash) out.emplace_back(g.coarse[e.left], g.coarse[e.right]);
+  }
+  return out;
+}
+
+Point largest_triangle_centroid(const Pslg& domain) {
+  const Triangulation tri = triangulate(domain);
+  double best = -1.0;
+  Point at;
+  for (const auto& t : tri.triangles) {
+    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
+    const double area = signed_area(a, b, c);
+    if (area > best) {
+      best = area;
+      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+    }
+  }
+  return at;
+}
+
+double balance_quality(std::uint32_t plan, double w0, double w1) {
+  double best = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) best = std::min(best, std::max(w0 / k0, w1 / (plan - k0)));
+  return (w0 + w1) / static_cast<double>(plan) / best;
+}
+
+namespace {
+
+struct Candidate {
+  SplitResult result;
+  double quality = -1.0;
+};
+
+EndRef end_ref(const FaceDomain& fd, const MedialGraph& g, std::uint32_t point) {
+  if (point < fd.refs.size()) return fd.refs[point];
+  return EndRef{EndRef::centre, no_index, point, g.points[point]};
+}
+
+SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDomain& fd, const Triangulation& tri,
+                        const MedialGraph& g, const std::vector<std::uint8_t>& side, const EndSmoothing* smoothing) {
+  SplitResult r;
+  std::vector<CutEnd> cut;
+  for (const MedialEdge& e : g.edges) {
+    if (is_cut(g, side, e)) cut.push_back({{e.from, e.to}, side[g.coarse[e.left]]});
+  }
+  r.ring_side.assign(sub.faces[face].rings.size(), 0);
+  std::vector<std::uint8_t> seen(r.ring_side.size(), 0);
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      if (tri.neighbours[t][i] != no_index) continue;
+      const std::uint32_t ring = fd.ring_of[tri.triangles[t][(i + 1) % 3]];
+      if (seen[ring]) continue;
+      seen[ring] = 1;
+      const std::uint32_t v = g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>(i) : 0u);
+      r.ring_side[ring] = side[g.coarse[v]];
+    }
+  }
+  // Interior points: the centroid of the largest atom of each side, strictly inside it.
+  double best[2] = {-1.0, -1.0};
+  for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
+    const int s = side[g.coarse[v]];
+    r.weight[s] += g.gd.vertex_weights[v];
+    if (g.gd.vertex_weights[v] > best[s]) {
+      best[s] = g.gd.vertex_weights[v];
+      const auto c = vertex_triangle_corners(g, tri, v);
+      r.interior[s] = Point{(c[0].x + c[1].x + c[2].x) / 3.0, (c[0].y + c[1].y + c[2].y) / 3.0};
+    }
+  }
+  if (smoothing != nullptr) smooth_ends(g, fd, *smoothing, cut, r.weight, r.interior);
+  for (const CutEnd& c : cut) r.edges.push_back({end_ref(fd, g, c.end[0]), end_ref(fd, g, c.end[1]), c.left_side});
+  return r;
+}
+
+// Bisects G'_D aiming at `target` on side 0, repartitioning with
+// keep-together constraints while cut separators pinch at a boundary point
+// (Sec. 4.3). Returns an empty side vector when no valid bisection is found.
+std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boundary_points, double target,
+                                          std::uint64_t seed, double weights[2]) {
+  BisectOptions bo;
+  bo.target_fraction = target;
+  bo.imbalance = 0.02;
+  bo.seed = seed;
+  bo.connected = true;
+  for (int attempt = 0; attempt < max_repartitions; ++attempt) {
+    Bisection b = bisect(g.contracted, bo);
+    if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return {};
+    const auto conflicts = pinch_conflicts(g, boundary_points, b.side);
+    if (conflicts.empty()) {
+      weights[0] = b.weight[0];
+      weights[1] = b.weight[1];
+      return std::move(b.side);
+    }
+    bo.keep_together.insert(bo.keep_together.end(), conflicts.begin(), conflicts.end());
+  }
+  return {};
+}
+
+// Side 0 aims at j/plan for j = floor(plan/2) first, then at nearby j when
+// that split is not balanced enough: any j works, because the plan is shared
+// between the sides after the split. Smooths the chosen separator (Sec. 5.1).
+Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, int round,
+                         const SplitOptions& options, const FaceDomain& fd, const Triangulation& tri,
+                         const MedialGraph& g) {
+  Candidate out;
+  const bool smooth = options.smoothing_iterations > 0;
+  const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
+  std::vector<std::uint8_t> best_side;
+  const std::uint32_t half = plan / 2;
+  for (std::uint32_t j = half; j >= 1 && half - j <= max_extra_targets; --j) {
+    double w[2] = {0.0, 0.0};
+    auto side = valid_bisection(g, fd.refs.size(), static_cast<double>(j) / plan, seed + j, w);
+    if (side.empty()) continue;
+    const double q = balance_quality(plan, w[0], w[1]);
+    if (q > out.quality) {
+      out.quality = q;
+      best_side = std::move(side);
+    }
+    if (out.quality >= options.good_balance) break;
+  }
+  if (best_side.empty()) return out;
+  EndSmoothing ends;
+  if (smooth) {
+    double w[2] = {0.0, 0.0};
+    for (std::uint32_t v = 0; v < g.contracted.vertex_count(); ++v) w[best_side[v]] += g.contracted.vertex_weights[v];
+    const double floor = std::max(options.imbalance, out.quality - options.smoothing_tolerance);
+    ends.iterations = options.smoothing_iterations;
+    ends.min_angle_deg = options.min_angle_deg;
+    ends.plan = plan;
+    ends.min_quality = floor;
+    double area = 0.0;
+    for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
+      const auto c = vertex_triangle_corners(g, tri, v);
+      area += std::abs(signed_area(c[0], c[1], c[2]));
+    }
+    ends.weight_per_area = area > 0.0 ? (w[0] + w[1]) / area : 1.0;
+    ends.min_length = min_separator_fraction * std::sqrt(area / plan);
+  }
+  out.result = make_result(sub, face, fd, tri, g, best_side, smooth ? &ends : nullptr);
+  out.quality = balance_quality(plan, out.result.weight[0], out.result.weight[1]);
+  return out;
+}
+
+// One refinement round at `spacing`: refine, triangulate, build G_D and G'_D,
+// choose the separator; the time of each phase is added to `times`.
+Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
+                      const SplitOptions& options, const FaceDensity& density, SplitTimes& times) {
+  Stopwatch clock;
+  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
+  times.refine += clock.lap();
+  const Triangulation tri = triangulate(fd.pslg);
+  times.triangulate += clock.lap();
+  const bool smooth = options.smoothing_iterations > 0;
+  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, smooth});
+  if (density.graded && g.contracted.vertex_count() >= 2) set_vertex_weights(g, density_weights(g, tri, fd, density));
+  times.graph += clock.lap();
+  if (g.contracted.vertex_count() < 2) return Candidate{};
+  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g);
+  times.bisect += clock.lap();
+  return out;
+}
+
+// The chord fallback (split_chord.hpp) for a face whose best split so far
+// has balance quality `best` (< 0: none found), on its boundary refined at
+// half the first spacing.
+std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan,
+                                 const SplitOptions& options, double best, SplitTimes& times) {
+  const double area = sub.face_area(face);
+  const double h =
+      std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), face_perimeter(sub, face) / max_chord_points);
+  ChordOptions co;
+  co.min_angle_deg = options.min_angle_deg;
+  co.plan = plan;
+  co.min_quality = best < 0.0 ? options.imbalance : best + chord_gain;
+  co.good_quality = options.good_balance;
+  co.end_bonus = options.smoothing_iterations > 0;
+  Stopwatch clock;
+  const FaceDomain fd = refine_face(sub, face, h);
+  times.refine += clock.lap();
+  auto chord = best_chord(fd, co);
+  times.bisect += clock.lap();
+  return chord;
+}
+
+} // namespace
+
+SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
+                          const FaceDensity& density, const ResourceGuard* limits) {
+  const double area = sub.face_area(face);
+  const double perimeter = face_perimeter(sub, face);
+  std::size_t vertices = 0;
+  for (const auto& ring : sub.faces[face].rings) vertices += ring.size();
+  const double point_cap =
+      std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
+  double spacing = std::sqrt(area) / (points_per_side * options.refine);
+  Candidate best;
+  SplitTimes times;
+  for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
+    if (limits != nullptr && round > 0) limits->check(sub.faces.size());
+    const double h = std::max(spacing, perimeter / point_cap);
+    Candidate c = try_spacing(sub, face, plan, h, round, options, density, times);
+    // Refinement that does not improve the balance will not start to: the
+    // limit is the shape (where acceptable separators exist), not the spacing.
+    const bool stalled = round > 0 && c.quality < best.quality + 0.01;
+    if (c.quality > best.quality) best = std::move(c);
+    if (stalled && best.quality >= options.imbalance) break;
+    if (best.quality >= options.good_balance) break;
+    if (h > spacing) break;  // cannot refine further
+  }
+  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
+      static_cast<double>(vertices) <= max_chord_points) {
+    if (auto chord = chord_split(sub, face, plan, options, best.quality, times)) {
+      best.result = std::move(chord->result);
+      best.quality = chord->quality;
+    }
+  }
+  if (best.quality < 0.0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "no separator with angles >= %g degrees found for subdomain %u (area %g)",
+                  options.min_angle_deg, face, area);
+    throw DecompositionError(buf, face, area, options.min_angle_deg);
+  }
+  best.result.times = times;
+  return std::move(best.result);
+}
+
+} // namespace madd::detail

@@ -1,0 +1,266 @@
+// The global subdivision: initial rings, segment splitting and the commit of
+// a split (Algorithm 3 applied to the shared structure).
+#include "subdivision/subdivision.hpp"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "madd/error.hpp"
+#include "madd/predicates.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+// Winding number of ring around p, exact (orient2d decides every crossing).
+bool inside_ring(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring, Point p) {
+  int winding = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point a = points[ring[k]];
+    const Point b = points[ring[(k + 1) % ring.size()]];
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient2d(a, b, p) > 0.0) ++winding;
+    } else if (b.y <= p.y && orient2d(a, b, p) < 0.0) {
+      --winding;
+    }
+  }
+  return winding != 0;
+}
+
+Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& half_edges,
+                 const std::vector<std::uint32_t>& ids) {
+  Cycle c;
+  for (std::uint32_t h : ids) {
+    c.vertices.push_back(half_edges[h].from);
+    c.segments.push_back(half_edges[h].segment);
+  }
+  c.area = ring_area(points, c.vertices);
+  return c;
+}
+
+} // namespace
+
+Subdivision Subdivision::from_domain(const Pslg& domain) {
+  Subdivision s;
+  s.points = domain.points;
+  const auto n = static_cast<std::uint32_t>(domain.segments.size());
+  std::vector<HalfEdge> half_edges;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Segment seg = domain.segments[i];
+    if (!domain.has_segment_markers || seg.marker == 0) seg.marker = 1;
+    s.segments.push_back(seg);
+    s.origin.push_back(i);
+    half_edges.push_back({seg.a, seg.b, i});
+    half_edges.push_back({seg.b, seg.a, i});
+  }
+  s.next_piece.assign(n, no_index);
+  s.seg_faces.assign(n, {no_index, no_index});
+  s.origin_hole.assign(n, Point{});
+  s.origin_has_hole.assign(n, 0);
+  std::vector<Cycle> cycles;
+  for (const auto& ids : walk_faces(s.points, half_edges)) cycles.push_back(make_cycle(s.points, half_edges, ids));
+  // The domain's outer ring is the largest counter-clockwise cycle; its
+  // mirror is the largest clockwise one (the unbounded face); every other
+  // clockwise cycle bounds a hole.
+  std::size_t outer = no_index, unbounded = no_index;
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (cycles[c].area > 0.0 && (outer == no_index || cycles[c].area > cycles[outer].area)) outer = c;
+    if (cycles[c].area < 0.0 && (unbounded == no_index || cycles[c].area < cycles[unbounded].area)) unbounded = c;
+  }
+  if (outer == no_index) throw DecompositionError("domain has no outer boundary");
+  Face face;
+  face.rings.push_back(cycles[outer].vertices);
+  face.ring_segments.push_back(cycles[outer].segments);
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (cycles[c].area >= 0.0 || c == unbounded) continue;
+    const Point* hole = nullptr;
+    for (const Point& h : domain.holes) {
+      if (inside_ring(s.points, cycles[c].vertices, h)) {
+        hole = &h;
+        break;
+      }
+    }
+    if (hole == nullptr) throw DecompositionError("a hole ring of the domain contains no hole point");
+    for (std::uint32_t seg : cycles[c].segments) {
+      s.origin_hole[seg] = *hole;
+      s.origin_has_hole[seg] = 1;
+    }
+    face.rings.push_back(cycles[c].vertices);
+    face.ring_segments.push_back(cycles[c].segments);
+  }
+  for (const auto& ring : face.ring_segments) {
+    for (std::uint32_t seg : ring) s.seg_faces[seg][0] = 0;
+  }
+  s.faces.push_back(std::move(face));
+  return s;
+}
+
+Point Subdivision::hole_point(std::uint32_t face, std::size_t ring) const {
+  const std::uint32_t seg = faces[face].ring_segments[ring][0];
+  const auto& sf = seg_faces[seg];
+  const std::uint32_t other = sf[0] == face ? sf[1] : sf[0];
+  if (other != no_index) return faces[other].interior;
+  const std::uint32_t o = origin[seg];
+  if (o == no_index || !origin_has_hole[o]) {
+    throw DecompositionError("hole ring without a hole point (internal error)", face);
+  }
+  return origin_hole[o];
+}
+
+double Subdivision::face_area(std::uint32_t face) const {
+  double area = 0.0;
+  for (const auto& ring : faces[face].rings) area += ring_area(points, ring);
+  return area;
+}
+
+std::uint32_t Subdivision::split_segment(std::uint32_t piece, std::uint32_t w) {
+  const Segment old = segments[piece];
+  const auto s2 = static_cast<std::uint32_t>(segments.size());
+  segments[piece].b = w;
+  segments.push_back({w, old.b, old.marker});
+  origin.push_back(origin[piece]);
+  next_piece.push_back(next_piece[piece]);
+  next_piece[piece] = s2;
+  seg_faces.push_back(seg_faces[piece]);
+  for (std::uint32_t f : seg_faces[piece]) {
+    if (f == no_index) continue;
+    Face& face = faces[f];
+    for (std::size_t r = 0; r < face.rings.size(); ++r) {
+      auto& segs = face.ring_segments[r];
+      auto it = std::find(segs.begin(), segs.end(), piece);
+      if (it == segs.end()) continue;
+      const auto k = static_cast<std::size_t>(it - segs.begin());
+      auto& ring = face.rings[r];
+      const bool forward = ring[k] == old.a;
+      ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(k + 1), w);
+      segs.insert(segs.begin() + static_cast<std::ptrdiff_t>(k + 1), forward ? s2 : piece);
+      segs[k] = forward ? piece : s2;
+      break;
+    }
+  }
+  return w;
+}
+
+std::uint32_t Subdivision::resolve(const EndRef& end) {
+  if (end.kind == EndRef::vertex) return end.id;
+  if (end.kind == EndRef::centre) {
+    points.push_back(end.p);
+    return static_cast<std::uint32_t>(points.size() - 1);
+  }
+  // The piece of the snapshot segment may have been split by earlier commits:
+  // walk the chain of pieces along the original direction.
+  for (std::uint32_t q = end.id; q != no_index; q = next_piece[q]) {
+    const Point a = points[segments[q].a];
+    const Point b = points[segments[q].b];
+    if (end.p == a) return segments[q].a;
+    if (end.p == b) return segments[q].b;
+    const double t = dot(end.p - a, b - a) / dot(b - a, b - a);
+    if (t >= 1.0) continue;
+    if (t <= 0.0) return segments[q].a;
+    points.push_back(end.p);
+    return split_segment(q, static_cast<std::uint32_t>(points.size() - 1));
+  }
+  throw DecompositionError("separator end not found on its segment (internal error)");
+}
+
+std::uint32_t Subdivision::add_separators(std::uint32_t face, const SplitResult& split) {
+  const auto new_id = static_cast<std::uint32_t>(faces.size());
+  // Ends shared by several separator edges of this split resolve once.
+  std::map<std::pair<int, std::uint32_t>, std::uint32_t> resolved;
+  auto vertex_of = [&](const EndRef& e) {
+    const std::pair<int, std::uint32_t> key{e.kind == EndRef::centre ? 1 : 0, e.local};
+    auto it = resolved.find(key);
+    if (it != resolved.end()) return it->second;
+    const std::uint32_t v = resolve(e);
+    resolved.emplace(key, v);
+    return v;
+  };
+  std::vector<Segment> seps;
+  for (const SeparatorEdge& e : split.edges) {
+    const std::uint32_t a = vertex_of(e.a);
+    const std::uint32_t b = vertex_of(e.b);
+    seps.push_back({a, b, 0});
+  }
+  const auto first = static_cast<std::uint32_t>(segments.size());
+  for (const Segment& seg : seps) {
+    segments.push_back(seg);
+    origin.push_back(no_index);
+    next_piece.push_back(no_index);
+    seg_faces.push_back({face, new_id});
+  }
+  return first;
+}
+
+std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) {
+  const auto new_id = static_cast<std::uint32_t>(faces.size());
+  const std::uint32_t first_separator = add_separators(face, split);
+  // Half-edges: the face's rings in ring direction, separators both ways.
+  // side_of: 0/1 for separators (the side on the left), 2 + ring for ring edges.
+  std::vector<HalfEdge> half_edges;
+  std::vector<std::uint32_t> side_of;
+  const Face& old = faces[face];
+  for (std::size_t r = 0; r < old.rings.size(); ++r) {
+    const auto& ring = old.rings[r];
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      half_edges.push_back({ring[k], ring[(k + 1) % ring.size()], old.ring_segments[r][k]});
+      side_of.push_back(static_cast<std::uint32_t>(2 + r));
+    }
+  }
+  for (std::uint32_t seg = first_separator; seg < segments.size(); ++seg) {
+    const std::uint8_t left = split.edges[seg - first_separator].left_side;
+    half_edges.push_back({segments[seg].a, segments[seg].b, seg});
+    side_of.push_back(left);
+    half_edges.push_back({segments[seg].b, segments[seg].a, seg});
+    side_of.push_back(1u - left);
+  }
+  std::vector<Cycle> cycles[2];
+  for (const auto& ids : walk_faces(points, half_edges)) {
+    // A cycle's side: that of any separator on it, else that of its ring.
+    std::uint32_t side = split.ring_side[side_of[ids[0]] < 2 ? 0 : side_of[ids[0]] - 2];
+    for (std::uint32_t h : ids) {
+      if (side_of[h] < 2) {
+        side = side_of[h];
+        break;
+      }
+    }
+    cycles[side].push_back(make_cycle(points, half_edges, ids));
+  }
+  Face sides[2];
+  for (int s = 0; s < 2; ++s) sides[s] = assemble_face(cycles[s], split.interior[s], face);
+  for (const auto& ring : sides[1].ring_segments) {
+    for (std::uint32_t seg : ring) {
+      if (seg >= first_separator) continue;  // new separators already name both faces
+      auto& sf = seg_faces[seg];
+      if (sf[0] == face) sf[0] = new_id;
+      else if (sf[1] == face) sf[1] = new_id;
+    }
+  }
+  faces[face] = std::move(sides[0]);
+  faces.push_back(std::move(sides[1]));
+  return new_id;
+}
+
+Face Subdivision::assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const {
+  Face out;
+  out.interior = interior;
+  int outers = 0;
+  for (Cycle& c : cycles) {
+    if (c.area > 0.0) {
+      ++outers;
+      out.rings.insert(out.rings.begin(), std::move(c.vertices));
+      out.ring_segments.insert(out.ring_segments.begin(), std::move(c.segments));
+    } else {
+      out.rings.push_back(std::move(c.vertices));
+      out.ring_segments.push_back(std::move(c.segments));
+    }
+  }
+  if (outers != 1) {
+    throw DecompositionError("split of subdomain " + std::to_string(face) +
+                                 " did not give two connected faces (internal error)",
+                             face);
+  }
+  return out;
+}
+
+} // namespace madd::detail
