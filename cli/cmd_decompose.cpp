@@ -75,7 +75,7 @@ constexpr const char* decompose_help =
 
 struct DecomposeArgs {
   std::string input;
-  Options options;
+  DecomposeOptions options;
   std::string poly_out, split_dir, subdomains_out, svg_out, report_out;
   std::string geo_out, vtk_out, geojson_out;  // madd/output_formats.hpp
   bool report = false;
@@ -295,7 +295,7 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     return {};
   case 'i':
     if (!parse_number(arg, x) || x <= 0 || x > 1) return "--imbalance needs a number in (0, 1]";
-    args.options.imbalance = x;
+    args.options.min_balance_quality = x;
     return {};
   case 'j':
     if (!parse_count(arg, 4096, k)) return "--threads needs a whole number in [0, 4096]";

@@ -1,6 +1,6 @@
 // libFuzzer target: .poly text -> parse -> validate -> decompose, then the
 // independent verifier. Only small domains (<= 200 segments) at small N, with
-// a time limit inside the library (Options::time_limit_seconds), so one input
+// a time limit inside the library (DecomposeOptions::time_limit_seconds), so one input
 // stays fast. The limit is checked between splits and refinement rounds; one
 // split refines the boundary at a spacing of sqrt(area) / 12, up to 2e4
 // working points for a small face: a needle-like domain (perimeter >>
@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The last byte chooses N in 2..8 and Phi0 in {60, 45, 30}; it stays part of
   // the text (usually a newline or a digit), so plain .poly seeds work unchanged.
   const std::uint8_t knob = data[size - 1];
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = 2u + knob % 7u;
   constexpr double angles[] = {60.0, 45.0, 30.0};
   options.min_angle_deg = angles[(knob / 7u) % 3u];

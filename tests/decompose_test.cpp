@@ -114,7 +114,7 @@ void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32
 }
 
 Decomposition run(const Pslg& domain, std::uint32_t n, double phi, unsigned threads = 1) {
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = n;
   o.min_angle_deg = phi;
   o.threads = threads;
@@ -202,7 +202,7 @@ TEST_CASE("no valid separator: a typed error naming the subdomain, never a parti
   // single junction whose spokes make 120 degrees with each other but only
   // ~60 with the boundary.
   const Pslg triangle = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2.0}}});
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 2;
   o.min_angle_deg = 89.9;
   o.max_refinement_rounds = 1;
@@ -218,7 +218,7 @@ TEST_CASE("no valid separator: a typed error naming the subdomain, never a parti
 
 TEST_CASE("phase times: every split phase and the commits are timed, and timing changes nothing") {
   const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 40;
   o.threads = 2;
   std::vector<madd::PhaseTime> phases;
@@ -237,7 +237,7 @@ TEST_CASE("phase times: every split phase and the commits are timed, and timing 
 
 TEST_CASE("bad options are rejected") {
   const Pslg square = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 0;
   CHECK_THROWS_AS(madd::decompose(square, o), madd::InvalidInputError);
   o.subdomains = 2;

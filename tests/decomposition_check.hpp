@@ -13,7 +13,7 @@
 namespace madd::test {
 
 inline Metrics checked_decomposition(const Pslg& domain, std::uint32_t n, double min_angle_deg = 60.0) {
-  Options options;
+  DecomposeOptions options;
   options.subdomains = n;
   options.min_angle_deg = min_angle_deg;
   options.threads = 1;

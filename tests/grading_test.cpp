@@ -84,7 +84,7 @@ double x_area_correlation(const Decomposition& d) {
 }
 
 // Validity and C1 for every graded run; returns the decomposition.
-Decomposition checked(const Pslg& domain, const madd::Options& o, std::uint32_t expected) {
+Decomposition checked(const Pslg& domain, const madd::DecomposeOptions& o, std::uint32_t expected) {
   const Decomposition d = madd::decompose(domain, o);
   const auto made = static_cast<std::uint32_t>(d.subdomains.size());
   const madd::Verification v = madd::verify_decomposition(d, domain, expected == 0 ? made : expected);
@@ -100,12 +100,12 @@ TEST_SUITE("grading") {
 
 TEST_CASE("weight function proportional to x: subdomains shrink as x grows") {
   const Pslg domain = rectangle(4, 1);
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 64;
   o.weight_function = [](double x, double) { return x; };
   const Decomposition d = checked(domain, o, 64);
   CHECK(x_area_correlation(d) < -0.5);
-  madd::Options uniform = o;
+  madd::DecomposeOptions uniform = o;
   uniform.weight_function = nullptr;
   CHECK(madd::metrics(checked(domain, uniform, 64)).max_area_over_mean < madd::metrics(d).max_area_over_mean);
   // The density weights (not the areas) are balanced.
@@ -114,7 +114,7 @@ TEST_CASE("weight function proportional to x: subdomains shrink as x grows") {
 
 TEST_CASE("area function: no subdomain exceeds its required area times the bound") {
   const Pslg domain = rectangle(4, 1);
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 1000;  // a maximum: the bound stops the splitting first
   o.area_function = [](double x, double) { return 0.02 + 0.03 * x; };
   o.area_ratio_bound = 1.0;
@@ -132,7 +132,7 @@ TEST_CASE("area function: no subdomain exceeds its required area times the bound
 }
 
 TEST_CASE("area function respects the maximum count") {
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 7;
   o.area_function = [](double, double) { return 1e-4; };
   const Decomposition d = checked(rectangle(4, 1), o, 7);
@@ -148,7 +148,7 @@ TEST_CASE("boundary weights concentrate subdomains near the weighted vertices") 
       weighted.push_back(domain.points[i]);
     }
   }
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 32;
   o.gradation = 3.0;
   o.interpolation = 0.5;
@@ -163,7 +163,7 @@ TEST_CASE("boundary weights concentrate subdomains near the weighted vertices") 
     return total / static_cast<double>(d.subdomains.size());
   };
   const double graded = mean_distance(checked(domain, o, 32));
-  madd::Options uniform = o;
+  madd::DecomposeOptions uniform = o;
   uniform.gradation = 0;
   const double plain = mean_distance(checked(domain, uniform, 32));
   INFO("graded " << graded << ", uniform " << plain);
@@ -173,7 +173,7 @@ TEST_CASE("boundary weights concentrate subdomains near the weighted vertices") 
 TEST_CASE("boundary weights: a subdomain weighs r * area + a * its boundary vertex weights (p = 0)") {
   Pslg domain = rectangle(4, 1, 3);
   for (std::size_t i = 0; i < domain.points.size(); ++i) domain.attributes[i] = 1.0 + domain.points[i].x;
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 12;
   o.gradation = 0.5;
   o.interpolation = 0.0;  // new separator points weigh nothing
@@ -189,7 +189,7 @@ TEST_CASE("boundary weights: a subdomain weighs r * area + a * its boundary vert
 
 TEST_CASE("background weights and areas") {
   const Pslg domain = rectangle(4, 1);
-  madd::Options o;
+  madd::DecomposeOptions o;
   for (int i = 0; i < 80; ++i) {
     for (int j = 0; j < 20; ++j) {
       const Point p{(i + 0.5) / 20.0, (j + 0.5) / 20.0};
@@ -200,7 +200,7 @@ TEST_CASE("background weights and areas") {
   const Decomposition d = checked(domain, o, 64);
   CHECK(x_area_correlation(d) < -0.5);
 
-  madd::Options a;
+  madd::DecomposeOptions a;
   a.subdomains = 1000;
   for (const auto& p : o.background_weights) a.background_areas.push_back({p.at, 0.02 + 0.03 * p.at.x});
   const Decomposition da = checked(domain, a, 0);
@@ -218,7 +218,7 @@ TEST_CASE("background weights and areas") {
 TEST_CASE("graded output is identical for 1 and 2 threads") {
   Pslg domain = rectangle(4, 1, 4);
   for (std::size_t i = 0; i < domain.points.size(); ++i) domain.attributes[i] = domain.points[i].x;
-  madd::Options variants[4];
+  madd::DecomposeOptions variants[4];
   variants[0].weight_function = [](double x, double y) { return 1 + x * y; };
   variants[1].area_function = [](double x, double) { return 0.01 + 0.02 * x; };
   variants[2].gradation = 2;

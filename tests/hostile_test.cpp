@@ -184,7 +184,7 @@ TEST_CASE("Phi0 = 89 still decomposes a triangle; Phi0 = 89.99 fails naming the 
   // degrees, so even Phi0 = 89 works on an equilateral triangle.
   const Pslg tri = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}}});
   expect_valid(tri, 4, 89.0);
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = 64;
   options.min_angle_deg = 89.99;
   options.threads = 1;
@@ -208,7 +208,7 @@ TEST_CASE("N far beyond the domain's features") {
   // makes splitting impossible (a 1 x 0.001 triangle at Phi0 = 89.9) the
   // error comes at once and nothing partial is returned.
   expect_valid(polygon({{{0, 0}, {1, 0}, {0.5, 0.05}}}), 1024);
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = 1024;
   options.min_angle_deg = 89.9;
   options.threads = 1;
@@ -222,7 +222,7 @@ TEST_CASE("resource limits throw LimitError with a clear message") {
     ring.push_back({std::cos(t), std::sin(t)});
   }
   const Pslg p = polygon({ring});
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = 64;
   options.threads = 1;
   options.time_limit_seconds = 1e-9;
@@ -242,7 +242,7 @@ TEST_CASE("resource limits throw LimitError with a clear message") {
   }
   options.max_memory_bytes = std::size_t{1} << 40;  // generous limits change nothing
   options.time_limit_seconds = 1e6;
-  madd::Options unlimited = options;
+  madd::DecomposeOptions unlimited = options;
   unlimited.max_memory_bytes = 0;
   unlimited.time_limit_seconds = 0;
   CHECK(madd::decompose(p, options) == madd::decompose(p, unlimited));

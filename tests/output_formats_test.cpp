@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 const Decomposition& key7() {
   static const Decomposition d = [] {
-    Options o;
+    DecomposeOptions o;
     o.subdomains = 7;
     return decompose(read_domain(MADD_DATA_DIR "/key.poly"), o);
   }();
@@ -44,7 +44,7 @@ const Decomposition& marked_square() {
     p.has_segment_markers = true;
     p.holes = {{2, 2}};
     validate(p);
-    Options o;
+    DecomposeOptions o;
     o.subdomains = 4;
     return decompose(p, o);
   }();

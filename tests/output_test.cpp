@@ -154,7 +154,7 @@ TEST_CASE("output 2: each subdomain file parses; shared separators are bit-ident
 
 TEST_CASE("output 2 of a real decomposition: every separator in two files, every boundary piece in one") {
   const Pslg domain = read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
-  Options options;
+  DecomposeOptions options;
   options.subdomains = 8;
   const Decomposition d = decompose(domain, options);
   REQUIRE(verify_decomposition(d, domain, 8).ok());

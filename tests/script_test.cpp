@@ -133,12 +133,12 @@ TEST_CASE("set parses every parameter, with or without blanks around '='") {
   run_script("set f=0.25\nset r = 2.5\nset a =3 p= 0.5\n set i=0.8 s=2 ratio=1.5\tn=12\n"
              "set j=2 seed=9\nset smooth=3 threads=1\n",
              "s.txt", context);
-  const Options& o = context.options;
+  const DecomposeOptions& o = context.options;
   CHECK(o.min_angle_deg == doctest::Approx(45.0));
   CHECK(o.refine == 2.5);
   CHECK(o.gradation == 3.0);
   CHECK(o.interpolation == 0.5);
-  CHECK(o.imbalance == 0.8);
+  CHECK(o.min_balance_quality == 0.8);
   CHECK(o.area_ratio_bound == 1.5);
   CHECK(o.subdomains == 12);
   CHECK(o.seed == 9);
@@ -244,7 +244,7 @@ TEST_CASE("errors of the library keep their type and gain the script line") {
   }
   SUBCASE("a decomposition error keeps its subdomain") {
     ScriptContext square = square_context();
-    square.check_options = [](const Options&) { throw DecompositionError("cannot split", 7, 2.5, 60.0); };
+    square.check_options = [](const DecomposeOptions&) { throw DecompositionError("cannot split", 7, 2.5, 60.0); };
     try {
       run_script("set n=2\ndec", "s.txt", square);
       FAIL("no error");

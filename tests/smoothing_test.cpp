@@ -12,7 +12,7 @@
 namespace {
 
 madd::test::SmoothingFigures run(const madd::Pslg& domain, std::uint32_t n, int iterations, unsigned threads = 1) {
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = n;
   o.smoothing_iterations = iterations;
   o.threads = threads;
@@ -54,7 +54,7 @@ TEST_CASE("smoothed decompositions stay valid, with C1, for several N and iterat
 
 TEST_CASE("smoothing is deterministic across thread counts") {
   const madd::Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
-  madd::Options o;
+  madd::DecomposeOptions o;
   o.subdomains = 100;
   o.smoothing_iterations = 2;
   o.threads = 1;

@@ -21,11 +21,11 @@ struct ValuedPoint {
 
 // Table III of the paper, plus the engineering knobs. Angles are in degrees
 // here (the paper's `f` is a fraction of pi: f = min_angle_deg / 180).
-struct Options {
+struct DecomposeOptions {
   std::uint32_t subdomains = 2;     // N
   double min_angle_deg = 60.0;      // Phi0, criterion C1
   double refine = 3.0;              // r: uniform refinement factor of the boundary
-  double imbalance = 0.75;          // i: acceptable imbalance during the split (0.6-0.9; see docs/)
+  double min_balance_quality = 0.75;  // i: accept a split when each side reaches this share of its target (0.6-0.9; docs/algorithm.md)
   unsigned threads = 0;             // 0 = hardware concurrency
   std::uint64_t seed = 1;
   int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split
@@ -58,6 +58,9 @@ struct Options {
   double time_limit_seconds = 0.0;
   std::size_t max_memory_bytes = 0;
 };
+
+// The name of DecomposeOptions before 0.2 (when every options struct got its stage's prefix).
+using Options [[deprecated("use madd::DecomposeOptions")]] = DecomposeOptions;
 
 // One subdomain, a face of the global subdivision. rings[0] is the outer
 // boundary (counter-clockwise), the others are holes (clockwise). Each ring is
@@ -92,7 +95,7 @@ struct Decomposition {
 // (Algorithm 4). Every new angle is >= options.min_angle_deg. Deterministic:
 // the result is identical for any thread count. Throws DecompositionError
 // naming the subdomain that could not be split; never returns a partial result.
-Decomposition decompose(const Pslg& domain, const Options& options = {});
+Decomposition decompose(const Pslg& domain, const DecomposeOptions& options = {});
 
 // Wall time of one phase of a run ("read", "refine", "verify"...).
 struct PhaseTime {
@@ -105,6 +108,6 @@ struct PhaseTime {
 // "refine", "triangulate", "graph" and "bisect" summed over every split (on
 // all threads, so with several threads they add up to more than the wall
 // time), then "insert", committing the splits to the subdivision (one thread).
-Decomposition decompose(const Pslg& domain, const Options& options, std::vector<PhaseTime>& phases);
+Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases);
 
 } // namespace madd

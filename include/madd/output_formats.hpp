@@ -8,7 +8,7 @@
 
 namespace madd {
 
-// Options of format_geo.
+// The options of format_geo.
 struct GeoOptions {
   // Target element size written at every Point. 0 (the default) writes, at
   // each point, the length of the shortest segment meeting it, so gmsh keeps

@@ -24,12 +24,12 @@ struct ScriptContext {
   std::uint32_t max_subdomains = 0;
   // Called with the options just before each `dec`; may throw an Error to
   // refuse them (a sandbox bounding refinement or threads). Empty = accept.
-  std::function<void(const Options&)> check_options;
+  std::function<void(const DecomposeOptions&)> check_options;
   // Receives one line per command that did something ("read pipe.poly: ...").
   // Empty = silent.
   std::function<void(const std::string&)> log;
 
-  Options options;                // changed by set, read_weights, setWeightFunction...
+  DecomposeOptions options;                // changed by set, read_weights, setWeightFunction...
   std::optional<Pslg> domain;     // set by `read` (or preloaded by the caller)
   std::string domain_name = "<domain>";  // the file it came from, for messages
   // The result of the last `dec`; reset by `read`. `verified` caches its

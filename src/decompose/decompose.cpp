@@ -29,7 +29,7 @@ namespace {
 
 using detail::Subdivision;
 
-unsigned thread_count(const Options& options, std::size_t tasks) {
+unsigned thread_count(const DecomposeOptions& options, std::size_t tasks) {
   unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
 }
@@ -49,7 +49,7 @@ std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
   return best;
 }
 
-Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const Options& options,
+Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const DecomposeOptions& options,
                                const detail::GradingState& grading) {
   Decomposition d;
   d.points = sub.points;
@@ -70,7 +70,7 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
   return d;
 }
 
-void check_options(const Options& options) {
+void check_options(const DecomposeOptions& options) {
   if (options.subdomains == 0) {
     throw InvalidInputError(InputProblem::other, "the number of subdomains must be at least 1");
   }
@@ -86,7 +86,7 @@ void check_options(const Options& options) {
 // whose area exceeds area_ratio_bound x its required area (the smallest
 // required area inside it; none inside: unconstrained), the largest ratios
 // first (ties: lower face id), while the total stays <= options.subdomains.
-void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const Options& options) {
+void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const DecomposeOptions& options) {
   std::vector<std::pair<double, std::uint32_t>> over;
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
     const double required = grading.required(sub, f);
@@ -99,11 +99,11 @@ void plan_area_round(Subdivision& sub, const detail::GradingState& grading, cons
   for (std::size_t k = 0; k < std::min(budget, over.size()); ++k) sub.faces[over[k].second].plan = 2;
 }
 
-detail::SplitOptions split_options_of(const Options& options) {
+detail::SplitOptions split_options_of(const DecomposeOptions& options) {
   detail::SplitOptions split_options;
   split_options.min_angle_deg = options.min_angle_deg;
   split_options.refine = options.refine;
-  split_options.imbalance = options.imbalance;
+  split_options.min_balance_quality = options.min_balance_quality;
   split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
   split_options.seed = options.seed;
   split_options.smoothing_iterations = std::max(0, options.smoothing_iterations);
@@ -112,12 +112,12 @@ detail::SplitOptions split_options_of(const Options& options) {
 
 } // namespace
 
-Decomposition decompose(const Pslg& domain, const Options& options) {
+Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
   std::vector<PhaseTime> ignored;
   return decompose(domain, options, ignored);
 }
 
-Decomposition decompose(const Pslg& domain, const Options& options, std::vector<PhaseTime>& phases) {
+Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases) {
   const detail::ResourceGuard guard(options);
   check_options(options);
   validate(domain);

@@ -7,7 +7,7 @@
 
 namespace madd::detail {
 
-GradingMode grading_mode(const Options& options) {
+GradingMode grading_mode(const DecomposeOptions& options) {
   GradingMode m;
   m.area_driven = static_cast<bool>(options.area_function) || !options.background_areas.empty();
   m.a = options.gradation;
@@ -42,7 +42,7 @@ bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p) {
   return inside;
 }
 
-FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const Options& options) {
+FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const DecomposeOptions& options) {
   Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   for (std::uint32_t v : sub.faces[face].rings[0]) {
     const Point q = sub.points[v];
@@ -70,7 +70,7 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const O
   return out;
 }
 
-FaceSamples background_samples(const Options& options, const std::vector<std::uint32_t>& weights_inside,
+FaceSamples background_samples(const DecomposeOptions& options, const std::vector<std::uint32_t>& weights_inside,
                                const std::vector<std::uint32_t>& areas_inside) {
   FaceSamples out;
   for (std::uint32_t i : weights_inside) out.weights.push_back(options.background_weights[i]);

@@ -25,7 +25,7 @@ struct GradingMode {
 
 // Case 1 is used when gradation > 0 and neither a weight function nor
 // background weights are given; a weight function wins over background weights.
-GradingMode grading_mode(const Options& options);
+GradingMode grading_mode(const DecomposeOptions& options);
 
 // Even-odd point-in-face test over all rings of `face` (a point on the boundary may go either way).
 bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p);
@@ -40,10 +40,10 @@ struct FaceSamples {
 // Case 3: a grid_cells x grid_cells structured grid over the face's bounding
 // box, points inside the face only; weight samples carry f(x,y) * cell area.
 constexpr int grid_cells = 20;
-FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const Options& options);
+FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const DecomposeOptions& options);
 
 // Case 2: the background points (indices `inside` into the options' lists) as samples.
-FaceSamples background_samples(const Options& options, const std::vector<std::uint32_t>& weights_inside,
+FaceSamples background_samples(const DecomposeOptions& options, const std::vector<std::uint32_t>& weights_inside,
                                const std::vector<std::uint32_t>& areas_inside);
 
 // Weight of a face from boundary vertex weights (case 1): the sum over its ring vertices.
@@ -70,7 +70,7 @@ void assign_new_weights(const std::vector<Point>& points, EndWeights ends, std::
 // subdivision vertices (case 1) and, per face, the background points inside it (case 2).
 class GradingState {
 public:
-  GradingState(const Options& options, const Pslg& domain);
+  GradingState(const DecomposeOptions& options, const Pslg& domain);
   const GradingMode& mode() const { return mode_; }
 
   // Density for splitting `face` (graded = false when the run is not graded).
@@ -89,7 +89,7 @@ public:
 
 private:
   FaceSamples samples(const Subdivision& sub, std::uint32_t face) const;
-  const Options& options_;
+  const DecomposeOptions& options_;
   GradingMode mode_;
   std::vector<double> point_weights_;
   EndWeights ends_;

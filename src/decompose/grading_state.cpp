@@ -5,7 +5,7 @@
 
 namespace madd::detail {
 
-GradingState::GradingState(const Options& options, const Pslg& domain)
+GradingState::GradingState(const DecomposeOptions& options, const Pslg& domain)
     : options_(options), mode_(grading_mode(options)) {
   if (mode_.weights == WeightSource::boundary) {
     point_weights_.assign(domain.points.size(), 0.0);

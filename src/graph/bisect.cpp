@@ -36,7 +36,7 @@ void check_input(const Graph& g, const BisectOptions& o) {
   }
   if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
     reject(InputProblem::other, "target fraction must lie strictly between 0 and 1");
-  if (!(std::isfinite(o.imbalance) && o.imbalance >= 0.0)) reject(InputProblem::other, "imbalance must be >= 0");
+  if (!(std::isfinite(o.imbalance_tolerance) && o.imbalance_tolerance >= 0.0)) reject(InputProblem::other, "imbalance_tolerance must be >= 0");
   for (const auto& [a, b] : o.keep_together)
     if (a >= n || b >= n) reject(InputProblem::other, "keep_together vertex out of range", {a, b});
 }
@@ -72,7 +72,7 @@ std::vector<std::uint8_t> bisect_work_graph(const Graph& g, const BisectOptions&
   std::vector<std::uint8_t> side = detail::multilevel_bisect(g, o, rng, connect);
   if (connect && !detail::sides_connected(g, side)) {  // a safety net: refine_level already repaired
     const double total = std::accumulate(g.vertex_weights.begin(), g.vertex_weights.end(), 0.0);
-    detail::repair_connectivity(g, side, detail::make_balance(total, o.target_fraction, o.imbalance));
+    detail::repair_connectivity(g, side, detail::make_balance(total, o.target_fraction, o.imbalance_tolerance));
   }
   return side;
 }

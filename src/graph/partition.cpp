@@ -37,7 +37,7 @@ Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions&
     const std::uint32_t left = task.parts / 2;
     BisectOptions bo;
     bo.target_fraction = static_cast<double>(left) / static_cast<double>(task.parts);
-    bo.imbalance = options.imbalance;
+    bo.imbalance_tolerance = options.imbalance_tolerance;
     bo.seed = options.seed + 0x9e3779b97f4a7c15ull * task_index++;
     bo.connected = options.connected;
     // The first task holds every vertex in order: bisect the graph itself

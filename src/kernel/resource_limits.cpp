@@ -23,7 +23,7 @@ std::size_t resident_bytes() noexcept {
   return static_cast<std::size_t>(resident) * static_cast<std::size_t>(page);
 }
 
-ResourceGuard::ResourceGuard(const Options& options)
+ResourceGuard::ResourceGuard(const DecomposeOptions& options)
     : start_(std::chrono::steady_clock::now()),
       time_limit_(options.time_limit_seconds),
       memory_limit_(options.max_memory_bytes),

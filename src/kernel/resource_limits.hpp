@@ -1,6 +1,6 @@
 #pragma once
-// Resource limits of one decompose() call (Options::time_limit_seconds and
-// Options::max_memory_bytes): checked between splits and between the
+// Resource limits of one decompose() call (DecomposeOptions::time_limit_seconds and
+// DecomposeOptions::max_memory_bytes): checked between splits and between the
 // refinement rounds of one split.
 #include <chrono>
 #include <cstddef>
@@ -19,7 +19,7 @@ std::size_t resident_bytes() noexcept;
 // /proc read when a memory limit is set), so it may run once per split.
 class ResourceGuard {
 public:
-  explicit ResourceGuard(const Options& options);
+  explicit ResourceGuard(const DecomposeOptions& options);
   // `done`: subdomains finished so far, for the message.
   void check(std::size_t done) const;
 

@@ -24,7 +24,7 @@ bool parse_whole(const std::string& text, unsigned long long limit, unsigned lon
 
 // Applies one parameter of Table III (plus the engineering ones); returns a
 // message on a bad name or value, empty on success.
-std::string apply_parameter(const std::string& name, const std::string& value, Options& o) {
+std::string apply_parameter(const std::string& name, const std::string& value, DecomposeOptions& o) {
   double x = 0;
   unsigned long long k = 0;
   const bool real = parse_real(value, x);
@@ -43,7 +43,7 @@ std::string apply_parameter(const std::string& name, const std::string& value, O
     o.interpolation = x;
   } else if (name == "i") {
     if (!real || x <= 0 || x > 1) return "i (the acceptable imbalance) must be in (0, 1]";
-    o.imbalance = x;
+    o.min_balance_quality = x;
   } else if (name == "s" || name == "smooth") {
     if (!parse_whole(value, 1000, k)) return name + " (smoothing iterations) must be a whole number in [0, 1000]";
     o.smoothing_iterations = static_cast<int>(k);
@@ -115,7 +115,7 @@ bool looks_like_library(const std::string& word) {
 void script_set(const ScriptCommand& c, ScriptContext& context) {
   // All assignments of the line are checked before any applies, so a bad
   // line changes nothing.
-  Options options = context.options;
+  DecomposeOptions options = context.options;
   for (const Assignment& a : split_assignments(c)) {
     const std::string problem = apply_parameter(a.name, a.value, options);
     if (problem.empty()) continue;

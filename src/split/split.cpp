@@ -136,7 +136,7 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
                                           std::uint64_t seed, double weights[2]) {
   BisectOptions bo;
   bo.target_fraction = target;
-  bo.imbalance = 0.02;
+  bo.imbalance_tolerance = 0.02;
   bo.seed = seed;
   bo.connected = true;
   for (int attempt = 0; attempt < max_repartitions; ++attempt) {
@@ -180,7 +180,7 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
   if (smooth) {
     double w[2] = {0.0, 0.0};
     for (std::uint32_t v = 0; v < g.contracted.vertex_count(); ++v) w[best_side[v]] += g.contracted.vertex_weights[v];
-    const double floor = std::max(options.imbalance, out.quality - options.smoothing_tolerance);
+    const double floor = std::max(options.min_balance_quality, out.quality - options.smoothing_tolerance);
     ends.iterations = options.smoothing_iterations;
     ends.min_angle_deg = options.min_angle_deg;
     ends.plan = plan;
@@ -228,7 +228,7 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
   ChordOptions co;
   co.min_angle_deg = options.min_angle_deg;
   co.plan = plan;
-  co.min_quality = best < 0.0 ? options.imbalance : best + chord_gain;
+  co.min_quality = best < 0.0 ? options.min_balance_quality : best + chord_gain;
   co.good_quality = options.good_balance;
   co.end_bonus = options.smoothing_iterations > 0;
   Stopwatch clock;
@@ -260,7 +260,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     // limit is the shape (where acceptable separators exist), not the spacing.
     const bool stalled = round > 0 && c.quality < best.quality + 0.01;
     if (c.quality > best.quality) best = std::move(c);
-    if (stalled && best.quality >= options.imbalance) break;
+    if (stalled && best.quality >= options.min_balance_quality) break;
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }

@@ -18,12 +18,12 @@ namespace madd::detail {
 struct SplitOptions {
   double min_angle_deg = 60.0;
   double refine = 3.0;          // r
-  double imbalance = 0.75;      // accept when each side has >= this share of its target
+  double min_balance_quality = 0.75;  // accept when each side has >= this share of its target
   double good_balance = 0.95;   // stop trying targets and refining at this balance quality
   int max_refinement_rounds = 4;
   std::uint64_t seed = 1;
   int smoothing_iterations = 1;  // Sec. 5.1: 0 turns both smoothing steps off
-  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below imbalance)
+  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below min_balance_quality)
 };
 
 // What the parts of a face weigh in a graded decomposition (Sec. 5.2). Not

@@ -30,7 +30,7 @@ std::vector<unsigned> parse_list(const char* text) {
 // One decompose() call, timed, with its figures on one line.
 void run_one(const std::string& file, const madd::Pslg& domain, unsigned n, unsigned threads, double phi,
              bool verify) {
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = n;
   options.min_angle_deg = phi;
   options.threads = threads;

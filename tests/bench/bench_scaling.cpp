@@ -68,7 +68,7 @@ double cpu_seconds() {
 }
 
 // The child: one size, one line.
-int run_case(std::size_t segments, const madd::Options& options) {
+int run_case(std::size_t segments, const madd::DecomposeOptions& options) {
   const madd::Pslg domain = star_with_holes(segments);
   const long long generated_rss = madd::bench::peak_rss_bytes();
   const double start = madd::bench::now_seconds();
@@ -89,7 +89,7 @@ int run_case(std::size_t segments, const madd::Options& options) {
 }
 
 int run(int argc, char** argv) {
-  madd::Options options;
+  madd::DecomposeOptions options;
   options.subdomains = 1024;
   std::vector<std::size_t> sizes;
   for (int i = 1; i < argc; ++i) {

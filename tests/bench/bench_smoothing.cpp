@@ -18,7 +18,7 @@ struct Sums {
 Sums measure(const madd::Pslg& domain, std::uint32_t n, int iterations, int seeds) {
   Sums s;
   for (int seed = 1; seed <= seeds; ++seed) {
-    madd::Options o;
+    madd::DecomposeOptions o;
     o.subdomains = n;
     o.smoothing_iterations = iterations;
     o.seed = static_cast<std::uint64_t>(seed);

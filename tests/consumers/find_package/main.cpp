@@ -11,7 +11,7 @@ int main() {
   square.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};  // endpoints (0-based) and marker
   try {
     madd::validate(square);  // throws madd::InvalidInputError naming the offending ids
-    madd::Options options;
+    madd::DecomposeOptions options;
     options.subdomains = 4;
     const madd::Decomposition d = madd::decompose(square, options);
     const madd::Verification check = madd::verify_decomposition(d, square, options.subdomains);
