@@ -4,13 +4,16 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "commands.hpp"
 #include "madd/decomposition.hpp"
@@ -83,6 +86,8 @@ struct DecomposeArgs {
   bool quiet = false;
   bool verbose = false;
   bool verify = true;  // --no-verify turns the self-check off
+  std::string weights_file, areas_file;  // --weights, --areas: read with the domain
+  std::map<std::string, std::string> typed;  // option field -> the value as typed, for messages
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -123,6 +128,17 @@ std::string fig(double v, const char* format = "%.2f") {
   return buffer;
 }
 
+// Split to a required area, N is a maximum: say how close the result came,
+// and, when N stopped the splitting, how many subdomains are still too large.
+void print_required_area(std::FILE* out, const DecomposeArgs& args, const Metrics& m) {
+  if (!(m.area_ratio_bound > 0.0)) return;
+  std::fprintf(out, "  required area: largest area / required area %s (bound %s)\n",
+               fig(m.max_area_over_required, "%.4g").c_str(), fig(m.area_ratio_bound, "%.4g").c_str());
+  if (m.subdomains_over_area_bound > 0)
+    std::fprintf(out, "  note: the maximum of %u subdomains was reached with %u still above the area bound "
+                 "(raise -n to split them)\n", args.options.subdomains, m.subdomains_over_area_bound);
+}
+
 void print_summary(std::FILE* out, const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
   std::fprintf(out, "%s: %zu subdomains, %zu points, %zu segments (%u separator)\n", args.input.c_str(),
                d.subdomains.size(), d.points.size(), d.segments.size(), m.separator_segments);
@@ -132,6 +148,7 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
                fig(m.separator_length_norm, "%.4g").c_str());
   std::fprintf(out, "  C3 area max/mean %s, min/mean %s\n", fig(m.max_area_over_mean, "%.4f").c_str(),
                fig(m.min_area_over_mean, "%.4f").c_str());
+  print_required_area(out, args, m);
   if (args.verbose) {
     std::fprintf(out, "  new angles %u: p10 %s, p90 %s; at boundary %u, min %s\n", m.new_angles,
                  fig(m.angle_p10, "%.4f").c_str(), fig(m.angle_p90, "%.4f").c_str(), m.boundary_angles,
@@ -178,48 +195,121 @@ void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metr
   }
 }
 
+// A background mesh (Sec. 5.2 case 2): the nodes of a .node file, value =
+// first attribute. A value a weight or a required area cannot have is bad
+// input, located at its line (as `read_areas` in a script does).
+std::vector<ValuedPoint> read_background(const std::string& path, bool areas) {
+  const PolyFile file = read_poly_file(path);
+  const Pslg& p = file.pslg;
+  const auto line_of = [&](std::size_t i) -> std::size_t {
+    return i < file.source.point_lines.size() ? file.source.point_lines[i] : 1;
+  };
+  const char* what = areas ? "required area" : "density weight";
+  if (p.attributes_per_point == 0)
+    throw ParseError(path, 1, 1, std::string("a background mesh needs one attribute per node, the ") + what);
+  std::vector<ValuedPoint> out;
+  out.reserve(p.points.size());
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    const double v = p.attribute(i, 0);
+    if (!(std::isfinite(v) && (areas ? v > 0 : v >= 0)))
+      throw ParseError(path, line_of(i), 1,
+                       std::string("node ") + std::to_string(p.first_index + i) + ": a " + what + (areas ? " must be > 0" : " must be >= 0") +
+                           " and finite, got " + fig(v, "%.17g"));
+    out.push_back({p.points[i], v});
+  }
+  return out;
+}
+
+// How the CLI spells each DecomposeOptions (and SvgOptions) field that
+// OptionError::option() names.
+struct CliName {
+  const char* field;
+  const char* flag;
+};
+constexpr CliName cli_names[] = {
+    {"subdomains", "--subdomains"},          {"min_angle_deg", "--min-angle"},
+    {"refine", "--refine"},                  {"min_balance_quality", "--imbalance"},
+    {"threads", "--threads"},                {"seed", "--seed"},
+    {"smoothing_iterations", "--smoothing"}, {"gradation", "--gradation"},
+    {"interpolation", "--interpolation"},    {"weight_function", "--weight-fn"},
+    {"area_function", "--area-fn"},          {"background_weights", "--weights"},
+    {"background_areas", "--areas"},         {"area_ratio_bound", "--area-bound"},
+    {"time_limit_seconds", "--time-limit"},  {"max_memory_bytes", "--max-memory"},
+    {"mark_angles_below_deg", "--svg-mark-angles"},
+};
+
+const char* cli_name_of(const std::string& field) {
+  for (const CliName& n : cli_names)
+    if (field == n.field) return n.flag;
+  return nullptr;
+}
+
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+// `text` with every whole-word field name replaced by its flag.
+std::string in_cli_words(const std::string& text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t j = i;
+    while (j < text.size() && is_identifier_char(text[j])) ++j;
+    if (j == i) {
+      out.push_back(text[i++]);
+      continue;
+    }
+    const std::string word = text.substr(i, j - i);
+    const char* flag = cli_name_of(word);
+    out += flag != nullptr ? flag : word;
+    i = j;
+  }
+  return out;
+}
+
+std::string cli_message(const OptionError& e) {
+  const char* flag = cli_name_of(e.option());
+  return std::string(flag != nullptr ? flag : e.option().c_str()) + " " + in_cli_words(e.requirement());
+}
+
+// Runs f(), restating an OptionError of the library (a domain-dependent
+// check, an area function's value) with the CLI's option names.
+template <class F>
+auto with_cli_option_names(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const OptionError& e) {
+    throw OptionError(e.option(), e.requirement(), cli_message(e));
+  }
+}
+
 int decompose_body(void* context) {
   const auto& args = *static_cast<DecomposeArgs*>(context);
   Progress progress(!args.quiet);
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
-  Pslg domain;
-  try {
-    // Boundary weights are only checked (finite, >= 0) when grading uses them (FORMATS.md).
-    ValidateOptions validation;
-    validation.check_weights = args.options.gradation > 0;
-    domain = read_domain(args.input, validation);
-  } catch (const ParseError&) {
-    throw;
-  } catch (const InvalidInputError&) {
-    throw;
-  } catch (const Error& e) {  // unreadable input is bad input (exit 3), not an output failure
-    progress.done();
-    std::fprintf(stderr, "madd decompose: error: %s\n", e.what());
-    return exit_bad_input;
-  }
+  DecomposeOptions options = args.options;
+  if (!args.weights_file.empty()) options.background_weights = read_background(args.weights_file, false);
+  if (!args.areas_file.empty()) options.background_areas = read_background(args.areas_file, true);
+  // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
+  ValidateOptions validation;
+  validation.check_weights = options.gradation > 0;
+  const Pslg domain = read_domain(args.input, validation);
   times.push_back({"read", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();
-  progress.say("decomposing into " + std::to_string(args.options.subdomains) + " subdomains");
-  const Decomposition d = decompose(domain, args.options, times);
+  progress.say("decomposing into " + std::to_string(options.subdomains) + " subdomains");
+  const Decomposition d = with_cli_option_names([&] { return decompose(domain, options, times); });
   times.push_back({"decompose", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();
   progress.say("verifying");
-  // With a required area (Sec. 5.2) N is a maximum: fewer subdomains is a correct result.
-  const bool area_graded = args.options.area_function || !args.options.background_areas.empty();
-  const auto made = static_cast<std::uint32_t>(d.subdomains.size());
-  const std::uint32_t expected = area_graded && made <= args.options.subdomains ? made : args.options.subdomains;
-  const Verification check = args.verify ? verify_decomposition(d, domain, expected) : Verification{};
+  const Verification check =
+      args.verify ? verify_decomposition(d, domain, expected_subdomain_count(d, options.subdomains)) : Verification{};
   times.push_back({"verify", seconds_since(start)});
   if (!check.ok()) {
-    progress.done();
-    std::fprintf(stderr, "madd decompose: internal error: the decomposition of %s failed its self-check "
-                 "(nothing written):\n", args.input.c_str());
-    for (const std::string& problem : check.problems) std::fprintf(stderr, "  %s\n", problem.c_str());
-    return exit_internal;
+    std::string problems;
+    for (const std::string& problem : check.problems) problems += "\n  " + problem;
+    throw InternalError("the decomposition of " + args.input + " failed its self-check (nothing written):" + problems);
   }
   const Metrics m = metrics(d, times);
   progress.say("writing");
@@ -250,23 +340,6 @@ enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, o
                       opt_svg_mark, opt_report, opt_geo, opt_vtk, opt_geojson, opt_time_limit, opt_max_memory, opt_no_verify,
                       opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound };
 
-// A background mesh (Sec. 5.2 case 2): the nodes of a .node file, value = first attribute.
-std::string read_values(const char* path, bool areas, std::vector<ValuedPoint>& out) {
-  try {
-    const Pslg p = read_poly_file(path).pslg;
-    if (p.attributes_per_point == 0) return std::string(path) + ": a background mesh needs one attribute per node";
-    out.clear();
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      const double v = p.attribute(i, 0);
-      if (!std::isfinite(v) || v < 0 || (areas && v == 0)) return std::string(path) + ": bad value at node " + std::to_string(i);
-      out.push_back({p.points[i], v});
-    }
-    return {};
-  } catch (const Error& e) {
-    return e.what();
-  }
-}
-
 std::string set_function(const char* text, std::function<double(double, double)>& out) {
   try {
     out = parse_expression(text, "expression").function();
@@ -276,83 +349,83 @@ std::string set_function(const char* text, std::function<double(double, double)>
   }
 }
 
-// Applies one option to args; returns an error message, or empty on success.
+// Parses one option into args; returns an error message when the value does
+// not parse, empty on success. Ranges are the library's (check_options).
 std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
   double x = 0;
   unsigned long long k = 0;
+  DecomposeOptions& o = args.options;
+  const auto number = [&](const char* field, double& target) -> std::string {
+    if (!parse_number(arg, x)) return std::string(cli_name_of(field)) + " needs a number";
+    target = x;
+    args.typed[field] = arg;
+    return {};
+  };
+  const auto count = [&](const char* field, unsigned long long limit, auto& target) -> std::string {
+    if (!parse_count(arg, limit, k)) return std::string(cli_name_of(field)) + " needs a whole number";
+    target = static_cast<std::remove_reference_t<decltype(target)>>(k);
+    args.typed[field] = arg;
+    return {};
+  };
   switch (c) {
-  case 'n':
-    if (!parse_count(arg, 0xFFFFFFFFull, k) || k == 0) return "--subdomains needs a whole number >= 1";
-    args.options.subdomains = static_cast<std::uint32_t>(k);
+  case 'n': return count("subdomains", 0xFFFFFFFFull, o.subdomains);
+  case opt_min_angle: return number("min_angle_deg", o.min_angle_deg);
+  case 'r': return number("refine", o.refine);
+  case 'i': return number("min_balance_quality", o.min_balance_quality);
+  case 'j': return count("threads", 0xFFFFFFFFull, o.threads);
+  case opt_seed: return count("seed", ~0ull, o.seed);
+  case opt_smoothing: return count("smoothing_iterations", 0x7FFFFFFFull, o.smoothing_iterations);
+  case 'a': return number("gradation", o.gradation);
+  case 'p': return number("interpolation", o.interpolation);
+  case opt_time_limit: return number("time_limit_seconds", o.time_limit_seconds);
+  case opt_area_bound: return number("area_ratio_bound", o.area_ratio_bound);
+  case opt_max_memory:
+    // Megabytes to bytes: the value must be one a size_t holds.
+    if (!parse_number(arg, x) || x < 0 || x > 1e12) return "--max-memory needs megabytes in [0, 1e12]";
+    o.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
     return {};
-  case opt_min_angle:
-    if (!parse_number(arg, x) || x < 0 || x >= 90) return "--min-angle needs degrees in [0, 90)";
-    args.options.min_angle_deg = x;
-    return {};
-  case 'r':
-    if (!parse_number(arg, x) || x <= 0) return "--refine needs a number > 0";
-    args.options.refine = x;
-    return {};
-  case 'i':
-    if (!parse_number(arg, x) || x <= 0 || x > 1) return "--imbalance needs a number in (0, 1]";
-    args.options.min_balance_quality = x;
-    return {};
-  case 'j':
-    if (!parse_count(arg, 4096, k)) return "--threads needs a whole number in [0, 4096]";
-    args.options.threads = static_cast<unsigned>(k);
-    return {};
-  case opt_seed:
-    if (!parse_count(arg, ~0ull, k)) return "--seed needs a whole number";
-    args.options.seed = k;
-    return {};
-  case opt_smoothing:
-    if (!parse_count(arg, 1000, k)) return "--smoothing needs a whole number in [0, 1000]";
-    args.options.smoothing_iterations = static_cast<int>(k);
-    return {};
-  case 'a':
-    if (!parse_number(arg, x) || x < 0) return "--gradation needs a number >= 0";
-    args.options.gradation = x;
-    return {};
-  case 'p':
-    if (!parse_number(arg, x) || x < 0) return "--interpolation needs a number >= 0";
-    args.options.interpolation = x;
-    return {};
+  case opt_weight_fn: return set_function(arg, o.weight_function);
+  case opt_area_fn: return set_function(arg, o.area_function);
+  case opt_weights: args.weights_file = arg; return {};
+  case opt_areas: args.areas_file = arg; return {};
   case 'o': args.poly_out = arg; return {};
   case opt_split: args.split_dir = arg; return {};
   case opt_subdomains_file: args.subdomains_out = arg; return {};
   case opt_svg: args.svg_out = arg; return {};
   case opt_svg_numbers: args.svg.numbers = true; return {};
   case opt_svg_mark:
-    if (!parse_number(arg, x) || x <= 0 || x > 180) return "--svg-mark-angles needs degrees in (0, 180]";
+    if (!parse_number(arg, x)) return "--svg-mark-angles needs degrees";
     args.svg.mark_angles_below_deg = x;
+    args.typed["mark_angles_below_deg"] = arg;
     return {};
   case opt_report:
     args.report = true;
     args.report_out = arg != nullptr ? arg : "";
     return {};
-  case opt_time_limit:
-    if (!parse_number(arg, x) || x < 0) return "--time-limit needs seconds >= 0";
-    args.options.time_limit_seconds = x;
-    return {};
-  case opt_max_memory:
-    if (!parse_number(arg, x) || x < 0 || x > 1e12) return "--max-memory needs megabytes >= 0";
-    args.options.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
-    return {};
   case opt_no_verify: args.verify = false; return {};
-  case opt_weight_fn: return set_function(arg, args.options.weight_function);
-  case opt_area_fn: return set_function(arg, args.options.area_function);
-  case opt_weights: return read_values(arg, false, args.options.background_weights);
-  case opt_areas: return read_values(arg, true, args.options.background_areas);
-  case opt_area_bound:
-    if (!parse_number(arg, x) || x <= 0) return "--area-bound needs a number > 0";
-    args.options.area_ratio_bound = x;
-    return {};
   case opt_geo: args.geo_out = arg; return {};
   case opt_vtk: args.vtk_out = arg; return {};
   case opt_geojson: args.geojson_out = arg; return {};
   case 'q': args.quiet = true; return {};
   case 'v': args.verbose = true; return {};
   default: return "unknown option";
+  }
+}
+
+// The library's check of every range and combination (check_options), said
+// in the CLI's words: "--min-angle must lie strictly between 0 and 90 degrees, got '0'".
+std::string option_problem(const DecomposeArgs& args) {
+  try {
+    DecomposeOptions options = args.options;
+    // A background file is read later; its presence is what a conflict needs.
+    if (!args.weights_file.empty()) options.background_weights = {{{0, 0}, 0.0}};
+    if (!args.areas_file.empty()) options.background_areas = {{{0, 0}, 1.0}};
+    check_options(options);
+    check_options(args.svg);
+    return {};
+  } catch (const OptionError& e) {
+    const auto typed = args.typed.find(e.option());
+    return cli_message(e) + (typed != args.typed.end() ? ", got '" + typed->second + "'" : std::string());
   }
 }
 
@@ -406,6 +479,7 @@ int run_decompose(int argc, char** argv) {
   if (optind + 1 != argc) return usage_error("decompose", "expected exactly one input file");
   args.input = argv[optind];
   if (args.quiet && args.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");
+  if (const std::string problem = option_problem(args); !problem.empty()) return usage_error("decompose", problem);
   return run_guarded("decompose", decompose_body, &args);
 }
 

@@ -66,13 +66,7 @@ std::string read_script(const std::string& file) {
 
 int script_body(void* context) {
   const auto& args = *static_cast<ScriptArgs*>(context);
-  std::string text;
-  try {
-    text = read_script(args.file);
-  } catch (const Error& e) {  // an unreadable script is bad input (exit 3), like an unreadable domain
-    std::fprintf(stderr, "madd script: error: %s\n", e.what());
-    return exit_bad_input;
-  }
+  const std::string text = read_script(args.file);  // unreadable: InputFileError, bad input like a bad domain
   ScriptContext script;
   if (!args.quiet) script.log = [](const std::string& line) { std::printf("%s\n", line.c_str()); };
   run_script(text, args.file == "-" ? "<stdin>" : args.file, script);

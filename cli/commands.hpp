@@ -3,6 +3,8 @@
 // cli/cmd_<name>.cpp and registers itself; main.cpp only dispatches.
 #include <string>
 
+#include "madd/error.hpp"
+
 namespace madd::cli {
 
 // Exit codes, documented in `madd --help` and docs/cli.md.
@@ -27,6 +29,9 @@ struct Command {
 struct CommandRegistration {
   explicit CommandRegistration(Command command);
 };
+
+// The exit code of an error of this kind: the one place that decides it.
+int exit_code_of(ErrorKind kind) noexcept;
 
 // Runs `body`, mapping madd's typed errors to exit codes and printing one
 // "madd: message" line on stderr. Every subcommand wraps its work in this.

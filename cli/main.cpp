@@ -89,24 +89,23 @@ int usage_error(const char* command, const std::string& message) {
   return exit_usage;
 }
 
-namespace {
-// The exit code for a madd::Error, from its most specific type.
-int exit_code_of(const Error& e) {
-  if (dynamic_cast<const ParseError*>(&e) || dynamic_cast<const InvalidInputError*>(&e) ||
-      dynamic_cast<const InputFileError*>(&e))
-    return exit_bad_input;
-  if (dynamic_cast<const DecompositionError*>(&e)) return exit_decompose_failed;
-  if (dynamic_cast<const LimitError*>(&e)) return exit_limit;
-  if (dynamic_cast<const InternalError*>(&e)) return exit_internal;
-  return exit_io;  // OutputError, and any other failure to produce an output
+int exit_code_of(ErrorKind kind) noexcept {
+  switch (kind) {
+  case ErrorKind::bad_option: return exit_usage;
+  case ErrorKind::bad_input: return exit_bad_input;
+  case ErrorKind::decomposition: return exit_decompose_failed;
+  case ErrorKind::output: return exit_io;
+  case ErrorKind::limit: return exit_limit;
+  case ErrorKind::internal: return exit_internal;
+  }
+  return exit_internal;
 }
-} // namespace
 
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);
   } catch (const Error& e) {
-    const int code = exit_code_of(e);
+    const int code = exit_code_of(e.kind());
     std::fprintf(stderr, "madd %s: %s: %s\n", command, code == exit_internal ? "internal error" : "error", e.what());
     return code;
   } catch (const std::bad_alloc&) {

@@ -23,7 +23,7 @@ madd::Pslg unit_square() {
 
 void refuse_costly(const madd::DecomposeOptions& o) {
   if (o.refine > 8 || o.smoothing_iterations > 4 || o.threads != 1)
-    throw madd::Error("fuzz: options outside the sandbox (r <= 8, s <= 4, j = 1)");
+    throw madd::OptionError("options", "outside the fuzzing sandbox (r <= 8, s <= 4, j = 1)");
 }
 
 } // namespace

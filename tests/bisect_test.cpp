@@ -340,18 +340,18 @@ TEST_SUITE("bisect") {
     CHECK_FALSE(madd::verify_bisection(g, short_side).ok());
   }
 
-  TEST_CASE("bad options and weights are InvalidInputError") {
+  TEST_CASE("bad options are OptionError, bad graphs and weights InvalidInputError") {
     const madd::Graph g = grid(3, 3);
     madd::BisectOptions o;
     o.target_fraction = 1.0;
-    CHECK_THROWS_AS(madd::bisect(g, o), madd::InvalidInputError);
+    CHECK_THROWS_AS(madd::bisect(g, o), madd::OptionError);
     o = {};
     o.keep_together.push_back({0, 9});
     CHECK_THROWS_AS(madd::bisect(g, o), madd::InvalidInputError);
     madd::Graph bad = g;
     bad.vertex_weights[3] = -1.0;
     CHECK_THROWS_AS(madd::bisect(bad), madd::InvalidInputError);
-    CHECK_THROWS_AS(madd::partition(g, 0), madd::InvalidInputError);
+    CHECK_THROWS_AS(madd::partition(g, 0), madd::OptionError);
   }
 
   TEST_CASE("partition is deterministic") {

@@ -239,10 +239,10 @@ TEST_CASE("bad options are rejected") {
   const Pslg square = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
   madd::DecomposeOptions o;
   o.subdomains = 0;
-  CHECK_THROWS_AS(madd::decompose(square, o), madd::InvalidInputError);
+  CHECK_THROWS_AS(madd::decompose(square, o), madd::OptionError);
   o.subdomains = 2;
   o.min_angle_deg = 95.0;
-  CHECK_THROWS_AS(madd::decompose(square, o), madd::InvalidInputError);
+  CHECK_THROWS_AS(madd::decompose(square, o), madd::OptionError);
 }
 
 } // TEST_SUITE

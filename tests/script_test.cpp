@@ -74,6 +74,22 @@ ScriptContext square_context() {
 }
 
 // Runs `text` as "s.txt", expecting a ParseError on `line` whose message contains `part`.
+void check_script_option_error(const std::string& text, std::size_t line, std::size_t column, const std::string& field,
+                               const std::string& part) {
+  CAPTURE(text);
+  ScriptContext context = square_context();
+  try {
+    run_script(text, "s.txt", context);
+    FAIL("no error");
+  } catch (const OptionError& e) {
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(e.option() == field);
+    CHECK(what.rfind("s.txt:" + std::to_string(line) + ":" + std::to_string(column) + ": ", 0) == 0);
+    CHECK(what.find(part) != std::string::npos);
+  }
+}
+
 void check_script_error(const std::string& text, std::size_t line, const std::string& part, std::size_t column = 0) {
   CAPTURE(text);
   ScriptContext context = square_context();
@@ -145,7 +161,7 @@ TEST_CASE("set parses every parameter, with or without blanks around '='") {
   CHECK(o.smoothing_iterations == 3);
   CHECK(o.threads == 1);
   // A line with one bad assignment changes nothing.
-  CHECK_THROWS_AS(run_script("set r=7 i=2", "s.txt", context), ParseError);
+  CHECK_THROWS_AS(run_script("set r=7 i=2", "s.txt", context), OptionError);
   CHECK(context.options.refine == 2.5);
 }
 
@@ -166,21 +182,13 @@ TEST_CASE("comments, blank lines, dec without N, and exit stopping the script") 
 
 TEST_CASE("every script error names its line and column") {
   check_script_error("\n# c\nfoo\n", 3, "unknown command 'foo'", 1);
-  check_script_error("set f=0.5", 1, "fraction of pi", 7);
   check_script_error("set f=0.35\nset  q=1", 2, "unknown parameter 'q'", 6);
   check_script_error("set f", 1, "expected '='", 6);
   check_script_error("set f=", 1, "missing the value", 7);
   check_script_error("set =3", 1, "missing the parameter name", 5);
   check_script_error("set", 1, "missing <parameter>=<value>", 4);
-  check_script_error("set s=1.5", 1, "whole number", 7);
-  check_script_error("set i=0", 1, "(0, 1]");
-  check_script_error("set n=0", 1, ">= 1");
-  check_script_error("set j=-1", 1, "[0, 4096]");
   check_script_error("write x.poly", 1, "run 'dec' first", 1);
   check_script_error("\nwriteSubdomains x.dat", 2, "run 'dec' first");
-  check_script_error("dec 0", 1, "whole number >= 1", 5);
-  check_script_error("dec abc", 1, "whole number >= 1");
-  check_script_error("dec 99999999999", 1, "whole number >= 1");
   check_script_error("dec 2 3", 1, "unexpected '3'", 7);
   check_script_error("dec 2\nwrite a.poly some", 2, "expected 'all'", 14);
   check_script_error("read", 1, "missing argument (usage: read FILE)", 5);
@@ -191,6 +199,42 @@ TEST_CASE("every script error names its line and column") {
   check_script_error("setAreaFunction", 1, "missing the expression", 16);
   check_script_error("setWeightFunction libweights.so weight", 1, "shared libraries are not loaded", 19);
   check_script_error("setAreaFunction /opt/lib/libarea.so.1 area", 1, "expressions", 17);
+}
+
+TEST_CASE("a value out of its range is a bad option, located and named as the script spells it") {
+  check_script_option_error("set f=0.5", 1, 7, "min_angle_deg", "f (the minimum angle as a fraction of pi");
+  check_script_option_error("set f=0", 1, 7, "min_angle_deg", "strictly between 0 and 90");
+  check_script_option_error("set r=1 s=1.5", 1, 11, "smoothing_iterations", "whole number");
+  check_script_option_error("set i=0", 1, 7, "min_balance_quality", "(0, 1]");
+  check_script_option_error("\nset n=0", 2, 7, "subdomains", "at least 1");
+  check_script_option_error("set j=-1", 1, 7, "threads", "whole number");
+  check_script_option_error("set j=5000", 1, 7, "threads", "at most 4096");
+  check_script_option_error("dec 0", 1, 5, "subdomains", "whole number >= 1");
+  check_script_option_error("dec abc", 1, 5, "subdomains", "whole number >= 1");
+  check_script_option_error("dec 99999999999", 1, 5, "subdomains", "whole number >= 1");
+  // A combination is checked at `dec`, with the script's names.
+  check_script_option_error("set p=0.5\ndec 4", 2, 5, "interpolation", "p (interpolation) only applies");
+  check_script_option_error("set a=2\ndec 4", 2, 5, "gradation", "a (gradation) grades by the domain's vertex weights");
+  check_script_option_error("setAreaFunction 0\ndec 8", 2, 5, "area_function", "setAreaFunction must be finite and > 0");
+}
+
+TEST_CASE("read starts a fresh domain: background weights and areas do not carry over") {
+  TempDir tmp("fresh");
+  const std::string domain = (tmp.path / "sq.poly").string();
+  const std::string areas = (tmp.path / "a.node").string();
+  std::ofstream(domain) << "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n";
+  std::ofstream(areas) << "1 2 1 0\n1 0.5 0.5 0.02\n";
+  ScriptContext context;
+  run_script("read " + domain + "\nread_areas " + areas, "s.txt", context);
+  CHECK(context.options.background_areas.size() == 1);
+  run_script("read " + domain, "s.txt", context);
+  CHECK(context.options.background_areas.empty());
+  run_script("dec 5", "s.txt", context);
+  CHECK(context.decomposition->subdomains.size() == 5);  // uniform again: N is the count
+
+  run_script("read_areas " + areas + "\nread_weights none\nread_areas none", "s.txt", context);
+  CHECK(context.options.background_areas.empty());
+  CHECK(context.options.background_weights.empty());
 }
 
 TEST_CASE("dec before read is an error") {
@@ -351,7 +395,7 @@ TEST_CASE("a decomposition that fails verification is never written") {
   context.decomposition->subdomains.pop_back();  // now it covers half the square
   context.verified = false;
   const fs::path out = tmp.path / "wrong.poly";
-  CHECK_THROWS_AS(run_script("write " + out.string(), "s.txt", context), std::logic_error);
+  CHECK_THROWS_AS(run_script("write " + out.string(), "s.txt", context), InternalError);
   CHECK_FALSE(fs::exists(out));
 }
 

@@ -44,6 +44,9 @@ struct BisectOptions {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keep_together;
 };
 
+// Throws OptionError on an option out of its range (bisect() calls it).
+void check_options(const BisectOptions& options);
+
 struct Bisection {
   std::vector<std::uint8_t> side;  // 0 or 1 per vertex
   double cut = 0.0;                // total weight of edges between the sides
@@ -68,6 +71,9 @@ struct PartitionOptions {
   std::uint64_t seed = 1;
   bool connected = false;   // --contig
 };
+
+// Throws OptionError on an option out of its range (partition() calls it).
+void check_options(const PartitionOptions& options);
 
 struct Partition {
   std::vector<std::uint32_t> part;  // 0..k-1 per vertex

@@ -59,6 +59,26 @@ struct DecomposeOptions {
   std::size_t max_memory_bytes = 0;
 };
 
+// The most worker threads DecomposeOptions::threads may ask for.
+inline constexpr unsigned max_threads = 4096;
+
+// The one check of every option's range and of options that contradict each
+// other (two sources of weights, two of required areas, an interpolation
+// factor with no boundary weights to interpolate). Throws OptionError naming
+// the field ("min_angle_deg") and the rule it breaks. decompose() calls it;
+// front ends call it to refuse bad options before reading any input.
+void check_options(const DecomposeOptions& options);
+// Only the ranges, each field on its own (for a front end that sets options
+// one at a time, like the script's `set`, and checks combinations later).
+void check_option_ranges(const DecomposeOptions& options);
+// The same, plus what depends on the domain: grading by boundary weights
+// (gradation > 0 with no other weight source) needs vertex attributes.
+void check_options(const DecomposeOptions& options, const Pslg& domain);
+
+// True when the options give a required area (area_function or
+// background_areas, Sec. 5.2): `subdomains` is then a maximum, not a target.
+bool has_required_area(const DecomposeOptions& options) noexcept;
+
 // The name of DecomposeOptions before 0.2 (when every options struct got its stage's prefix).
 using Options [[deprecated("use madd::DecomposeOptions")]] = DecomposeOptions;
 
@@ -71,6 +91,9 @@ struct Subdomain {
   std::vector<std::vector<std::uint32_t>> ring_segments;
   double area = 0.0;
   double weight = 0.0;              // density weight (equals area when not grading)
+  // With a required area (has_required_area): the smallest required area
+  // inside the subdomain, +infinity where nothing constrains it; 0 otherwise.
+  double required_area = 0.0;
   Point interior_point;             // strictly inside the subdomain
   std::vector<Point> hole_points;   // one strictly inside each hole ring
   friend bool operator==(const Subdomain&, const Subdomain&) = default;
@@ -86,6 +109,7 @@ struct Decomposition {
   std::vector<Point> holes;         // the input's hole points
   std::vector<Subdomain> subdomains;
   double min_angle_deg = 60.0;      // the Phi0 it was built with
+  double area_ratio_bound = 0.0;    // with a required area: the bound it was split to; 0 otherwise
   friend bool operator==(const Decomposition&, const Decomposition&) = default;
 
   bool is_separator(std::uint32_t segment) const { return segment_origin[segment] == no_index; }
@@ -96,6 +120,12 @@ struct Decomposition {
 // the result is identical for any thread count. Throws DecompositionError
 // naming the subdomain that could not be split; never returns a partial result.
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options = {});
+
+// The subdomain count verify_decomposition should expect of a decomposition
+// asked for `requested` subdomains: `requested`, or, when it was split to a
+// required area (area_ratio_bound > 0, where N is a maximum), the count made
+// if it lies between 1 and `requested`.
+std::uint32_t expected_subdomain_count(const Decomposition& decomposition, std::uint32_t requested) noexcept;
 
 // Wall time of one phase of a run ("read", "refine", "verify"...).
 struct PhaseTime {

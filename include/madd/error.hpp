@@ -1,6 +1,8 @@
 #pragma once
-// Typed errors (STYLE.md point 5). Every failure madd reports to a caller is a
-// madd::Error; the CLI maps each subclass to its own exit code (docs/cli.md).
+// Typed errors. Every failure madd reports to a caller is a madd::Error that
+// carries its kind; front ends map the kind to an exit code (docs/cli.md)
+// without asking which subclass it is. The subclasses add what a caller needs
+// to act on the error (the file position, the option, the subdomain).
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -10,10 +12,42 @@
 
 namespace madd {
 
+// What went wrong, in the terms a caller acts on (the CLI's exit codes, docs/cli.md).
+enum class ErrorKind : std::uint8_t {
+  bad_option,     // an option out of its range, or options that contradict each other
+  bad_input,      // an input file could not be read or parsed, or is not a valid domain
+  decomposition,  // no valid decomposition exists at these settings
+  output,         // an output could not be written
+  limit,          // a resource limit (time, memory) was reached
+  internal,       // an invariant failed: a bug in madd
+};
+const char* to_string(ErrorKind kind) noexcept;
+
 // Base of every error madd throws on purpose. Anything else escaping is a bug.
 class Error : public std::runtime_error {
 public:
-  using std::runtime_error::runtime_error;
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  ErrorKind kind() const noexcept { return kind_; }
+
+private:
+  ErrorKind kind_;
+};
+
+// An option is out of its range or contradicts another one (ErrorKind::bad_option).
+// option() names the field as the options struct spells it ("min_angle_deg"),
+// so that a front end can say it in its own words ("--min-angle", "f");
+// requirement() is the rule it broke ("must lie strictly between 0 and 90 degrees").
+// what() is "option requirement", or a located message given by a front end.
+class OptionError : public Error {
+public:
+  OptionError(std::string option, std::string requirement);
+  OptionError(std::string option, std::string requirement, const std::string& message);
+  const std::string& option() const noexcept { return option_; }
+  const std::string& requirement() const noexcept { return requirement_; }
+
+private:
+  std::string option_;
+  std::string requirement_;
 };
 
 // A file could not be parsed. what() is "path:line:column: message".
@@ -89,30 +123,31 @@ private:
   double min_angle_deg_;
 };
 
-// An input file could not be opened or read (exit code 3 in the CLI, like
-// any other bad input).
+// An input file could not be opened or read (ErrorKind::bad_input, like any
+// other bad input).
 class InputFileError : public Error {
 public:
-  using Error::Error;
+  explicit InputFileError(const std::string& message) : Error(ErrorKind::bad_input, message) {}
 };
 
-// An output file or directory could not be written (exit code 5).
+// An output file or directory could not be written (ErrorKind::output).
 class OutputError : public Error {
 public:
-  using Error::Error;
+  explicit OutputError(const std::string& message) : Error(ErrorKind::output, message) {}
 };
 
-// An invariant that should hold by construction did not: a bug in madd, not a
-// problem with the input (exit code 70). Raised instead of returning a wrong result.
+// An invariant that should hold by construction did not, or a self-check
+// (verify_decomposition before writing) failed: a bug in madd, not a problem
+// with the input (ErrorKind::internal). Raised instead of returning a wrong result.
 class InternalError : public Error {
 public:
-  using Error::Error;
+  explicit InternalError(const std::string& message) : Error(ErrorKind::internal, message) {}
 };
 
-// A resource limit (--max-memory, --time-limit) was reached.
+// A resource limit (time_limit_seconds, max_memory_bytes) was reached (ErrorKind::limit).
 class LimitError : public Error {
 public:
-  using Error::Error;
+  explicit LimitError(const std::string& message) : Error(ErrorKind::limit, message) {}
 };
 
 // The result of a verifier (verify_triangulation, verify_bisection, ...):

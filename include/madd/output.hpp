@@ -46,6 +46,9 @@ struct SvgOptions {
   double mark_angles_below_deg = 0;  // circle every new angle below this (0 = none)
 };
 
+// Throws OptionError on an option out of its range (format_svg calls it).
+void check_options(const SvgOptions& options);
+
 // Output 4: an SVG picture: one <path> per subdomain (fill-rule evenodd, so
 // holes stay empty), the original boundary thick, separators thin, y pointing
 // up as in the input. Size is linear in the decomposition (compact numbers).

@@ -47,13 +47,17 @@ struct ScriptResult {
 // Runs the commands of `text` in order until `exit` or the end of the text.
 // Relative file names are relative to the process's current directory.
 // Every error names the script and the line: the script's own problems
-// (unknown command, bad parameter, write before dec) are ParseError(name,
-// line, column); a failing command's error is rethrown as the same type
-// with "name:line: " before its message. Commands before the failing one
-// keep their effects (files written stay written; none is ever partial).
-// Before any output is written the decomposition must pass
-// verify_decomposition; if it does not, a std::logic_error (a bug) is thrown
-// and nothing is written.
+// (unknown command, unknown parameter, write before dec) are ParseError(name,
+// line, column); a value out of its range (`set f=0`, `dec 0`) or options
+// that contradict each other are OptionError, located the same way and
+// naming the parameter as the script spells it; a failing command's error
+// is rethrown with the same kind and type, "name:line: " before its message.
+// `read` starts a fresh domain: the background weights and areas of the
+// previous one are cleared (`read_weights none` / `read_areas none` clear
+// them explicitly). Commands before the failing one keep their effects
+// (files written stay written; none is ever partial). Before any output is
+// written the decomposition must pass verify_decomposition; if it does not,
+// an InternalError (a bug) is thrown and nothing is written.
 ScriptResult run_script(std::string_view text, const std::string& name, ScriptContext& context);
 
 } // namespace madd

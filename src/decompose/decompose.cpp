@@ -57,29 +57,20 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
   d.segment_origin = sub.origin;
   d.holes = domain.holes;
   d.min_angle_deg = options.min_angle_deg;
+  const bool required_area = has_required_area(options);
+  if (required_area) d.area_ratio_bound = options.area_ratio_bound;
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
     Subdomain s;
     s.rings = sub.faces[f].rings;
     s.ring_segments = sub.faces[f].ring_segments;
     s.area = sub.face_area(f);
     s.weight = grading.weight(sub, f);
+    if (required_area) s.required_area = grading.required(sub, f);
     s.interior_point = sub.faces[f].interior;
     for (std::size_t r = 1; r < s.rings.size(); ++r) s.hole_points.push_back(sub.hole_point(f, r));
     d.subdomains.push_back(std::move(s));
   }
   return d;
-}
-
-void check_options(const DecomposeOptions& options) {
-  if (options.subdomains == 0) {
-    throw InvalidInputError(InputProblem::other, "the number of subdomains must be at least 1");
-  }
-  if (!(options.min_angle_deg > 0.0 && options.min_angle_deg < 90.0)) {
-    throw InvalidInputError(InputProblem::other, "the minimum angle must lie strictly between 0 and 90 degrees");
-  }
-  if (!(options.refine > 0.0) || !std::isfinite(options.refine)) {
-    throw InvalidInputError(InputProblem::other, "the refinement factor must be positive");
-  }
 }
 
 // Area-driven grading (Sec. 5.2): each round plans one split for every face
@@ -118,8 +109,8 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
 }
 
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases) {
+  check_options(options, domain);
   const detail::ResourceGuard guard(options);
-  check_options(options);
   validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);
   detail::GradingState grading(options, domain);

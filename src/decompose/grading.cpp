@@ -3,7 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <limits>
+#include <string>
+
+#include "madd/error.hpp"
 
 namespace madd::detail {
 
@@ -42,6 +47,19 @@ bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p) {
   return inside;
 }
 
+namespace {
+// A required area is a size: 0, a negative value or NaN has no meaning, and
+// would either stop all splitting or never stop it, so it is refused like a
+// background area of that value (check_options).
+double checked_required_area(const std::function<double(double, double)>& area_function, Point q) {
+  const double v = area_function(q.x, q.y);
+  if (std::isfinite(v) && v > 0.0) return v;
+  char where[96];
+  std::snprintf(where, sizeof where, "(%.9g, %.9g) it is %.9g", q.x, q.y, v);
+  throw OptionError("area_function", std::string("must be finite and > 0 everywhere in the domain; at ") + where);
+}
+} // namespace
+
 FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const DecomposeOptions& options) {
   Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   for (std::uint32_t v : sub.faces[face].rings[0]) {
@@ -56,7 +74,7 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const D
     // A density cannot be negative: negative and NaN values count as 0.
     const double f = options.weight_function ? options.weight_function(q.x, q.y) : 0.0;
     if (options.weight_function) out.weights.push_back({q, f > 0.0 ? f * cell_area : 0.0});
-    if (options.area_function) out.areas.push_back({q, options.area_function(q.x, q.y)});
+    if (options.area_function) out.areas.push_back({q, checked_required_area(options.area_function, q)});
   };
   // Cell centres, so that the weight is a midpoint-rule integral of f over the face.
   for (int i = 0; i < grid_cells; ++i) {

@@ -24,7 +24,7 @@ struct GradingMode {
 };
 
 // Case 1 is used when gradation > 0 and neither a weight function nor
-// background weights are given; a weight function wins over background weights.
+// background weights are given (check_options refuses both at once).
 GradingMode grading_mode(const DecomposeOptions& options);
 
 // Even-odd point-in-face test over all rings of `face` (a point on the boundary may go either way).

@@ -34,12 +34,22 @@ void check_input(const Graph& g, const BisectOptions& o) {
     if (!(std::isfinite(g.edge_weights[i]) && g.edge_weights[i] >= 0.0))
       reject(InputProblem::bad_weight, "edge weight must be finite and non-negative", {static_cast<std::int64_t>(i)});
   }
-  if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
-    reject(InputProblem::other, "target fraction must lie strictly between 0 and 1");
-  if (!(std::isfinite(o.imbalance_tolerance) && o.imbalance_tolerance >= 0.0)) reject(InputProblem::other, "imbalance_tolerance must be >= 0");
+  check_options(o);
   for (const auto& [a, b] : o.keep_together)
     if (a >= n || b >= n) reject(InputProblem::other, "keep_together vertex out of range", {a, b});
 }
+
+} // namespace
+
+void check_options(const BisectOptions& o) {
+  if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
+    throw OptionError("target_fraction", "must lie strictly between 0 and 1");
+  if (!(std::isfinite(o.imbalance_tolerance) && o.imbalance_tolerance >= 0.0))
+    throw OptionError("imbalance_tolerance", "must be a finite number >= 0");
+  if (o.refinement_passes < 0) throw OptionError("refinement_passes", "must be >= 0");
+}
+
+namespace {
 
 // Union-find over the keep_together pairs; returns each vertex's group id,
 // numbered in order of first vertex, and the group count.

@@ -1,4 +1,5 @@
 // K-way partitioning by recursive bisection (explicit work stack).
+#include <cmath>
 #include <numeric>
 
 #include "graph/graph_detail.hpp"
@@ -14,8 +15,14 @@ struct Task {
 };
 } // namespace
 
+void check_options(const PartitionOptions& options) {
+  if (!(std::isfinite(options.imbalance_tolerance) && options.imbalance_tolerance >= 0.0))
+    throw OptionError("imbalance_tolerance", "must be a finite number >= 0");
+}
+
 Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions& options) {
-  if (k == 0) throw InvalidInputError(InputProblem::other, "the number of parts must be at least 1");
+  if (k == 0) throw OptionError("k", "(the number of parts) must be at least 1");
+  check_options(options);
   const auto n = static_cast<std::uint32_t>(graph.vertex_count());
   Partition result;
   result.part.assign(n, 0);

@@ -4,8 +4,27 @@
 
 namespace madd {
 
+const char* to_string(ErrorKind kind) noexcept {
+  switch (kind) {
+  case ErrorKind::bad_option: return "bad option";
+  case ErrorKind::bad_input: return "bad input";
+  case ErrorKind::decomposition: return "decomposition failed";
+  case ErrorKind::output: return "output failed";
+  case ErrorKind::limit: return "limit reached";
+  case ErrorKind::internal: return "internal error";
+  }
+  return "error";
+}
+
+OptionError::OptionError(std::string option, std::string requirement)
+    : Error(ErrorKind::bad_option, option + " " + requirement), option_(std::move(option)),
+      requirement_(std::move(requirement)) {}
+
+OptionError::OptionError(std::string option, std::string requirement, const std::string& message)
+    : Error(ErrorKind::bad_option, message), option_(std::move(option)), requirement_(std::move(requirement)) {}
+
 ParseError::ParseError(std::string path, std::size_t line, std::size_t column, const std::string& message)
-    : Error(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message),
+    : Error(ErrorKind::bad_input, path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message),
       path_(std::move(path)), line_(line), column_(column), message_(message) {}
 
 const char* to_string(InputProblem problem) noexcept {
@@ -37,11 +56,11 @@ std::string located(const std::string& path, std::size_t line, std::size_t colum
 InvalidInputError::InvalidInputError(InputProblem problem, const std::string& message, std::vector<std::int64_t> ids,
                                      std::vector<Point> points, std::string path, std::size_t line,
                                      std::size_t column)
-    : Error(located(path, line, column, message)), problem_(problem), ids_(std::move(ids)),
+    : Error(ErrorKind::bad_input, located(path, line, column, message)), problem_(problem), ids_(std::move(ids)),
       points_(std::move(points)), path_(std::move(path)), line_(line), column_(column) {}
 
 DecompositionError::DecompositionError(const std::string& message, std::int64_t subdomain, double area,
                                        double min_angle_deg)
-    : Error(message), subdomain_(subdomain), area_(area), min_angle_deg_(min_angle_deg) {}
+    : Error(ErrorKind::decomposition, message), subdomain_(subdomain), area_(area), min_angle_deg_(min_angle_deg) {}
 
 } // namespace madd

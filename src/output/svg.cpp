@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "madd/error.hpp"
 #include "madd/output.hpp"
 #include "quality/metrics_detail.hpp"
 #include "kernel/number_format.hpp"
@@ -185,7 +186,15 @@ void append_annotations(std::string& out, const Decomposition& d, const View& vi
 
 } // namespace
 
+void check_options(const SvgOptions& options) {
+  if (!(std::isfinite(options.width) && options.width >= 0.0 && options.width <= 1e6))
+    throw OptionError("width", "must lie in [0, 1e6] pixels (0 = the default 1000)");
+  if (!(options.mark_angles_below_deg >= 0.0 && options.mark_angles_below_deg <= 180.0))
+    throw OptionError("mark_angles_below_deg", "must lie in [0, 180] degrees (0 = none)");
+}
+
 std::string format_svg(const Decomposition& d, const SvgOptions& options) {
+  check_options(options);
   const View view(d.points, options.width > 0 ? options.width : 1000.0);
   std::string out;
   out.reserve(40 * (d.points.size() + 3 * d.segments.size()) + 1024);

@@ -96,6 +96,24 @@ double decile(const std::vector<double>& sorted, int q) {
   return (sorted[j - 1] * static_cast<double>(10 - delta) + sorted[j] * static_cast<double>(delta)) / 10.0;
 }
 
+namespace {
+// Sec. 5.2's stopping rule, checked from the result: area / required area per
+// subdomain against the bound the decomposition was split to.
+void fill_required_area(const Decomposition& d, const std::vector<double>& areas, Metrics& m) {
+  m.max_area_over_required = nan_value;
+  m.area_ratio_bound = nan_value;
+  if (!(d.area_ratio_bound > 0.0)) return;
+  m.area_ratio_bound = d.area_ratio_bound;
+  m.max_area_over_required = 0.0;
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    const double required = d.subdomains[k].required_area;
+    const double ratio = std::isfinite(required) && required > 0.0 ? areas[k] / required : 0.0;
+    m.max_area_over_required = std::max(m.max_area_over_required, ratio);
+    if (ratio > d.area_ratio_bound) ++m.subdomains_over_area_bound;
+  }
+}
+} // namespace
+
 Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
   Metrics m;
   m.subdomains = static_cast<std::uint32_t>(d.subdomains.size());
@@ -131,6 +149,7 @@ Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
     m.min_weight_over_mean = wlo->weight / mean_weight;
   }
   m.shortest_new_segment_norm = shortest_new_segment(d) / std::sqrt(m.mean_area);
+  fill_required_area(d, areas, m);
   return m;
 }
 

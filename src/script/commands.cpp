@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
@@ -58,17 +57,12 @@ const Decomposition& verified_decomposition(const ScriptCommand& c, ScriptContex
   const Decomposition& d = *context.decomposition;
   if (context.verified) return d;
   const auto actual = static_cast<std::uint32_t>(d.subdomains.size());
-  std::uint32_t expected = context.requested_subdomains == 0 ? actual : context.requested_subdomains;
-  // With a required area (Sec. 5.2), splitting stops once every ratio is
-  // within the bound, so fewer than N subdomains is a correct result.
-  const bool area_graded = context.options.area_function || !context.options.background_areas.empty();
-  if (area_graded && actual <= expected) expected = actual;
-  const Verification check = verify_decomposition(d, *context.domain, expected);
+  const std::uint32_t requested = context.requested_subdomains == 0 ? actual : context.requested_subdomains;
+  const Verification check = verify_decomposition(d, *context.domain, expected_subdomain_count(d, requested));
   if (!check.ok()) {
     std::string problems;
     for (const std::string& p : check.problems) problems += "\n  " + p;
-    throw std::logic_error(c.prefix() + "internal error: the decomposition failed its self-check, nothing written:" +
-                           problems);
+    throw InternalError(c.prefix() + "the decomposition failed its self-check, nothing written:" + problems);
   }
   context.verified = true;
   return d;
@@ -78,6 +72,18 @@ std::string number_text(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
   return buffer;
+}
+
+// decompose(), its errors located at the script line; a bad option is said
+// with the script's names (a, p, setAreaFunction...).
+Decomposition decompose_located(const ScriptCommand& c, std::size_t column, const ScriptContext& context) {
+  try {
+    return decompose(*context.domain, context.options);
+  } catch (const OptionError& e) {
+    c.fail_option(column, e.option(), script_name_of(e.option()) + " " + e.requirement());
+  } catch (const Error& e) {
+    rethrow_located(c, column, e);
+  }
 }
 
 std::string count_text(std::size_t n, const char* what) {
@@ -96,6 +102,12 @@ void script_read(const ScriptCommand& c, ScriptContext& context) {
   context.decomposition.reset();
   context.verified = false;
   context.requested_subdomains = 0;
+  // Background weights and areas are points of the previous domain's
+  // background mesh (Sec. 5.2 case 2): a new domain starts without them.
+  const bool dropped = !context.options.background_weights.empty() || !context.options.background_areas.empty();
+  context.options.background_weights.clear();
+  context.options.background_areas.clear();
+  if (dropped) say(context, "read " + file.text + ": background weights and areas of the previous domain cleared");
   say(context, "read " + file.text + ": " + count_text(domain.points.size(), "point") + ", " +
                    count_text(domain.segments.size(), "segment") + ", " + count_text(domain.holes.size(), "hole"));
   context.domain = std::move(domain);
@@ -105,10 +117,16 @@ void script_read(const ScriptCommand& c, ScriptContext& context) {
 // A background mesh (Sec. 5.2, case 2) as a .node file: the first attribute
 // of each node is its density weight or its required area.
 void script_read_values(const ScriptCommand& c, ScriptContext& context, bool areas) {
-  const char* usage = areas ? "read_areas FILE" : "read_weights FILE";
+  const char* usage = areas ? "read_areas FILE|none" : "read_weights FILE|none";
   c.expect_arguments(1, 1, usage);
-  require_files(c, context);
   const ScriptWord& file = c.words[1];
+  auto& target = areas ? context.options.background_areas : context.options.background_weights;
+  if (file.text == "none") {  // clears the source, as setWeightFunction none does
+    target.clear();
+    say(context, std::string(areas ? "read_areas" : "read_weights") + " none");
+    return;
+  }
+  require_files(c, context);
   const PolyFile node = read_input(c, file.column, [&] { return parse_node(read_text_file(file.text), file.text); });
   const Pslg& p = node.pslg;
   const auto line_of = [&](std::size_t i) -> std::size_t {
@@ -132,7 +150,7 @@ void script_read_values(const ScriptCommand& c, ScriptContext& context, bool are
   }
   say(context, std::string(areas ? "read_areas " : "read_weights ") + file.text + ": " +
                    count_text(values.size(), areas ? "required area" : "weight"));
-  (areas ? context.options.background_areas : context.options.background_weights) = std::move(values);
+  target = std::move(values);
 }
 
 void script_dec(const ScriptCommand& c, ScriptContext& context) {
@@ -147,7 +165,8 @@ void script_dec(const ScriptCommand& c, ScriptContext& context) {
     const bool digits = !t.empty() && t.size() <= 10 && t.find_first_not_of("0123456789") == std::string::npos;
     if (digits) k = std::stoull(t);
     if (!digits || k == 0 || k > 0xFFFFFFFFull)
-      c.fail(column, "the number of subdomains must be a whole number >= 1, got '" + printable(t) + "'");
+      c.fail_option(column, "subdomains",
+                    "the number of subdomains must be a whole number >= 1, got '" + printable(t) + "'");
     n = static_cast<std::uint32_t>(k);
   }
   if (context.max_subdomains != 0 && n > context.max_subdomains)
@@ -157,7 +176,7 @@ void script_dec(const ScriptCommand& c, ScriptContext& context) {
   if (context.check_options) located_call(c, column, [&] { context.check_options(context.options); });
   context.decomposition.reset();
   context.verified = false;
-  Decomposition d = located_call(c, column, [&] { return decompose(*context.domain, context.options); });
+  Decomposition d = decompose_located(c, column, context);
   say(context, "dec " + std::to_string(n) + ": " + count_text(d.subdomains.size(), "subdomain") + ", " +
                    count_text(d.points.size(), "point") + ", " + count_text(d.segments.size(), "segment"));
   context.decomposition = std::move(d);

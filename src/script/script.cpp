@@ -13,6 +13,11 @@ void ScriptCommand::fail(std::size_t column, const std::string& message) const {
   throw ParseError(script, line, column, message);
 }
 
+void ScriptCommand::fail_option(std::size_t column, const std::string& option, const std::string& message) const {
+  throw OptionError(option, message,
+                    script + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message);
+}
+
 void ScriptCommand::expect_arguments(std::size_t min, std::size_t max, const char* usage) const {
   const std::size_t n = words.size() - 1;
   if (n < min) fail(end_column, std::string("missing argument (usage: ") + usage + ")");
@@ -24,13 +29,21 @@ std::string ScriptCommand::prefix() const { return script + ":" + std::to_string
 
 void rethrow_located(const ScriptCommand& c, std::size_t column, const Error& error) {
   const std::string message = c.prefix() + error.what();
+  // Every error keeps its kind (and its type, for callers that catch by type).
   if (dynamic_cast<const ParseError*>(&error) != nullptr) throw ParseError(c.script, c.line, column, error.what());
   if (const auto* e = dynamic_cast<const InvalidInputError*>(&error))
     throw InvalidInputError(e->problem(), message, e->ids(), e->points());
   if (const auto* e = dynamic_cast<const DecompositionError*>(&error))
     throw DecompositionError(message, e->subdomain(), e->area(), e->min_angle_deg());
-  if (dynamic_cast<const LimitError*>(&error) != nullptr) throw LimitError(message);
-  throw Error(message);
+  if (const auto* e = dynamic_cast<const OptionError*>(&error))
+    throw OptionError(e->option(), e->requirement(), message);
+  switch (error.kind()) {
+  case ErrorKind::bad_input: throw InputFileError(message);
+  case ErrorKind::output: throw OutputError(message);
+  case ErrorKind::limit: throw LimitError(message);
+  case ErrorKind::internal: throw InternalError(message);
+  default: throw Error(error.kind(), message);
+  }
 }
 
 std::string printable(std::string_view text) {

@@ -27,6 +27,8 @@ struct ScriptCommand {
 
   // Throws ParseError(script, line, column, message).
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
+  // Throws OptionError(option, message) located at script:line:column (a bad option, not bad input).
+  [[noreturn]] void fail_option(std::size_t column, const std::string& option, const std::string& message) const;
   // Fails unless the command has between min and max arguments (words after the command).
   void expect_arguments(std::size_t min, std::size_t max, const char* usage) const;
   // "script:line: " for wrapping errors of the library.
@@ -46,6 +48,9 @@ auto located_call(const ScriptCommand& command, std::size_t column, F&& f) -> de
     rethrow_located(command, column, e);
   }
 }
+
+// How the script names a DecomposeOptions field ("a (gradation)", "setAreaFunction").
+std::string script_name_of(const std::string& field);
 
 // Control characters shown as '?', so a message stays one readable line.
 std::string printable(std::string_view text);

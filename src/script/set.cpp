@@ -3,6 +3,7 @@
 // paper loaded a function from a shared library (Sec. 6).
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 #include "madd/expression.hpp"
 #include "script/script_detail.hpp"
@@ -22,50 +23,83 @@ bool parse_whole(const std::string& text, unsigned long long limit, unsigned lon
   return ec == std::errc() && ptr == end && !text.empty() && text[0] != '-' && value <= limit;
 }
 
-// Applies one parameter of Table III (plus the engineering ones); returns a
-// message on a bad name or value, empty on success.
-std::string apply_parameter(const std::string& name, const std::string& value, DecomposeOptions& o) {
+// The parameters of Table III (plus the engineering ones), each with the
+// DecomposeOptions field it sets. Ranges are the library's (check_options);
+// here a value is only parsed.
+enum class ValueType : std::uint8_t { real, whole };
+struct Parameter {
+  const char* name;
+  const char* field;  // as OptionError::option() names it
+  const char* meaning;
+  ValueType type;
+};
+constexpr Parameter parameters[] = {
+    {"f", "min_angle_deg", "the minimum angle as a fraction of pi", ValueType::real},
+    {"r", "refine", "the refinement factor", ValueType::real},
+    {"a", "gradation", "the gradation factor", ValueType::real},
+    {"p", "interpolation", "the interpolation factor", ValueType::real},
+    {"i", "min_balance_quality", "the acceptable imbalance", ValueType::real},
+    {"s", "smoothing_iterations", "smoothing iterations", ValueType::whole},
+    {"smooth", "smoothing_iterations", "smoothing iterations", ValueType::whole},
+    {"ratio", "area_ratio_bound", "the area ratio bound", ValueType::real},
+    {"n", "subdomains", "the number of subdomains", ValueType::whole},
+    {"j", "threads", "worker threads, 0 = all cores", ValueType::whole},
+    {"threads", "threads", "worker threads, 0 = all cores", ValueType::whole},
+    {"seed", "seed", "the random seed", ValueType::whole},
+};
+
+const Parameter* find_parameter(const std::string& name) {
+  for (const Parameter& p : parameters)
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
+// Sets the field of `p` from `value`; false when the value does not parse
+// as the parameter's type (or does not fit the field).
+bool assign(const Parameter& p, const std::string& value, DecomposeOptions& o) {
   double x = 0;
   unsigned long long k = 0;
-  const bool real = parse_real(value, x);
-  if (name == "f") {
-    // The paper's f is the minimum angle as a fraction of pi (f = 1/3 is 60 degrees).
-    if (!real || x < 0 || x >= 0.5) return "f (the minimum angle as a fraction of pi) must be in [0, 0.5)";
-    o.min_angle_deg = x * 180.0;
-  } else if (name == "r") {
-    if (!real || x <= 0) return "r (the refinement factor) must be > 0";
-    o.refine = x;
-  } else if (name == "a") {
-    if (!real || x < 0) return "a (the gradation factor) must be >= 0";
-    o.gradation = x;
-  } else if (name == "p") {
-    if (!real || x < 0) return "p (the interpolation factor) must be >= 0";
-    o.interpolation = x;
-  } else if (name == "i") {
-    if (!real || x <= 0 || x > 1) return "i (the acceptable imbalance) must be in (0, 1]";
-    o.min_balance_quality = x;
-  } else if (name == "s" || name == "smooth") {
-    if (!parse_whole(value, 1000, k)) return name + " (smoothing iterations) must be a whole number in [0, 1000]";
-    o.smoothing_iterations = static_cast<int>(k);
-  } else if (name == "ratio") {
-    if (!real || x <= 0) return "ratio (the area ratio bound) must be > 0";
-    o.area_ratio_bound = x;
-  } else if (name == "n") {
-    if (!parse_whole(value, 0xFFFFFFFFull, k) || k == 0)
-      return "n (the number of subdomains) must be a whole number >= 1";
-    o.subdomains = static_cast<std::uint32_t>(k);
-  } else if (name == "j" || name == "threads") {
-    if (!parse_whole(value, 4096, k))
-      return name + " (worker threads, 0 = all cores) must be a whole number in [0, 4096]";
-    o.threads = static_cast<unsigned>(k);
-  } else if (name == "seed") {
-    if (!parse_whole(value, ~0ull, k)) return "seed must be a whole number";
-    o.seed = k;
-  } else {
-    return "unknown parameter '" + printable(name) + "' (parameters: f r a p i s ratio n j seed)";
+  const std::string field = p.field;
+  if (p.type == ValueType::real) {
+    if (!parse_real(value, x)) return false;
+    if (field == "min_angle_deg") o.min_angle_deg = x * 180.0;  // the paper's f: f = 1/3 is 60 degrees
+    if (field == "refine") o.refine = x;
+    if (field == "gradation") o.gradation = x;
+    if (field == "interpolation") o.interpolation = x;
+    if (field == "min_balance_quality") o.min_balance_quality = x;
+    if (field == "area_ratio_bound") o.area_ratio_bound = x;
+    return true;
   }
-  return {};
+  if (!parse_whole(value, field == "seed" ? ~0ull : 0xFFFFFFFFull, k)) return false;
+  if (field == "smoothing_iterations") {
+    if (k > 1000000) return false;
+    o.smoothing_iterations = static_cast<int>(k);
+  }
+  if (field == "subdomains") o.subdomains = static_cast<std::uint32_t>(k);
+  if (field == "threads") o.threads = static_cast<unsigned>(k);
+  if (field == "seed") o.seed = k;
+  return true;
 }
+
+std::string parameter_names() {
+  std::string names;
+  for (const Parameter& p : parameters) names += std::string(names.empty() ? "" : " ") + p.name;
+  return names;
+}
+
+} // namespace
+
+std::string script_name_of(const std::string& field) {
+  if (field == "weight_function") return "setWeightFunction";
+  if (field == "area_function") return "setAreaFunction";
+  if (field == "background_weights") return "read_weights";
+  if (field == "background_areas") return "read_areas";
+  for (const Parameter& p : parameters)
+    if (field == p.field) return std::string(p.name) + " (" + field + ")";
+  return field;
+}
+
+namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -114,14 +148,30 @@ bool looks_like_library(const std::string& word) {
 
 void script_set(const ScriptCommand& c, ScriptContext& context) {
   // All assignments of the line are checked before any applies, so a bad
-  // line changes nothing.
+  // line changes nothing. A value out of its range is a bad option, located
+  // at the value and named by its parameter (f, r, ...).
   DecomposeOptions options = context.options;
-  for (const Assignment& a : split_assignments(c)) {
-    const std::string problem = apply_parameter(a.name, a.value, options);
-    if (problem.empty()) continue;
-    const bool bad_name = problem.rfind("unknown parameter", 0) == 0;
-    c.fail(bad_name ? a.name_column : a.value_column,
-           problem + (bad_name ? std::string() : ", got '" + printable(a.value) + "'"));
+  const std::vector<Assignment> assignments = split_assignments(c);
+  for (const Assignment& a : assignments) {
+    const Parameter* p = find_parameter(a.name);
+    if (p == nullptr)
+      c.fail(a.name_column, "unknown parameter '" + printable(a.name) + "' (parameters: " + parameter_names() + ")");
+    if (!assign(*p, a.value, options))
+      c.fail_option(a.value_column, p->field,
+                    std::string(p->name) + " (" + p->meaning + ") needs " +
+                        (p->type == ValueType::real ? "a number" : "a whole number") + ", got '" + printable(a.value) + "'");
+  }
+  try {
+    check_option_ranges(options);
+  } catch (const OptionError& e) {
+    for (auto a = assignments.rbegin(); a != assignments.rend(); ++a) {
+      const Parameter* p = find_parameter(a->name);
+      if (e.option() != p->field) continue;
+      c.fail_option(a->value_column, e.option(),
+                    std::string(p->name) + " (" + p->meaning + ", " + e.option() + ") " + e.requirement() + ", got '" +
+                        printable(a->value) + "'");
+    }
+    throw;
   }
   context.options = std::move(options);
   if (context.log) context.log("set " + c.rest);

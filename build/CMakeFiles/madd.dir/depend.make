@@ -1,2 +1,0 @@
-# Empty dependencies file for madd.
-# This may be replaced when dependencies are built.

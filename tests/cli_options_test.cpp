@@ -1,0 +1,137 @@
+// The CLI only parses options: ranges and conflicts come from the library's
+// check_options, a bad option is exit 2 naming the flag, and nothing is
+// written. Runs the madd binary (skipped when the CLI is not built).
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#ifdef MADD_CLI_PATH
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status = -1;
+  std::string output;  // stdout and stderr together
+};
+
+class CliSandbox {
+public:
+  CliSandbox() : dir_(fs::temp_directory_path() / ("madd-cli-options-" + std::to_string(::getpid()))) {
+    fs::create_directories(dir_);
+  }
+  ~CliSandbox() {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  CliRun run(const std::string& arguments) const {
+    const fs::path log = dir_ / "log";
+    const std::string command = std::string("cd '") + dir_.string() + "' && '" + MADD_CLI_PATH + "' " + arguments +
+                                " > '" + log.string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  }
+
+private:
+  fs::path dir_;
+};
+
+const std::string key_poly = std::string(MADD_DATA_DIR) + "/key.poly";
+const std::string pipe_poly = std::string(MADD_DATA_DIR) + "/pipe.poly";
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+} // namespace
+
+TEST_SUITE("cli options") {
+
+TEST_CASE("an option out of its range is a usage error naming the flag, and nothing is written") {
+  const CliSandbox box;
+  struct Bad {
+    const char* arguments;
+    const char* says;
+  };
+  const Bad cases[] = {
+      {"--min-angle 0", "--min-angle must lie strictly between 0 and 90 degrees, got '0'"},
+      {"--min-angle 90", "--min-angle"},
+      {"-n 0", "--subdomains must be at least 1"},
+      {"-i 0", "--imbalance must lie in (0, 1]"},
+      {"-j 5000", "--threads must be at most 4096"},
+      {"--smoothing 1001", "--smoothing"},
+      {"-r 0", "--refine"},
+      {"-a -1", "--gradation"},
+      {"--time-limit -1", "--time-limit"},
+      {"--svg-mark-angles 200", "--svg-mark-angles"},
+      {"-p 0.5", "--interpolation only applies to boundary weights"},
+      {"--weight-fn 1 --weights w.node", "--weights cannot be combined with --weight-fn"},
+      {"--area-fn 1 --areas a.node", "--areas cannot be combined with --area-fn"},
+  };
+  for (const Bad& c : cases) {
+    CAPTURE(c.arguments);
+    const CliRun r = box.run(key_poly + " -o out.poly " + c.arguments);
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(contains(r.output, c.says), r.output);
+    CHECK_FALSE(fs::exists(box.path("out.poly")));
+  }
+}
+
+TEST_CASE("grading options that would be ignored are refused") {
+  const CliSandbox box;
+  // key.poly has no vertex weights: -a has nothing to grade by.
+  const CliRun r = box.run(key_poly + " -n 8 -a 3 -o out.poly");
+  CHECK(r.status == 2);
+  CHECK_MESSAGE(contains(r.output, "--gradation grades by the domain's vertex weights"), r.output);
+  CHECK_FALSE(fs::exists(box.path("out.poly")));
+}
+
+TEST_CASE("an area function of 0, negative or NaN is refused, like an --areas file with such a value") {
+  const CliSandbox box;
+  for (const char* function : {"0", "-1", "sqrt(-1)", "x-100"}) {
+    CAPTURE(function);
+    const CliRun r = box.run(pipe_poly + " -n 64 -o out.poly --area-fn '" + function + "'");
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(contains(r.output, "--area-fn must be finite and > 0 everywhere in the domain"), r.output);
+    CHECK_FALSE(fs::exists(box.path("out.poly")));
+  }
+  std::ofstream(box.path("zero.node")) << "2 2 1 0\n1 0 0 0.5\n2 1 1 0\n";
+  const CliRun file = box.run(pipe_poly + " -n 64 -o out.poly --areas zero.node");
+  CHECK(file.status == 3);  // a bad value in a file is bad input, located at its line
+  CHECK_MESSAGE(contains(file.output, "zero.node:3:1: node 2: a required area must be > 0"), file.output);
+  CHECK_FALSE(fs::exists(box.path("out.poly")));
+}
+
+TEST_CASE("reaching N in required-area mode is said in the summary and the report") {
+  const CliSandbox box;
+  const CliRun r = box.run(pipe_poly + " -n 10 --area-fn 0.0005 --report=r.json");
+  REQUIRE_MESSAGE(r.status == 0, r.output);
+  CHECK_MESSAGE(contains(r.output, "the maximum of 10 subdomains was reached with 10 still above the area bound"),
+                r.output);
+  std::ifstream in(box.path("r.json"));
+  std::ostringstream report;
+  report << in.rdbuf();
+  CHECK(contains(report.str(), "\"subdomains_over_area_bound\": 10"));
+  CHECK(contains(report.str(), "\"max_area_over_required\": "));
+
+  // Reached before N: no note.
+  const CliRun enough = box.run(pipe_poly + " -n 100000 --area-fn 0.05");
+  REQUIRE_MESSAGE(enough.status == 0, enough.output);
+  CHECK_MESSAGE(contains(enough.output, "required area: largest area / required area"), enough.output);
+  CHECK_FALSE(contains(enough.output, "still above the area bound"));
+}
+
+} // TEST_SUITE
+
+#endif

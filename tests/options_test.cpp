@@ -1,0 +1,249 @@
+// The one check of the options (check_options) and the error model: every
+// range refused with the field's name and ErrorKind::bad_option, the same for
+// a library caller as for the front ends; conflicting grading sources refused;
+// every error class carrying its kind.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "madd/bisect.hpp"
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/metrics.hpp"
+#include "madd/output.hpp"
+
+namespace {
+
+using madd::DecomposeOptions;
+using madd::OptionError;
+using madd::Point;
+using madd::Pslg;
+
+Pslg square(bool with_weights = false) {
+  Pslg p;
+  p.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  if (with_weights) {
+    p.attributes_per_point = 1;
+    p.attributes = {1, 2, 3, 4};
+  }
+  return p;
+}
+
+// The field OptionError names when `options` is checked, or "" when it passes.
+std::string refused_field(const std::function<void()>& check) {
+  try {
+    check();
+  } catch (const OptionError& e) {
+    CHECK(e.kind() == madd::ErrorKind::bad_option);
+    CHECK_FALSE(e.requirement().empty());
+    CHECK(std::string(e.what()).find(e.option()) != std::string::npos);
+    return e.option();
+  }
+  return {};
+}
+
+struct Case {
+  const char* field;
+  std::function<void(DecomposeOptions&)> set;
+};
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+} // namespace
+
+TEST_SUITE("options") {
+
+TEST_CASE("check_options refuses every field out of its range, naming the field") {
+  const std::vector<Case> bad = {
+      {"subdomains", [](DecomposeOptions& o) { o.subdomains = 0; }},
+      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = 0; }},
+      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = 90; }},
+      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = -5; }},
+      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = not_a_number; }},
+      {"refine", [](DecomposeOptions& o) { o.refine = 0; }},
+      {"refine", [](DecomposeOptions& o) { o.refine = infinity; }},
+      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = 0; }},
+      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = 1.0000001; }},
+      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = not_a_number; }},
+      {"threads", [](DecomposeOptions& o) { o.threads = madd::max_threads + 1; }},
+      {"max_refinement_rounds", [](DecomposeOptions& o) { o.max_refinement_rounds = -1; }},
+      {"smoothing_iterations", [](DecomposeOptions& o) { o.smoothing_iterations = -1; }},
+      {"smoothing_iterations", [](DecomposeOptions& o) { o.smoothing_iterations = 1001; }},
+      {"gradation", [](DecomposeOptions& o) { o.gradation = -0.5; }},
+      {"gradation", [](DecomposeOptions& o) { o.gradation = not_a_number; }},
+      {"interpolation", [](DecomposeOptions& o) { o.interpolation = -1; }},
+      {"area_ratio_bound", [](DecomposeOptions& o) { o.area_ratio_bound = 0; }},
+      {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = -1; }},
+      {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = not_a_number; }},
+      {"background_weights", [](DecomposeOptions& o) { o.background_weights = {{{0.5, 0.5}, -1}}; }},
+      {"background_weights", [](DecomposeOptions& o) { o.background_weights = {{{not_a_number, 0.5}, 1}}; }},
+      {"background_areas", [](DecomposeOptions& o) { o.background_areas = {{{0.5, 0.5}, 0}}; }},
+      {"background_areas", [](DecomposeOptions& o) { o.background_areas = {{{0.5, 0.5}, not_a_number}}; }},
+  };
+  for (const Case& c : bad) {
+    CAPTURE(c.field);
+    DecomposeOptions o;
+    c.set(o);
+    CHECK(refused_field([&] { madd::check_options(o); }) == c.field);
+    CHECK(refused_field([&] { madd::check_option_ranges(o); }) == c.field);
+    // decompose() refuses the same options the same way, before any work.
+    CHECK(refused_field([&] { (void)madd::decompose(square(), o); }) == c.field);
+  }
+}
+
+TEST_CASE("values at the ends of each range are accepted") {
+  const std::vector<std::function<void(DecomposeOptions&)>> good = {
+      [](DecomposeOptions& o) { o.min_angle_deg = 1e-9; },
+      [](DecomposeOptions& o) { o.min_angle_deg = 89.999; },
+      [](DecomposeOptions& o) { o.min_balance_quality = 1.0; },
+      [](DecomposeOptions& o) { o.min_balance_quality = 1e-9; },
+      [](DecomposeOptions& o) { o.threads = madd::max_threads; },
+      [](DecomposeOptions& o) { o.smoothing_iterations = 0; },
+      [](DecomposeOptions& o) { o.smoothing_iterations = 1000; },
+      [](DecomposeOptions& o) { o.max_refinement_rounds = 0; },
+      [](DecomposeOptions& o) { o.gradation = 0; },
+      [](DecomposeOptions& o) { o.time_limit_seconds = 0; },
+      [](DecomposeOptions& o) { o.background_weights = {{{0.5, 0.5}, 0}}; },
+      [](DecomposeOptions& o) { o.gradation = 2, o.interpolation = 0.5; },
+  };
+  for (const auto& set : good) {
+    DecomposeOptions o;
+    set(o);
+    CHECK(refused_field([&] { madd::check_options(o); }).empty());
+  }
+}
+
+TEST_CASE("two sources of the same grading input are refused, not silently dropped") {
+  DecomposeOptions o;
+  o.weight_function = [](double, double) { return 1.0; };
+  o.background_weights = {{{0.5, 0.5}, 1.0}};
+  CHECK(refused_field([&] { madd::check_options(o); }) == "background_weights");
+  // Each alone is a valid range: only the combination is wrong.
+  CHECK(refused_field([&] { madd::check_option_ranges(o); }).empty());
+
+  DecomposeOptions a;
+  a.area_function = [](double, double) { return 0.1; };
+  a.background_areas = {{{0.5, 0.5}, 0.1}};
+  CHECK(refused_field([&] { madd::check_options(a); }) == "background_areas");
+
+  DecomposeOptions p;
+  p.interpolation = 0.5;  // no boundary weights to interpolate
+  CHECK(refused_field([&] { madd::check_options(p); }) == "interpolation");
+  p.gradation = 1;
+  p.weight_function = [](double, double) { return 1.0; };  // weights from the function: p still unused
+  CHECK(refused_field([&] { madd::check_options(p); }) == "interpolation");
+}
+
+TEST_CASE("grading by boundary weights needs a domain that has them") {
+  DecomposeOptions o;
+  o.subdomains = 4;
+  o.gradation = 3;
+  CHECK(refused_field([&] { madd::check_options(o, square(false)); }) == "gradation");
+  CHECK(refused_field([&] { (void)madd::decompose(square(false), o); }) == "gradation");
+  CHECK(refused_field([&] { madd::check_options(o, square(true)); }).empty());
+  CHECK(madd::decompose(square(true), o).subdomains.size() == 4);
+}
+
+TEST_CASE("an area function of 0, a negative value or NaN is refused like such a background area") {
+  for (const double value : {0.0, -1.0, not_a_number, infinity}) {
+    CAPTURE(value);
+    DecomposeOptions o;
+    o.subdomains = 64;
+    o.area_function = [value](double, double) { return value; };
+    CHECK(refused_field([&] { (void)madd::decompose(square(), o); }) == "area_function");
+    DecomposeOptions b;
+    b.subdomains = 64;
+    b.background_areas = {{{0.5, 0.5}, value}};
+    CHECK(refused_field([&] { (void)madd::decompose(square(), b); }) == "background_areas");
+  }
+  // Positive only in part of the domain is refused too: the value is a size everywhere.
+  DecomposeOptions half;
+  half.subdomains = 64;
+  half.area_function = [](double x, double) { return x < 0.5 ? 0.01 : -0.01; };
+  CHECK(refused_field([&] { (void)madd::decompose(square(), half); }) == "area_function");
+}
+
+TEST_CASE("split to a required area, N is a maximum, and the result says how far it got") {
+  DecomposeOptions o;
+  o.subdomains = 6;
+  o.area_function = [](double, double) { return 0.01; };  // wants about 100 subdomains
+  const madd::Decomposition d = madd::decompose(square(), o);
+  CHECK(d.subdomains.size() == 6);
+  CHECK(d.area_ratio_bound == o.area_ratio_bound);
+  CHECK(madd::expected_subdomain_count(d, 6) == 6);
+  CHECK(madd::verify_decomposition(d, square(), madd::expected_subdomain_count(d, 6)).ok());
+  const madd::Metrics m = madd::metrics(d);
+  CHECK(m.area_ratio_bound == o.area_ratio_bound);
+  double largest_ratio = 0;
+  std::uint32_t over = 0;
+  for (const madd::Subdomain& s : d.subdomains) {
+    CHECK(s.required_area == doctest::Approx(0.01));
+    largest_ratio = std::max(largest_ratio, s.area / s.required_area);
+    over += s.area / s.required_area > o.area_ratio_bound ? 1u : 0u;
+  }
+  CHECK(m.max_area_over_required == doctest::Approx(largest_ratio));
+  CHECK(m.subdomains_over_area_bound == over);
+  CHECK(over == 6);  // every subdomain still about 16 times too large
+  CHECK(madd::format_report_json(m).find("\"subdomains_over_area_bound\": 6") != std::string::npos);
+
+  // Reached before N: fewer subdomains is the expected count, none over the bound.
+  o.subdomains = 1000;
+  o.area_function = [](double, double) { return 0.2; };
+  const madd::Decomposition e = madd::decompose(square(), o);
+  CHECK(e.subdomains.size() < 1000);
+  CHECK(madd::expected_subdomain_count(e, 1000) == e.subdomains.size());
+  CHECK(madd::metrics(e).subdomains_over_area_bound == 0);
+  CHECK(madd::metrics(e).max_area_over_required <= o.area_ratio_bound);
+
+  // A uniform decomposition asks for exactly N, and its report has no such keys.
+  DecomposeOptions u;
+  u.subdomains = 3;
+  const madd::Decomposition f = madd::decompose(square(), u);
+  CHECK(f.area_ratio_bound == 0.0);
+  CHECK(madd::expected_subdomain_count(f, 5) == 5);
+  CHECK(madd::format_report_json(madd::metrics(f)).find("area_bound") == std::string::npos);
+}
+
+TEST_CASE("bisection, partition and picture options are refused as OptionError too") {
+  madd::Graph g;
+  g.offsets = {0, 1, 2};
+  g.adjacency = {1, 0};
+  g.edge_weights = {1, 1};
+  g.vertex_weights = {1, 1};
+  madd::BisectOptions b;
+  b.target_fraction = 1.0;
+  CHECK(refused_field([&] { (void)madd::bisect(g, b); }) == "target_fraction");
+  b = {};
+  b.imbalance_tolerance = -0.1;
+  CHECK(refused_field([&] { madd::check_options(b); }) == "imbalance_tolerance");
+  CHECK(refused_field([&] { (void)madd::partition(g, 0); }) == "k");
+  madd::PartitionOptions p;
+  p.imbalance_tolerance = not_a_number;
+  CHECK(refused_field([&] { (void)madd::partition(g, 2, p); }) == "imbalance_tolerance");
+  madd::SvgOptions s;
+  s.mark_angles_below_deg = 181;
+  CHECK(refused_field([&] { madd::check_options(s); }) == "mark_angles_below_deg");
+}
+
+TEST_CASE("every error carries its kind") {
+  CHECK(OptionError("refine", "must be > 0").kind() == madd::ErrorKind::bad_option);
+  CHECK(madd::ParseError("f", 1, 2, "m").kind() == madd::ErrorKind::bad_input);
+  CHECK(madd::InvalidInputError(madd::InputProblem::other, "m").kind() == madd::ErrorKind::bad_input);
+  CHECK(madd::InputFileError("m").kind() == madd::ErrorKind::bad_input);
+  CHECK(madd::DecompositionError("m").kind() == madd::ErrorKind::decomposition);
+  CHECK(madd::OutputError("m").kind() == madd::ErrorKind::output);
+  CHECK(madd::LimitError("m").kind() == madd::ErrorKind::limit);
+  CHECK(madd::InternalError("m").kind() == madd::ErrorKind::internal);
+  const OptionError located("refine", "must be > 0", "run.madd:3:7: r must be > 0");
+  CHECK(std::string(located.what()) == "run.madd:3:7: r must be > 0");
+  CHECK(located.option() == "refine");
+  CHECK(located.requirement() == "must be > 0");
+}
+
+} // TEST_SUITE
