@@ -45,7 +45,7 @@ constexpr const char* script_help =
     "options:\n"
     "  -q, --quiet            print nothing on success\n"
     "  -h, --help             this text\n\n"
-    "exit codes: 0 success, 2 usage error, 3 bad script or input (script:line:column),\n"
+    "exit codes: 0 success, 2 usage error or bad option value, 3 bad script or input (script:line:column),\n"
     "4 no valid decomposition, 5 an output could not be written, 70 internal error\n";
 
 struct ScriptArgs {
