@@ -55,16 +55,20 @@ void print_help() {
 // lived in memory. Otherwise let write_file_atomically remove its temporary
 // file and unwind (split staging directories are removed on the way out).
 volatile std::sig_atomic_t interrupted_by = 0;
+// On a terminal the message first clears the line (a progress note may be on it).
+volatile std::sig_atomic_t stderr_is_terminal = 0;
 
 void on_interrupt(int signal_number) {
   interrupted_by = signal_number;
   if (madd::interrupt_output_writes() || writing_outputs != 0) return;
-  const char message[] = "madd: interrupted\n";
-  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  const char message[] = "\r\033[Kmadd: interrupted\n";
+  const std::size_t skip = stderr_is_terminal != 0 ? 0 : 4;
+  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message + skip, sizeof message - 1 - skip);
   ::_exit(128 + signal_number);
 }
 
 void install_interrupt_handlers() {
+  stderr_is_terminal = ::isatty(STDERR_FILENO) == 1 ? 1 : 0;
   struct sigaction action {};
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
