@@ -58,8 +58,8 @@ void print_usage() {
 }
 
 // gpmetis's options (METIS 5.1 gpmetis -help): `supported` ones become madd's
-// long option of the same name; a non-empty `only` is the one value madd
-// honours (what it does anyway); the others are refused by name.
+// long option of the same name; `only` is the one value madd takes (naming
+// what it does anyway); the unsupported ones are refused by name.
 struct GpmetisOption {
   const char* name;
   bool supported;
@@ -85,6 +85,15 @@ constexpr GpmetisOption gpmetis_options[] = {
     {"dbglvl", false, nullptr, "madd has no debug levels"},
 };
 
+// The problem with value `value` of gpmetis's option `name`, which madd only
+// takes with the value it names what madd does (-ptype=rb...); empty if none.
+std::string gpmetis_value_problem(const std::string& name, const std::string& value) {
+  for (const GpmetisOption& option : gpmetis_options)
+    if (name == option.name && option.only != nullptr && value != option.only)
+      return "-" + name + "=" + value + " is not supported: " + option.why;
+  return {};
+}
+
 // Rewrites gpmetis's single-dash options (-ufactor=30, -ufactor 30) into
 // madd's long ones (--ufactor=30), in place, before getopt sees them.
 // Returns an error message for a refused one, or for an unknown -word=value.
@@ -95,7 +104,6 @@ std::string translate_gpmetis_options(int argc, char** argv, std::vector<std::st
     if (arg == "--") break;
     if (arg.size() < 3 || arg[0] != '-' || arg[1] == '-') continue;
     const std::string name = arg.substr(1, arg.find('=') - 1);
-    const std::string value = arg.find('=') == std::string::npos ? std::string() : arg.substr(arg.find('=') + 1);
     const GpmetisOption* known = nullptr;
     for (const GpmetisOption& option : gpmetis_options)
       if (name == option.name) known = &option;
@@ -104,10 +112,6 @@ std::string translate_gpmetis_options(int argc, char** argv, std::vector<std::st
       continue;  // short options (-k8, -cq...)
     }
     if (!known->supported) return "gpmetis option -" + name + " is not supported: " + known->why;
-    if (known->only != nullptr) {
-      const std::string given = arg.find('=') != std::string::npos ? value : (i + 1 < argc ? argv[i + 1] : "");
-      if (given != known->only) return "-" + name + "=" + given + " is not supported: " + known->why;
-    }
     storage.push_back("-" + arg);
     argv[i] = storage.back().data();
   }
@@ -182,7 +186,7 @@ int run(int argc, char** argv) {
                                         {"nooutput", no_argument, nullptr, opt_nooutput},
                                         {"quiet", no_argument, nullptr, 'q'},
                                         {"help", no_argument, nullptr, 'h'},
-                                        // gpmetis's, values checked by translate_gpmetis_options
+                                        // gpmetis's: only the values naming what madd does
                                         {"ptype", required_argument, nullptr, opt_ptype},
                                         {"objtype", required_argument, nullptr, opt_objtype},
                                         {"ctype", required_argument, nullptr, opt_ctype},
@@ -218,7 +222,13 @@ int run(int argc, char** argv) {
       break;
     case opt_nooutput: args.write_output = false; break;
     case 'q': args.quiet = true; break;
-    case opt_ptype: case opt_objtype: case opt_ctype: case opt_iptype: case opt_no2hop: break;  // what madd does
+    case opt_ptype: case opt_objtype: case opt_ctype: case opt_iptype: {
+      const char* name = opt == opt_ptype ? "ptype" : opt == opt_objtype ? "objtype" : opt == opt_ctype ? "ctype" : "iptype";
+      if (const std::string problem = gpmetis_value_problem(name, optarg); !problem.empty())
+        return usage_error("partition", problem);
+      break;  // the value names what madd does
+    }
+    case opt_no2hop: break;  // madd never matches two hops away
     case 'h': print_usage(); return exit_ok;
     case ':': return usage_error("partition", std::string("option '") + argv[optind - 1] + "' needs a value");
     default: {

@@ -195,6 +195,11 @@ TEST_CASE("partition: -q, and gpmetis's -name=value options") {
     CHECK(line_count(r.err) <= 2);
     CHECK(!fs::exists(dir / "g.metis.part.4"));
   }
+  const Result kway = run_madd(dir, "partition g.metis 4 --ptype=kway");
+  CHECK(kway.code == 2);
+  CHECK(has(kway.err, "-ptype=kway is not supported"));
+  CHECK(run_madd(dir, "partition g.metis 4 -ptype kway").code == 2);
+  CHECK(!fs::exists(dir / "g.metis.part.4"));
   const Result bogus = run_madd(dir, "partition g.metis 4 -bogus=1");
   CHECK(bogus.code == 2);
   CHECK(has(bogus.err, "'-bogus=1'"));
