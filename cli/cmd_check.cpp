@@ -1,23 +1,30 @@
-// `madd check FILE.poly`: read and validate a domain, print a summary.
+// `madd check FILE.poly|FILE.node`: read and validate a domain or a point set,
+// print a summary.
 #include <getopt.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <limits>
 #include <string>
 
 #include "commands.hpp"
+#include "point_set.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/pslg.hpp"
+#include "madd/triangulation.hpp"
 
 namespace madd::cli {
 namespace {
 
 constexpr const char* check_help =
-    "usage: madd check [options] FILE.poly\n\n"
-    "Reads and validates a domain (Triangle .poly, or .node) and prints a summary:\n"
-    "vertices, segments, holes, regions, area, bounding box and shortest segment.\n\n"
+    "usage: madd check [options] FILE.poly|FILE.node\n\n"
+    "Reads and validates a domain (Triangle .poly) and prints a summary: vertices,\n"
+    "segments, holes, regions, area, bounding box and shortest segment.\n"
+    "A point set (a .node, or a .poly without segments and holes: what madd\n"
+    "triangulate takes) is checked for coordinates, duplicates and at least one\n"
+    "triangle; the summary gives points, bounding box, convex hull and closest pair.\n\n"
     "options:\n"
     "  -q, --quiet   print nothing on success; only the exit code tells\n"
     "  -h, --help    this text\n\n"
@@ -28,14 +35,23 @@ struct CheckArgs {
   bool quiet = false;
 };
 
-void print_summary(const std::string& path, const Pslg& pslg) {
+struct Box {
   double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
+};
+
+Box bounding_box(const Pslg& pslg) {
+  Box b;
   for (const Point& p : pslg.points) {
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y);
-    ymax = std::max(ymax, p.y);
+    b.xmin = std::min(b.xmin, p.x);
+    b.xmax = std::max(b.xmax, p.x);
+    b.ymin = std::min(b.ymin, p.y);
+    b.ymax = std::max(b.ymax, p.y);
   }
+  return b;
+}
+
+void print_summary(const std::string& path, const Pslg& pslg) {
+  const auto [xmin, ymin, xmax, ymax] = bounding_box(pslg);
   double shortest = std::numeric_limits<double>::infinity();
   std::size_t shortest_id = 0;
   for (std::size_t s = 0; s < pslg.segments.size(); ++s) {
@@ -56,9 +72,47 @@ void print_summary(const std::string& path, const Pslg& pslg) {
   std::printf("  shortest segment  %.17g (segment %zu)\n", shortest, shortest_id + pslg.first_index);
 }
 
+// A point set: its Delaunay triangulation gives the hull (its boundary edges,
+// and the area it covers) and the closest pair (always a Delaunay edge).
+void print_point_set_summary(const std::string& path, const Pslg& pslg, const Triangulation& tri) {
+  const auto [xmin, ymin, xmax, ymax] = bounding_box(pslg);
+  double hull_area = 0.0, closest = std::numeric_limits<double>::infinity();
+  std::size_t hull_edges = 0;
+  std::uint32_t closest_a = 0, closest_b = 0;
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    const auto& v = tri.triangles[t];
+    hull_area += signed_area(tri.points[v[0]], tri.points[v[1]], tri.points[v[2]]);
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = tri.neighbours[t][i];
+      if (u == no_index) ++hull_edges;
+      else if (u < t) continue;  // each inner edge once
+      const std::uint32_t a = v[(i + 1) % 3], b = v[(i + 2) % 3];
+      const double d = distance(tri.points[a], tri.points[b]);
+      if (d < closest) {
+        closest = d;
+        closest_a = std::min(a, b);
+        closest_b = std::max(a, b);
+      }
+    }
+  }
+  std::printf("%s: valid point set\n", path.c_str());
+  std::printf("  points            %zu\n", pslg.points.size());
+  std::printf("  attributes        %u per vertex\n", pslg.attributes_per_point);
+  std::printf("  bounding box      [%.17g, %.17g] x [%.17g, %.17g]\n", xmin, xmax, ymin, ymax);
+  std::printf("  hull              %zu vertices, area %.17g\n", hull_edges, hull_area);
+  std::printf("  closest pair      %.17g (vertices %u and %u)\n", closest, closest_a + pslg.first_index,
+              closest_b + pslg.first_index);
+  std::printf("  no segments: madd triangulate takes it; madd decompose needs a domain\n");
+}
+
 int check_body(void* context) {
   const auto& args = *static_cast<CheckArgs*>(context);
-  const Pslg pslg = read_domain(args.path);
+  const Pslg pslg = read_domain_or_points(args.path);
+  if (pslg.segments.empty()) {
+    const Triangulation tri = triangulate_points(pslg, args.path);
+    if (!args.quiet) print_point_set_summary(args.path, pslg, tri);
+    return exit_ok;
+  }
   if (!args.quiet) print_summary(args.path, pslg);
   return exit_ok;
 }

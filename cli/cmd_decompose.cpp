@@ -105,19 +105,53 @@ std::string stem_of(const std::string& path) {
   return name;
 }
 
-// A one-line progress note on stderr, only for a terminal (DESIGN.md).
+// "decomposing: 312/1000 subdomains, 1.4 s".
+std::string count_text(std::uint32_t done, std::uint32_t target, double seconds) {
+  char text[96];
+  std::snprintf(text, sizeof text, "decomposing: %u/%u subdomains, %.1f s", done, target, seconds);
+  return text;
+}
+
+// A one-line progress note on stderr, only for a terminal (DESIGN.md): the
+// phase, and while decomposing the subdomains done of N and the time since
+// the phase began, rewritten in place (\r) at most a few times a second.
+// Cleared at the end, and by the destructor when an error ends the run, so
+// that the error message starts its own line.
 class Progress {
 public:
   explicit Progress(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  ~Progress() { done(); }
+  bool enabled() const { return enabled_; }
   void say(const std::string& text) {
-    if (enabled_) std::fprintf(stderr, "\r\033[Kmadd: %s", text.c_str());
+    phase_start_ = std::chrono::steady_clock::now();
+    counted_ = false;
+    show(text);
+  }
+  // DecomposeOptions::progress: the first count at once, then every 0.25 s.
+  void count(std::uint32_t done, std::uint32_t target) {
+    const auto now = std::chrono::steady_clock::now();
+    if (counted_ && now - last_count_ < std::chrono::milliseconds(250)) return;
+    counted_ = true;
+    last_count_ = now;
+    show(count_text(done, target, std::chrono::duration<double>(now - phase_start_).count()));
   }
   void done() {
-    if (enabled_) std::fputs("\r\033[K", stderr);
+    if (enabled_ && shown_) std::fputs("\r\033[K", stderr);
+    shown_ = false;
   }
 
 private:
+  void show(const std::string& text) {
+    if (!enabled_) return;
+    std::fprintf(stderr, "\r\033[Kmadd: %s", text.c_str());
+    shown_ = true;
+  }
   bool enabled_;
+  bool shown_ = false;
+  bool counted_ = false;
+  std::chrono::steady_clock::time_point phase_start_ = std::chrono::steady_clock::now(), last_count_;
 };
 
 // A figure for the summary; "-" when it does not exist (NaN, e.g. no new angle when N = 1).
@@ -282,8 +316,11 @@ auto with_cli_option_names(F&& f) -> decltype(f()) {
 }
 
 int decompose_body(void* context) {
-  const auto& args = *static_cast<DecomposeArgs*>(context);
+  auto& args = *static_cast<DecomposeArgs*>(context);
   Progress progress(!args.quiet);
+  if (progress.enabled()) args.options.progress = [&progress](std::uint32_t done, std::uint32_t target) {
+    progress.count(done, target);
+  };
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);

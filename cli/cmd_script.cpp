@@ -41,6 +41,7 @@ constexpr const char* script_help =
     "  set NAME=VALUE ...     f (min angle / pi), r, a, p, i, s, ratio, n, j, seed\n"
     "  exit                   stop\n\n"
     "'#' starts a comment. Relative file names are relative to the current directory.\n"
+    "Options may also follow FILE; a FILE whose name starts with '-' follows '--'.\n"
     "Every decomposition is self-checked before any file is written.\n\n"
     "options:\n"
     "  -q, --quiet            print nothing on success\n"
@@ -81,8 +82,9 @@ int run_script_command(int argc, char** argv) {
   optind = 0;
   opterr = 0;
   int c;
-  // '+': stop at the first non-option, so a script named like an option needs no '--'.
-  while ((c = getopt_long(argc, argv, "+:qh", long_options, nullptr)) != -1) {
+  // Options may follow the file, as for every command; '-' (stdin) is not an
+  // option, and a script whose name starts with '-' follows '--'.
+  while ((c = getopt_long(argc, argv, ":qh", long_options, nullptr)) != -1) {
     if (c == 'h') {
       std::fputs(script_help, stdout);
       return exit_ok;

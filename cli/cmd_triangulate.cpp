@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "point_set.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"
@@ -21,11 +22,12 @@ constexpr const char* triangulate_help =
     "usage: madd triangulate [options] FILE.poly|FILE.node\n\n"
     "Constrained Delaunay triangulation of the domain in FILE.poly (holes and the\n"
     "outside removed, as Triangle -p does), or the Delaunay triangulation of the\n"
-    "points of FILE.node (covering their convex hull, as Triangle does), checked by\n"
-    "verify_triangulation, then written in Triangle's formats: PREFIX.node,\n"
-    "PREFIX.ele, PREFIX.neigh, PREFIX.edge. Ids start at the input file's first index.\n"
+    "points of FILE.node or of a FILE.poly without segments (covering their convex\n"
+    "hull, as Triangle does), checked by verify_triangulation, then written in\n"
+    "Triangle's formats: PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge.\n"
+    "Ids start at the input file's first index.\n"
     "Markers follow Triangle: constrained edges carry their segment's marker, other\n"
-    "edges 0 (hull edges 1 for a FILE.node); vertices keep a nonzero input marker,\n"
+    "edges 0 (hull edges 1 for points); vertices keep a nonzero input marker,\n"
     "else take a marker of a segment through them, else 1 on the boundary.\n\n"
     "options:\n"
     "  -o, --output PREFIX  output prefix (default: FILE without .poly or .node, plus \".1\")\n"
@@ -146,25 +148,11 @@ bool ends_with(const std::string& s, const char* suffix) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// A .node file holds points only: triangulate them over their convex hull.
-// Validation still rejects duplicates (naming both ids) and unsupported
-// coordinates; a set with no triangle at all (collinear) is refused here.
-Triangulation triangulate_points(const Pslg& pslg, const std::string& path) {
-  Triangulation tri = delaunay(pslg.points);
-  if (tri.triangle_count() == 0) {
-    const std::size_t n = pslg.points.size();
-    const std::string why = n < 3 ? "only " + std::to_string(n) + " point(s)"
-                                  : "all " + std::to_string(n) + " points lie on one line";
-    throw InvalidInputError(InputProblem::empty_domain, why + ": there is no triangle", {}, {}, path, 0, 0);
-  }
-  return tri;
-}
-
+// A point set (a .node, or a .poly without segments, as Triangle takes it)
+// is triangulated over its convex hull (cli/point_set.hpp).
 int triangulate_body(void* context) {
   const auto& args = *static_cast<Args*>(context);
-  ValidateOptions options;
-  options.allow_point_set = ends_with(args.input, ".node");
-  const Pslg pslg = read_domain(args.input, options);
+  const Pslg pslg = read_domain_or_points(args.input);
   const bool points_only = pslg.segments.empty();
   const Triangulation tri = points_only ? triangulate_points(pslg, args.input) : triangulate(pslg);
   const Verification check = verify_triangulation(tri, points_only ? nullptr : &pslg);

@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <map>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "madd/error.hpp"
@@ -33,12 +35,12 @@ void print_help() {
       "madd %s - Medial Axis Domain Decomposition for parallel mesh generation\n\n"
       "usage: madd [options] INPUT.poly          decompose (the default mode; see madd decompose --help)\n"
       "       madd COMMAND [options] ARGS...\n"
-      "       madd --help | --version\n\n"
+      "       madd help [COMMAND] | --help | --version\n\n"
       "commands:\n",
       version_string());
   for (const auto& [name, command] : commands()) std::printf("  %-12s %s\n", name.c_str(), command.summary);
   std::printf(
-      "\nEach command takes --help.\n\n"
+      "\nEach command takes --help (or: madd help COMMAND).\n\n"
       "exit codes:\n"
       "  0   success\n"
       "  2   usage error (bad command line)\n"
@@ -53,16 +55,20 @@ void print_help() {
 // lived in memory. Otherwise let write_file_atomically remove its temporary
 // file and unwind (split staging directories are removed on the way out).
 volatile std::sig_atomic_t interrupted_by = 0;
+// On a terminal the message first clears the line (a progress note may be on it).
+volatile std::sig_atomic_t stderr_is_terminal = 0;
 
 void on_interrupt(int signal_number) {
   interrupted_by = signal_number;
   if (madd::interrupt_output_writes() || writing_outputs != 0) return;
-  const char message[] = "madd: interrupted\n";
-  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+  const char message[] = "\r\033[Kmadd: interrupted\n";
+  const std::size_t skip = stderr_is_terminal != 0 ? 0 : 4;
+  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message + skip, sizeof message - 1 - skip);
   ::_exit(128 + signal_number);
 }
 
 void install_interrupt_handlers() {
+  stderr_is_terminal = ::isatty(STDERR_FILENO) == 1 ? 1 : 0;
   struct sigaction action {};
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
@@ -72,6 +78,63 @@ void install_interrupt_handlers() {
 }
 
 int exit_after(int code) { return interrupted_by != 0 ? 128 + interrupted_by : code; }
+
+// `madd help [COMMAND]`: the top-level help, or COMMAND's own --help.
+int run_help(int argc, char** argv) {
+  if (argc == 2) {
+    print_help();
+    return exit_ok;
+  }
+  const auto it = commands().find(argv[2]);
+  if (argc != 3 || it == commands().end()) {
+    if (argc == 3) std::fprintf(stderr, "madd: unknown command '%s' (try 'madd help')\n", argv[2]);
+    else std::fprintf(stderr, "madd: usage: madd help [COMMAND]\n");
+    return exit_usage;
+  }
+  char help_flag[] = "--help";
+  char* help_argv[] = {argv[2], help_flag, nullptr};
+  return it->second.run(2, help_argv);
+}
+
+// Levenshtein distance, for "did you mean".
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The command `word` is probably a typo of, or nullptr: only when `word` is
+// no option, no existing file, has no .poly/.node ending, and is within 2
+// edits (1 for names of up to 4 letters) of a command or of `help`.
+const char* mistyped_command(const std::string& word) {
+  if (word.empty() || word[0] == '-') return nullptr;
+  for (const char* ext : {".poly", ".node"}) {
+    const std::string e = ext;
+    if (word.size() >= e.size() && word.compare(word.size() - e.size(), e.size(), e) == 0) return nullptr;
+  }
+  if (::access(word.c_str(), F_OK) == 0) return nullptr;
+  const char* best = nullptr;
+  std::size_t best_distance = word.size() <= 4 ? 2 : 3;
+  const auto consider = [&](const char* name) {
+    const std::size_t d = edit_distance(word, name);
+    if (d < best_distance) {
+      best_distance = d;
+      best = name;
+    }
+  };
+  for (const auto& entry : commands()) consider(entry.second.name);
+  consider("help");
+  return best;
+}
 } // namespace
 
 CommandRegistration::CommandRegistration(Command command) { commands()[command.name] = command; }
@@ -132,7 +195,14 @@ int main(int argc, char** argv) {
   }
   // `madd --script FILE` is `madd script FILE` (the paper's maddi mode, docs/script.md).
   if (std::strcmp(argv[1], "--script") == 0) argv[1] = const_cast<char*>("script");
+  if (std::strcmp(argv[1], "help") == 0) return run_help(argc, argv);
   auto it = registry.find(argv[1]);
+  if (it == registry.end()) {
+    if (const char* guess = mistyped_command(argv[1])) {
+      std::fprintf(stderr, "madd: unknown command '%s'; did you mean '%s'?\n", argv[1], guess);
+      return exit_usage;
+    }
+  }
   install_interrupt_handlers();
   if (it != registry.end()) return exit_after(it->second.run(argc - 1, argv + 1));
   // Default mode: decomposition with the whole command line as its arguments.

@@ -70,6 +70,7 @@ struct PartitionOptions {
   double imbalance_tolerance = 0.03;  // per bisection level
   std::uint64_t seed = 1;
   bool connected = false;   // --contig
+  int refinement_passes = BisectOptions{}.refinement_passes;  // per level of every bisection (--niter)
 };
 
 // Throws OptionError on an option out of its range (partition() calls it).

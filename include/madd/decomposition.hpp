@@ -57,6 +57,19 @@ struct DecomposeOptions {
   // the same points). 0 = no limit.
   double time_limit_seconds = 0.0;
   std::size_t max_memory_bytes = 0;
+
+  // Progress: when set, called after each split is committed, with the number
+  // of subdomains so far (done: 2, 3, ... one more per call) and the target
+  // (options.subdomains; with a required area, the maximum, so the last call
+  // may have done < target). Not called when nothing is split (N = 1).
+  // Always on the thread that called decompose(), between commits, so it may
+  // touch the caller's state without locking; keep it short, since the next
+  // commit waits for it (a CLI prints a few times a second, not on every call).
+  // It sees nothing of the result and cannot change it: the output is the same
+  // with or without it, for any thread count. If it throws, decompose() stops
+  // (worker threads finish their current split and are joined) and rethrows
+  // that exception, with no partial result: a way to cancel.
+  std::function<void(std::uint32_t done, std::uint32_t target)> progress;
 };
 
 // The most worker threads DecomposeOptions::threads may ask for.

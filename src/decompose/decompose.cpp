@@ -90,6 +90,11 @@ void plan_area_round(Subdivision& sub, const detail::GradingState& grading, cons
   for (std::size_t k = 0; k < std::min(budget, over.size()); ++k) sub.faces[over[k].second].plan = 2;
 }
 
+// DecomposeOptions::progress, after a commit (on the calling thread: run_round commits there).
+void report_progress(const DecomposeOptions& options, const Subdivision& sub) {
+  if (options.progress) options.progress(static_cast<std::uint32_t>(sub.faces.size()), options.subdomains);
+}
+
 detail::SplitOptions split_options_of(const DecomposeOptions& options) {
   detail::SplitOptions split_options;
   split_options.min_angle_deg = options.min_angle_deg;
@@ -142,6 +147,7 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
                         sub.faces[g].plan = plan - k0;
                         grading.after_commit(sub, f, g);
                         insert_seconds += clock.lap();
+                        report_progress(options, sub);
                       });
     grading.end_round(sub);
   }

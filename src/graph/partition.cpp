@@ -47,6 +47,7 @@ Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions&
     bo.imbalance_tolerance = options.imbalance_tolerance;
     bo.seed = options.seed + 0x9e3779b97f4a7c15ull * task_index++;
     bo.connected = options.connected;
+    bo.refinement_passes = options.refinement_passes;
     // The first task holds every vertex in order: bisect the graph itself
     // rather than a copy.
     const bool whole = task.vertices.size() == n;
