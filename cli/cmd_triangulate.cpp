@@ -156,11 +156,7 @@ int triangulate_body(void* context) {
   const bool points_only = pslg.segments.empty();
   const Triangulation tri = points_only ? triangulate_points(pslg, args.input) : triangulate(pslg);
   const Verification check = verify_triangulation(tri, points_only ? nullptr : &pslg);
-  if (!check.ok()) {
-    std::fprintf(stderr, "madd triangulate: internal error: the triangulation failed its check: %s\n",
-                 check.problems.front().c_str());
-    return exit_internal;
-  }
+  if (!check.ok()) throw InternalError("the triangulation failed its check: " + check.problems.front());
   write_file_atomically(args.prefix + ".node", node_text(pslg, tri));
   write_file_atomically(args.prefix + ".ele", ele_text(pslg, tri));
   write_file_atomically(args.prefix + ".neigh", neigh_text(pslg, tri));
