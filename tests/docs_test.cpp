@@ -1,0 +1,213 @@
+// The documentation against the tree and against the code.
+//
+// 1. References to files. Every file a user's clone holds that talks about
+//    other files (README.md, CMakeLists.txt, docs/*.md, docs/madd.1, and every
+//    .cpp/.hpp/.h/.sh/CMakeLists.txt under src/ include/ cli/ tests/ fuzz/,
+//    fuzz/corpus excepted) is scanned for references, and each must name a
+//    file or folder that exists. The rule:
+//    - In a .md file, the target of a link or image, `[text](target)` or
+//      `![alt](target)`, without its `#fragment`, must exist relative to that
+//      .md file's folder (where a Markdown viewer looks). URLs (`scheme:...`)
+//      and pure fragments are not checked.
+//    - Anywhere, a path-like word (a run of letters, digits and `_ . / -`) is a
+//      reference when it
+//        a. starts with one of the repository's own top-level folders
+//           (src/ include/ cli/ tests/ fuzz/ data/ docs/), or
+//        b. ends in `.md`, or
+//        c. ends in `.cpp`, `.hpp` or `.h` and is a bare file name or starts
+//           with `madd/` or a stage folder (`split/chord.hpp`), as includes
+//           name them;
+//      and it must exist relative to the referencing file's folder or to the
+//      repository root (c. also relative to include/, include/madd/ and src/).
+//    - Not references: words that start with `/` (absolute paths, other
+//      machines); words containing `< > * $ { } \` (templates such as
+//      `tests/<concept>_test.cpp`, shell variables, escaped regexes); words
+//      with a one-capital-letter placeholder part (`docs/img/pipe-N.svg`);
+//      paths under any other folder (`build/pipe.svg`, `parts/pipe-0.poly`,
+//      `shared/...`), which are outputs of examples or not part of the clone.
+//    A failure names file:line and the missing target.
+// 2. Examples. Each figure a doc quotes from a command (subdomain counts,
+//    angles, max/mean ratios, a script's output) is recomputed by running that
+//    command with the CLI built from this tree (skipped when the CLI is not
+//    built), and the doc must still quote the command and the figure as
+//    printed. Change the code and the doc together.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path source_root = MADD_SOURCE_DIR;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool starts_with(const std::string& s, const std::string& head) { return s.rfind(head, 0) == 0; }
+
+bool is_word_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string_view("_./-<>*${}\\").find(c) != std::string_view::npos;
+}
+
+// A part of the word that is one capital letter alone (`pipe-N.svg`, `a/K/b`).
+bool has_placeholder_letter(const std::string& w) {
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (std::isupper(static_cast<unsigned char>(w[i])) == 0) continue;
+    const bool alone_before = i == 0 || std::isalnum(static_cast<unsigned char>(w[i - 1])) == 0;
+    const bool alone_after = i + 1 == w.size() || std::isalnum(static_cast<unsigned char>(w[i + 1])) == 0;
+    if (alone_before && alone_after) return true;
+  }
+  return false;
+}
+
+const std::vector<std::string> top_level_folders = {"src/", "include/", "cli/", "tests/", "fuzz/", "data/", "docs/"};
+const std::vector<std::string> include_prefixes = {"madd/",  "kernel/", "pslg/", "triangulation/", "graph/", "medial/",
+                                                   "subdivision/", "split/", "decompose/", "quality/", "output/",
+                                                   "script/"};
+
+// The folders (relative to the root) a word is resolved against, or none when
+// the word is not a reference.
+std::vector<fs::path> roots_for(const std::string& w, const fs::path& folder) {
+  if (w.empty() || w[0] == '/' || w.find_first_of("<>*${}\\") != std::string::npos || has_placeholder_letter(w))
+    return {};
+  for (const std::string& top : top_level_folders)
+    if (starts_with(w, top)) return {folder, "."};
+  if (ends_with(w, ".md")) return {folder, "."};
+  if (ends_with(w, ".cpp") || ends_with(w, ".hpp") || ends_with(w, ".h")) {
+    const bool bare = w.find('/') == std::string::npos;
+    const bool include_style =
+        std::any_of(include_prefixes.begin(), include_prefixes.end(), [&](const std::string& p) { return starts_with(w, p); });
+    if (bare || include_style) return {folder, ".", "include", "include/madd", "src"};
+  }
+  return {};
+}
+
+bool exists_under(const fs::path& root, const std::vector<fs::path>& folders, const std::string& target) {
+  std::error_code ignored;
+  return std::any_of(folders.begin(), folders.end(),
+                     [&](const fs::path& f) { return fs::exists(root / f / target, ignored); });
+}
+
+// "file:line: missing target" for every dangling reference in `text`, the
+// contents of the file at `rel` (relative to `root`).
+std::vector<std::string> dangling_references(const fs::path& root, const fs::path& rel, const std::string& text) {
+  std::vector<std::string> found;
+  const fs::path folder = rel.parent_path();
+  const bool markdown = rel.extension() == ".md";
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    const auto report = [&](const std::string& what) {
+      found.push_back(rel.generic_string() + ":" + std::to_string(number) + ": " + what);
+    };
+    if (markdown) {
+      for (std::size_t at = line.find("]("); at != std::string::npos; at = line.find("](", at + 2)) {
+        const std::size_t end = line.find_first_of(") \t", at + 2);
+        if (end == std::string::npos) continue;
+        std::string target = line.substr(at + 2, end - at - 2);
+        target = target.substr(0, target.find('#'));
+        const std::size_t colon = target.find(':');
+        if (target.empty() || (colon != std::string::npos && target.find('/') > colon)) continue;  // URL
+        if (!exists_under(root, {folder}, target)) report("link to missing " + target);
+      }
+    }
+    for (std::size_t i = 0; i < line.size();) {
+      if (!is_word_char(line[i])) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < line.size() && is_word_char(line[j])) ++j;
+      std::string word = line.substr(i, j - i);
+      i = j;
+      while (!word.empty() && (word.back() == '.' || word.back() == '-')) word.pop_back();
+      const std::vector<fs::path> roots = roots_for(word, folder);
+      if (!roots.empty() && !exists_under(root, roots, word)) report("missing " + word);
+    }
+  }
+  return found;
+}
+
+std::vector<fs::path> scanned_files(const fs::path& root) {
+  std::vector<fs::path> files = {"README.md", "CMakeLists.txt", "docs/madd.1"};
+  for (const auto& e : fs::directory_iterator(root / "docs"))
+    if (e.path().extension() == ".md") files.push_back(fs::relative(e.path(), root));
+  for (const char* top : {"src", "include", "cli", "tests", "fuzz"}) {
+    for (auto it = fs::recursive_directory_iterator(root / top); it != fs::recursive_directory_iterator(); ++it) {
+      if (it->is_directory() && it->path().filename() == "corpus") {
+        it.disable_recursion_pending();
+        continue;
+      }
+      const fs::path& p = it->path();
+      const std::string ext = p.extension().string();
+      if (it->is_regular_file() &&
+          (ext == ".cpp" || ext == ".hpp" || ext == ".h" || ext == ".sh" || p.filename() == "CMakeLists.txt"))
+        files.push_back(fs::relative(p, root));
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const std::string& l : lines) s += l + "\n";
+  return s;
+}
+
+} // namespace
+
+TEST_SUITE("docs") {
+  TEST_CASE("the reference rule flags missing files and leaves example outputs alone") {
+    const fs::path root = source_root;
+    const auto count = [&](const char* rel, const char* text) { return dangling_references(root, rel, text).size(); };
+    // Files a user's clone does not have, or that moved.
+    CHECK(count("src/pslg/validate.cpp", "// the rules (FORMATS.md, \"Bad input\")") == 1);
+    CHECK(count("include/madd/metrics.hpp", "// docs/QUALITY.md") == 1);
+    CHECK(count("docs/algorithm.md", "see `src/split_round.cpp`.") == 1);
+    CHECK(count("src/split/chord.cpp", "// the rule of split_chord.hpp") == 1);
+    CHECK(count("docs/api.md", "[formats](FORMATS.md) ![](img/none.svg)") == 2);
+    CHECK(count("src/split/split.cpp", "// see formats.md") == 1);  // from src/, it is docs/formats.md
+    // What exists, named as the file's folder, the root or the includes see it.
+    CHECK(count("docs/api.md", "[formats.md](formats.md), `docs/formats.md`, ![](img/pipe-64.svg), [x](#anchor)") == 0);
+    CHECK(count("src/split/split.cpp", "// chord.hpp, split/chord.hpp, madd/metrics.hpp, docs/algorithm.md.") == 0);
+    CHECK(count("README.md", "`data/pipe.poly`, include/madd/, [`docs/cli.md`](docs/cli.md), https://x.org/y.md") == 0);
+    // Outputs of examples, placeholders and other machines are not references.
+    CHECK(count("README.md", "--svg build/pipe.svg --split parts/ parts/pipe-0.poly out.svg") == 0);
+    CHECK(count("docs/algorithm.md", "--svg docs/img/pipe-N.svg, tests/<concept>_test.cpp, $dir/docs/x.md") == 0);
+    CHECK(count("docs/performance.md", "shared/peers/cgal_cdt.cpp, /usr/include/doctest/doctest.h, <sys/wait.h>") == 0);
+  }
+
+  TEST_CASE("every file the docs and comments refer to exists") {
+    const fs::path root = source_root;
+    std::vector<std::string> dangling;
+    const std::vector<fs::path> files = scanned_files(root);
+    CHECK(files.size() > 100);
+    for (const fs::path& rel : files) {
+      const std::vector<std::string> found = dangling_references(root, rel, slurp(root / rel));
+      dangling.insert(dangling.end(), found.begin(), found.end());
+    }
+    CHECK_MESSAGE(dangling.empty(), dangling.size() << " dangling references:\n" << joined(dangling));
+  }
+}
