@@ -100,7 +100,7 @@ std::string stem_of(const std::string& path) {
   return name;
 }
 
-// A one-line progress note on stderr, only for a terminal (DESIGN.md).
+// A one-line progress note on stderr, only for a terminal (docs/cli.md).
 class Progress {
 public:
   explicit Progress(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
@@ -186,7 +186,7 @@ int decompose_body(void* context) {
   progress.say("reading " + args.input);
   Pslg domain;
   try {
-    // Boundary weights are only checked (finite, >= 0) when grading uses them (FORMATS.md).
+    // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
     ValidateOptions validation;
     validation.check_weights = args.options.gradation > 0;
     domain = read_domain(args.input, validation);

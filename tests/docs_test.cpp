@@ -25,6 +25,9 @@
 //      with a one-capital-letter placeholder part (`docs/img/pipe-N.svg`);
 //      paths under any other folder (`build/pipe.svg`, `parts/pipe-0.poly`,
 //      `shared/...`), which are outputs of examples or not part of the clone.
+//    - A .md reference followed by a quoted section name (`docs/formats.md,
+//      "Bad input"`) must also find a heading in that file that starts with
+//      the name.
 //    A failure names file:line and the missing target. This file is not
 //    scanned: its own checks name missing files on purpose.
 // 2. Examples. Each figure a doc quotes from a command (subdomain counts,
@@ -111,10 +114,42 @@ std::vector<fs::path> roots_for(const std::string& w, const fs::path& folder) {
   return {};
 }
 
-bool exists_under(const fs::path& root, const std::vector<fs::path>& folders, const std::string& target) {
+// The first of `folders` under which `target` exists, as a path, or empty.
+fs::path resolve(const fs::path& root, const std::vector<fs::path>& folders, const std::string& target) {
   std::error_code ignored;
-  return std::any_of(folders.begin(), folders.end(),
-                     [&](const fs::path& f) { return fs::exists(root / f / target, ignored); });
+  for (const fs::path& f : folders)
+    if (fs::exists(root / f / target, ignored)) return root / f / target;
+  return {};
+}
+
+bool exists_under(const fs::path& root, const std::vector<fs::path>& folders, const std::string& target) {
+  return !resolve(root, folders, target).empty();
+}
+
+// The section a reference names right after a .md file, as in
+// `docs/formats.md, "Bad input"`: the quoted text, or empty.
+std::string quoted_section_after(const std::string& line, std::size_t at) {
+  while (at < line.size() && (line[at] == '`' || line[at] == ',' || line[at] == ' ')) ++at;
+  if (at >= line.size() || line[at] != '"') return {};
+  const std::size_t end = line.find('"', at + 1);
+  return end == std::string::npos ? std::string() : line.substr(at + 1, end - at - 1);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// True when the Markdown file has a heading that starts with `section`
+// (case aside): `## Graphs (madd partition)` answers to "Graphs".
+bool has_heading(const fs::path& md, const std::string& section) {
+  std::ifstream in(md);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] != '#') continue;
+    const std::size_t text = line.find_first_not_of("# ");
+    if (text != std::string::npos && starts_with(lower(line.substr(text)), lower(section))) return true;
+  }
+  return false;
 }
 
 // "file:line: missing target" for every dangling reference in `text`, the
@@ -154,7 +189,14 @@ std::vector<std::string> dangling_references(const fs::path& root, const fs::pat
       i = j;
       while (!word.empty() && (word.back() == '.' || word.back() == '-')) word.pop_back();
       const std::vector<fs::path> roots = roots_for(word, folder);
-      if (!roots.empty() && !exists_under(root, roots, word)) report(word);
+      if (roots.empty()) continue;
+      const fs::path target = resolve(root, roots, word);
+      if (target.empty()) {
+        report(word);
+        continue;
+      }
+      const std::string section = names_file_with(word, ".md") ? quoted_section_after(line, j) : std::string();
+      if (!section.empty() && !has_heading(target, section)) report(word + ", section \"" + section + "\"");
     }
   }
   return found;
@@ -200,6 +242,8 @@ TEST_SUITE("docs") {
     CHECK(count("src/split/chord.cpp", "// the rule of split_chord.hpp") == 1);
     CHECK(count("docs/api.md", "[formats](FORMATS.md) ![](img/none.svg)") == 2);
     CHECK(count("src/split/split.cpp", "// see formats.md") == 1);  // from src/, it is docs/formats.md
+    CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"No such section\")") == 1);
+    CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"Bad input\"), `docs/quality.md` \"Phase times\"") == 0);
     // What exists, named as the file's folder, the root or the includes see it.
     CHECK(count("docs/api.md", "[formats.md](formats.md), `docs/formats.md`, ![](img/pipe-64.svg), [x](#anchor)") == 0);
     CHECK(count("src/split/split.cpp", "// chord.hpp, split/chord.hpp, madd/metrics.hpp, docs/algorithm.md.") == 0);

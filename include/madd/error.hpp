@@ -1,5 +1,5 @@
 #pragma once
-// Typed errors (STYLE.md point 5). Every failure madd reports to a caller is a
+// Typed errors (docs/design.md, "Errors"). Every failure madd reports to a caller is a
 // madd::Error; the CLI maps each subclass to its own exit code (docs/cli.md).
 #include <cstdint>
 #include <stdexcept>
@@ -32,7 +32,7 @@ private:
   std::string message_;
 };
 
-// The kinds of semantically invalid input (FORMATS.md, "Bad input").
+// The kinds of semantically invalid input (docs/formats.md, "Bad input").
 enum class InputProblem : std::uint8_t {
   duplicate_vertex,
   zero_length_segment,
