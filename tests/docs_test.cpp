@@ -267,3 +267,245 @@ TEST_SUITE("docs") {
     CHECK_MESSAGE(dangling.empty(), dangling.size() << " dangling references:\n" << joined(dangling));
   }
 }
+
+// ---------------------------------------------------------------------------
+// 2. The figures the docs quote, recomputed with the CLI built from this tree.
+
+namespace {
+
+// Runs of blanks and line ends become one blank, so that a quote may wrap.
+std::string squeezed(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const bool blank = c == ' ' || c == '\n' || c == '\t' || c == '\r';
+    if (!blank) out += c;
+    else if (!out.empty() && out.back() != ' ') out += ' ';
+  }
+  return out;
+}
+
+bool doc_quotes(const std::string& doc, const std::string& text) {
+  return squeezed(slurp(source_root / doc)).find(squeezed(text)) != std::string::npos;
+}
+
+// The numbers of `text` in order, as written ("65.2", "1.07", "64").
+std::vector<std::string> numbers_in(const std::string& text) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (std::isdigit(static_cast<unsigned char>(text[i])) == 0) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])) != 0) ++j;
+    if (j + 1 < text.size() && text[j] == '.' && std::isdigit(static_cast<unsigned char>(text[j + 1])) != 0) {
+      ++j;
+      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])) != 0) ++j;
+    }
+    out.push_back(text.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+// `value` printed with as many decimals as `as_written` has.
+std::string rounded_like(double value, const std::string& as_written) {
+  const std::size_t dot = as_written.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(as_written.size() - dot - 1);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+// A number of the JSON report by key (NaN when missing or null).
+double report_value(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return std::nan("");
+  const char* start = json.c_str() + at + key.size() + 4;
+  char* end = nullptr;
+  const double v = std::strtod(start, &end);
+  return end == start ? std::nan("") : v;
+}
+
+#ifdef MADD_CLI_PATH
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() / ("madd-docs-test-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+// Runs the CLI with `arguments` (shell syntax) in `dir`; stdout and stderr go to `log`.
+int run_cli(const fs::path& dir, const std::string& arguments, const fs::path& log) {
+  const std::string command = "cd '" + dir.string() + "' && '" + MADD_CLI_PATH + "' " + arguments + " > '" +
+                              log.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A command quoted in a doc, minus its --svg output (nothing is written into
+// the source tree), plus a report into `report`.
+std::string arguments_of(const std::string& quoted, const fs::path& report) {
+  std::istringstream words(quoted);
+  std::string word, out;
+  words >> word;  // "madd"
+  while (words >> word) {
+    if (word == "--svg") {
+      words >> word;
+      continue;
+    }
+    out += word + " ";
+  }
+  return out + "-q --report='" + report.string() + "'";
+}
+#endif
+
+// A decomposition a doc shows: the command it quotes and the sentence with the
+// figures; keys[k] is the report key of the k-th number of the sentence ("" =
+// not a figure of the run).
+struct QuotedRun {
+  const char* doc;
+  const char* command;
+  const char* figures;
+  std::vector<std::string> keys;
+};
+
+const std::vector<QuotedRun> quoted_runs = {
+    {"README.md", "madd data/pipe.poly -n 64 --svg pipe.svg",
+     "minimum new angle 65.2°, median 93.0°, largest area / mean 1.07",
+     {"angle_min", "angle_median", "max_area_over_mean"}},
+    {"docs/algorithm.md", "madd data/key.poly -n 200 --min-angle 70 --svg docs/img/key-200-phi70.svg",
+     "minimum new angle 70.2°, median 94.3°, largest area / mean 1.14",
+     {"angle_min", "angle_median", "max_area_over_mean"}},
+    {"docs/grading.md", "madd docs/img/grading-key-weights.poly -n 64 -a 3 -p 0.5 --svg docs/img/grading-boundary.svg",
+     "— area max/mean 2.45, weight max/mean 1.82, min angle 63.3°",
+     {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
+    {"docs/grading.md",
+     "madd data/pipe.poly -n 64 --weights docs/img/grading-pipe-weights.node -a 20 --svg "
+     "docs/img/grading-background-weights.svg",
+     "— area max/mean 2.68, weight max/mean 1.37, min angle 69.1°",
+     {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
+    {"docs/grading.md",
+     "madd data/pipe.poly -n 1000 --areas docs/img/grading-pipe-areas.node --svg docs/img/grading-background-areas.svg",
+     "— stops at 64 subdomains (every ratio ≤ 1), min angle 61.0°", {"subdomains", "", "angle_min"}},
+    {"docs/grading.md", "madd data/key.poly -n 100 --weight-fn x+2.5 --svg docs/img/grading-weight-fn.svg",
+     "— area max/mean 2.04, weight max/mean 1.23, min angle 62.0°",
+     {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
+    {"docs/grading.md",
+     "madd data/key.poly -n 1000 --area-fn \"0.01+0.01*(x+2)^2\" --svg docs/img/grading-area-fn.svg",
+     "— stops at 532 subdomains (every ratio ≤ 1), min angle 60.1°", {"subdomains", "", "angle_min"}},
+};
+
+// A script a doc shows, verbatim, with what `madd script` prints for it.
+struct QuotedScript {
+  const char* doc;
+  const char* script;
+  const char* output;
+  std::vector<std::string> inputs;  // bundled domains it reads, from data/
+};
+
+const std::vector<QuotedScript> quoted_scripts = {
+    {"docs/script.md",
+     "read pipe.poly\nset f=0.35\ndec 400\nwrite pipe400.poly\nwriteSubdomains pipe400.dat\nexit\n",
+     "read pipe.poly: 576 points, 576 segments, 9 holes\nset f=0.35\n"
+     "dec 400: 400 subdomains, 1228 points, 1636 segments\nwrite pipe400.poly: 400 subdomains\n"
+     "writeSubdomains pipe400.dat: 400 subdomains\n",
+     {"pipe.poly"}},
+    {"docs/script.md",
+     "read key.poly\n"
+     "setWeightFunction x + 2.5           # Fig. 13, left: linear in x (x runs from -2 to 8 on the key)\n"
+     "dec 1250\n",
+     "read key.poly: 56 points, 56 segments, 1 hole\nsetWeightFunction x + 2.5\n"
+     "dec 1250: 1250 subdomains, 2595 points, 3845 segments\n",
+     {"key.poly"}},
+    {"docs/script.md",
+     "read pipe.poly\n"
+     "setAreaFunction 1e-9*(1 + r^12)     # Fig. 13, right: grows as rho^12, rho the distance to the bore's centre\n"
+     "dec 2000\n",
+     "read pipe.poly: 576 points, 576 segments, 9 holes\nsetAreaFunction 1e-9*(1 + r^12)\n"
+     "dec 2000: 1197 subdomains, 2697 points, 3902 segments\n",
+     {"pipe.poly"}},
+};
+
+} // namespace
+
+TEST_SUITE("docs") {
+  TEST_CASE("the figures the docs quote are what the code gives") {
+    for (const QuotedRun& q : quoted_runs) {
+      CAPTURE(q.doc);
+      CAPTURE(q.command);
+      CHECK_MESSAGE(doc_quotes(q.doc, q.command), "the doc no longer quotes the command");
+      CHECK_MESSAGE(doc_quotes(q.doc, q.figures), "the doc no longer quotes: " << q.figures);
+      REQUIRE(numbers_in(q.figures).size() == q.keys.size());
+    }
+    for (const QuotedScript& q : quoted_scripts) {
+      CAPTURE(q.script);
+      CHECK_MESSAGE(slurp(source_root / q.doc).find(q.script) != std::string::npos, "the doc no longer shows the script");
+      CHECK_MESSAGE(slurp(source_root / q.doc).find(q.output) != std::string::npos, "the doc no longer shows the output");
+    }
+#ifndef MADD_CLI_PATH
+    MESSAGE("skipped running the examples: the madd CLI is not built");
+#else
+    const TempDir dir("figures");
+    const fs::path report = dir.path / "report.json";
+    const fs::path log = dir.path / "log";
+    for (const QuotedRun& q : quoted_runs) {
+      CAPTURE(q.command);
+      fs::remove(report);
+      REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log));
+      const std::string json = slurp(report);
+      const std::vector<std::string> written = numbers_in(q.figures);
+      for (std::size_t k = 0; k < q.keys.size(); ++k) {
+        if (q.keys[k].empty()) continue;
+        CAPTURE(q.keys[k]);
+        CHECK(rounded_like(report_value(json, q.keys[k]), written[k]) == written[k]);
+      }
+    }
+    for (const QuotedScript& q : quoted_scripts) {
+      CAPTURE(q.script);
+      for (const std::string& input : q.inputs) fs::copy_file(source_root / "data" / input, dir.path / input,
+                                                               fs::copy_options::overwrite_existing);
+      std::ofstream(dir.path / "script.txt") << q.script;
+      REQUIRE_MESSAGE(run_cli(dir.path, "script script.txt", log) == 0, slurp(log));
+      CHECK(slurp(log) == q.output);
+    }
+#endif
+  }
+
+  TEST_CASE("README: every bundled domain decomposes at a minimum angle of 89 degrees") {
+    CHECK(doc_quotes("README.md", "any Φ0 below 90° may be asked for, and every bundled domain decomposes even at 89°"));
+#ifndef MADD_CLI_PATH
+    MESSAGE("skipped: the madd CLI is not built");
+#else
+    const TempDir dir("phi89");
+    const fs::path report = dir.path / "report.json";
+    const fs::path log = dir.path / "log";
+    std::vector<fs::path> domains;
+    for (const auto& e : fs::directory_iterator(source_root / "data"))
+      if (e.path().extension() == ".poly") domains.push_back(e.path());
+    std::sort(domains.begin(), domains.end());
+    CHECK(domains.size() >= 7);
+    for (const fs::path& domain : domains) {
+      for (const int n : {7, 256}) {
+        CAPTURE(domain);
+        CAPTURE(n);
+        std::string arguments = "'";
+        arguments += domain.string();
+        arguments += "' -n " + std::to_string(n) + " --min-angle 89 -q --report='";
+        arguments += report.string();
+        arguments += "'";
+        REQUIRE_MESSAGE(run_cli(dir.path, arguments, log) == 0, slurp(log));
+        const std::string json = slurp(report);
+        CHECK(report_value(json, "subdomains") == n);
+        CHECK(report_value(json, "angle_min") >= 89.0);
+      }
+    }
+#endif
+  }
+}
