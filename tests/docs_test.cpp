@@ -438,14 +438,16 @@ const std::vector<QuotedScript> quoted_scripts = {
 TEST_SUITE("docs") {
   TEST_CASE("the figures the docs quote are what the code gives") {
     for (const QuotedRun& q : quoted_runs) {
-      CAPTURE(q.doc);
-      CAPTURE(q.command);
+      const std::string doc = q.doc, command = q.command;
+      CAPTURE(doc);
+      CAPTURE(command);
       CHECK_MESSAGE(doc_quotes(q.doc, q.command), "the doc no longer quotes the command");
-      CHECK_MESSAGE(doc_quotes(q.doc, q.figures), "the doc no longer quotes: " << q.figures);
+      CHECK_MESSAGE(doc_quotes(q.doc, q.figures), "the doc no longer quotes: " << std::string(q.figures));
       REQUIRE(numbers_in(q.figures).size() == q.keys.size());
     }
     for (const QuotedScript& q : quoted_scripts) {
-      CAPTURE(q.script);
+      const std::string script = q.script;
+      CAPTURE(script);
       CHECK_MESSAGE(slurp(source_root / q.doc).find(q.script) != std::string::npos, "the doc no longer shows the script");
       CHECK_MESSAGE(slurp(source_root / q.doc).find(q.output) != std::string::npos, "the doc no longer shows the output");
     }
@@ -456,7 +458,8 @@ TEST_SUITE("docs") {
     const fs::path report = dir.path / "report.json";
     const fs::path log = dir.path / "log";
     for (const QuotedRun& q : quoted_runs) {
-      CAPTURE(q.command);
+      const std::string command = q.command;
+      CAPTURE(command);
       fs::remove(report);
       REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log));
       const std::string json = slurp(report);
@@ -468,7 +471,8 @@ TEST_SUITE("docs") {
       }
     }
     for (const QuotedScript& q : quoted_scripts) {
-      CAPTURE(q.script);
+      const std::string script = q.script;
+      CAPTURE(script);
       for (const std::string& input : q.inputs) fs::copy_file(source_root / "data" / input, dir.path / input,
                                                                fs::copy_options::overwrite_existing);
       std::ofstream(dir.path / "script.txt") << q.script;
