@@ -341,10 +341,11 @@ struct TempDir {
   }
 };
 
-// Runs the CLI with `arguments` (shell syntax) in `dir`; stdout and stderr go to `log`.
+// Runs the CLI with `arguments` (shell syntax) in `dir`; its standard output
+// goes to `log`, its standard error to `log` + ".err".
 int run_cli(const fs::path& dir, const std::string& arguments, const fs::path& log) {
   const std::string command = "cd '" + dir.string() + "' && '" + MADD_CLI_PATH + "' " + arguments + " > '" +
-                              log.string() + "' 2>&1";
+                              log.string() + "' 2> '" + log.string() + ".err'";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -461,7 +462,7 @@ TEST_SUITE("docs") {
       const std::string command = q.command;
       CAPTURE(command);
       fs::remove(report);
-      REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log));
+      REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log.string() + ".err"));
       const std::string json = slurp(report);
       const std::vector<std::string> written = numbers_in(q.figures);
       for (std::size_t k = 0; k < q.keys.size(); ++k) {
@@ -476,7 +477,7 @@ TEST_SUITE("docs") {
       for (const std::string& input : q.inputs) fs::copy_file(source_root / "data" / input, dir.path / input,
                                                                fs::copy_options::overwrite_existing);
       std::ofstream(dir.path / "script.txt") << q.script;
-      REQUIRE_MESSAGE(run_cli(dir.path, "script script.txt", log) == 0, slurp(log));
+      REQUIRE_MESSAGE(run_cli(dir.path, "script script.txt", log) == 0, slurp(log.string() + ".err"));
       CHECK(slurp(log) == q.output);
     }
 #endif
@@ -504,7 +505,7 @@ TEST_SUITE("docs") {
         arguments += "' -n " + std::to_string(n) + " --min-angle 89 -q --report='";
         arguments += report.string();
         arguments += "'";
-        REQUIRE_MESSAGE(run_cli(dir.path, arguments, log) == 0, slurp(log));
+        REQUIRE_MESSAGE(run_cli(dir.path, arguments, log) == 0, slurp(log.string() + ".err"));
         const std::string json = slurp(report);
         CHECK(report_value(json, "subdomains") == n);
         CHECK(report_value(json, "angle_min") >= 89.0);
