@@ -9,8 +9,9 @@
 //      `![alt](target)`, without its `#fragment`, must exist relative to that
 //      .md file's folder (where a Markdown viewer looks). URLs (`scheme:...`)
 //      and pure fragments are not checked.
-//    - Anywhere, a path-like word (a run of letters, digits and `_ . / -`) is a
-//      reference when it
+//    - Anywhere, a path-like word (a run of letters, digits, `_ . / -` and the
+//      placeholder characters below; trailing dots dropped) is a reference
+//      when it
 //        a. starts with one of the repository's own top-level folders
 //           (src/ include/ cli/ tests/ fuzz/ data/ docs/), or
 //        b. ends in `.md`, or
@@ -34,7 +35,8 @@
 //    angles, max/mean ratios, a script's output) is recomputed by running that
 //    command with the CLI built from this tree (skipped when the CLI is not
 //    built), and the doc must still quote the command and the figure as
-//    printed. Change the code and the doc together.
+//    printed; so is README's claim that every bundled domain decomposes at
+//    Phi0 = 89 degrees. Change the code and the doc together.
 #include <doctest/doctest.h>
 
 #include <algorithm>
