@@ -112,7 +112,7 @@ std::string count_text(std::uint32_t done, std::uint32_t target, double seconds)
   return text;
 }
 
-// A one-line progress note on stderr, only for a terminal (DESIGN.md): the
+// A one-line progress note on stderr, only for a terminal (docs/cli.md): the
 // phase, and while decomposing the subdomains done of N and the time since
 // the phase began, rewritten in place (\r) at most a few times a second.
 // Cleared at the end, and by the destructor when an error ends the run, so

@@ -147,7 +147,7 @@ TEST_CASE("orient2d random integers match __int128") {
 
 TEST_CASE("orient2d huge and tiny coordinates") {
   // Power-of-two scaling is exact, so signs must not change. Valid range for
-  // orient2d is about 1e-137 .. 1e153 (see src/predicates.cpp).
+  // orient2d is about 1e-137 .. 1e153 (see src/kernel/predicates.cpp).
   const Point b{12.0, 12.0};
   const Point c{24.0, 24.0};
   for (const int e : {498, 300, -300, -440}) {
@@ -275,7 +275,7 @@ TEST_CASE("incircle random integers match __int128") {
 }
 
 TEST_CASE("incircle huge and tiny coordinates") {
-  // Valid range for incircle is about 1e-60 .. 1e76 (see src/predicates.cpp).
+  // Valid range for incircle is about 1e-60 .. 1e76 (see src/kernel/predicates.cpp).
   std::mt19937_64 rng(8);
   std::uniform_real_distribution<double> ang(0.0, 6.283185307179586);
   for (const int e : {240, 100, -100, -190}) {

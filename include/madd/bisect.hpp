@@ -2,7 +2,8 @@
 // Our own multilevel graph bisector: heavy-edge matching, greedy graph
 // growing, boundary Fiduccia-Mattheyses refinement, connectivity repair.
 //
-// How it works (src/coarsen.cpp, bisect_initial.cpp, fm.cpp, bisect_connect.cpp):
+// How it works (src/graph/coarsen.cpp, src/graph/bisect_initial.cpp,
+// src/graph/fm.cpp, src/graph/bisect_connect.cpp):
 // - Coarsening: heavy-edge matching in a seeded splitmix64 order (locally
 //   shuffled blocks, for cache locality), no coarse vertex heavier than
 //   1.5 W / 100; stops near 100 vertices or when a level shrinks < 10%. The

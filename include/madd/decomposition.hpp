@@ -147,7 +147,7 @@ struct PhaseTime {
   friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
 };
 
-// decompose(), also appending the time of its phases to `phases` (QUALITY.md):
+// decompose(), also appending the time of its phases to `phases` (docs/quality.md):
 // "refine", "triangulate", "graph" and "bisect" summed over every split (on
 // all threads, so with several threads they add up to more than the wall
 // time), then "insert", committing the splits to the subdivision (one thread).

@@ -1,6 +1,6 @@
 #pragma once
 // Typed errors. Every failure madd reports to a caller is a madd::Error that
-// carries its kind; front ends map the kind to an exit code (docs/cli.md)
+// carries its kind; front ends map the kind to an exit code (docs/cli.md; docs/design.md, "Errors")
 // without asking which subclass it is. The subclasses add what a caller needs
 // to act on the error (the file position, the option, the subdomain).
 #include <cstdint>
@@ -66,7 +66,7 @@ private:
   std::string message_;
 };
 
-// The kinds of semantically invalid input (FORMATS.md, "Bad input").
+// The kinds of semantically invalid input (docs/formats.md, "Bad input").
 enum class InputProblem : std::uint8_t {
   duplicate_vertex,
   zero_length_segment,

@@ -1,6 +1,6 @@
 #pragma once
 // The quality figures of a decomposition (criteria C1-C3 of the paper, Sec. 1
-// and Sec. 7; docs/QUALITY.md) and the independent validity check.
+// and Sec. 7; docs/quality.md) and the independent validity check.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,10 +11,11 @@
 
 namespace madd {
 
-// Every figure of QUALITY.md. Angles in degrees. A figure that does not exist
+// Every figure of docs/quality.md. Angles in degrees. A figure that does not exist
 // for this decomposition (no new angle when N = 1, no separator) is NaN.
 // Quantiles follow Python's statistics.quantiles(n=10) ("exclusive" method),
-// as shared/tools/ddcheck.py does, so both tools print the same numbers.
+// as the independent Python checker used in development (ddcheck.py) does, so
+// both print the same numbers.
 struct Metrics {
   std::uint32_t subdomains = 0;
   std::uint32_t points = 0;

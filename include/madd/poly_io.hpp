@@ -30,8 +30,8 @@ PolyFile read_poly_file(const std::string& path);
 // read_poly_file + validate: the one entry point for untrusted input.
 Pslg read_domain(const std::string& path, const ValidateOptions& options = {});
 
-// Writes `pslg` as .poly text with %.17g coordinates, so that parse_poly of
-// the output gives back an equal Pslg.
+// Writes `pslg` as .poly text, each coordinate as the shortest text that reads
+// back to the same double, so that parse_poly of the output gives back an equal Pslg.
 std::string format_poly(const Pslg& pslg, std::string_view header_comment = {});
 
 // Writes text to `path` through a temporary file and a rename, so that a

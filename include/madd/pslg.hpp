@@ -57,7 +57,7 @@ struct SourceMap {
 
 struct ValidateOptions {
   // Check vertex attribute 1 as a boundary density weight (finite, >= 0);
-  // only wanted when boundary-weight grading is on (FORMATS.md).
+  // only wanted when boundary-weight grading is on (docs/formats.md).
   bool check_weights = false;
   // Accept a Pslg with no segments and no holes as a point set, to be
   // triangulated over its convex hull (madd triangulate FILE.node): only the
@@ -65,7 +65,7 @@ struct ValidateOptions {
   bool allow_point_set = false;
 };
 
-// Checks that `pslg` describes one valid domain (FORMATS.md, "Bad input"):
+// Checks that `pslg` describes one valid domain (docs/formats.md, "Bad input"):
 // no duplicate vertices, no zero-length segments, no crossing, overlapping or
 // touching segments (exact, sub-quadratic), every vertex of even degree and
 // on a segment, hole points strictly inside the domain and off every segment,

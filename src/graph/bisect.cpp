@@ -17,7 +17,7 @@ namespace {
   throw InvalidInputError(problem, message, std::move(ids));
 }
 
-// Checked once on entry (STYLE.md 5); the stages below only assert.
+// Checked once on entry (docs/design.md, "Errors"); the stages below only assert.
 void check_input(const Graph& g, const BisectOptions& o) {
   const std::size_t n = g.vertex_count();
   if (!g.offsets.empty() && g.offsets.front() != 0) reject(InputProblem::other, "graph offsets must start at 0");

@@ -1,5 +1,5 @@
 #pragma once
-// Wall-clock laps for the per-phase times of a decomposition (QUALITY.md).
+// Wall-clock laps for the per-phase times of a decomposition (docs/quality.md).
 #include <chrono>
 
 namespace madd::detail {

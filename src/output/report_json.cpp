@@ -1,5 +1,6 @@
-// Output 5: the quality report, every figure of docs/QUALITY.md as one JSON
-// object. Key names match shared/tools/ddcheck.py where both compute a figure.
+// Output 5: the quality report, every figure of docs/quality.md as one JSON
+// object. Key names match those of the independent checker used in development
+// (ddcheck.py) where both compute a figure.
 #include <charconv>
 #include <cmath>
 #include <cstdio>

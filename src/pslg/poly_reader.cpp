@@ -1,11 +1,11 @@
-// Strict reader for Triangle's .poly and .node files (FORMATS.md, "Input").
+// Strict reader for Triangle's .poly and .node files (docs/formats.md, "Input").
 //
 // Accepted as Triangle accepts it: '#' comments anywhere, blank lines, CRLF,
 // 0- or 1-based ids (the first id read decides), optional header fields
 // (dimension 2, no attributes, no markers by default), a missing regions
 // section, a region line without its max-area field (Triangle then uses the
 // attribute for both), and a vertex count of 0 meaning "read <stem>.node".
-// Stricter than Triangle, on purpose (FORMATS.md, "Bad input"): every field
+// Stricter than Triangle, on purpose (docs/formats.md, "Bad input"): every field
 // must be a whole number token (no "1.5abc", no commas), ids must run
 // consecutively from the base, extra fields on a line and any text after the
 // last section are errors, and coordinates must be finite.
@@ -31,7 +31,7 @@ struct IdBase {
 
 // n item lines of `fields` fields each need at least 2*fields*n - 1 bytes (one
 // byte per field plus a separator). Rejecting larger counts up front means a
-// lying header fails fast and never allocates (FORMATS.md, "Bad input").
+// lying header fails fast and never allocates (docs/formats.md, "Bad input").
 void check_count_fits(const PolyLexer& lx, std::uint32_t n, std::uint64_t fields, std::size_t column,
                       const char* what) {
   if (n == 0) return;

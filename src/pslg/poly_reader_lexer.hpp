@@ -65,7 +65,7 @@ public:
 
   // Rejects extra fields. Triangle silently ignores them, but in practice an
   // extra field means the header's attribute or marker count disagrees with
-  // the lines, so madd reports it instead of guessing (FORMATS.md, "Bad input").
+  // the lines, so madd reports it instead of guessing (docs/formats.md, "Bad input").
   void end_of_line(const char* what) {
     if (has_token())
       fail(cursor_, std::string("unexpected extra field after ") + what +

@@ -15,7 +15,7 @@ namespace {
 
 // Appends numbers without iostreams. Doubles use std::to_chars' shortest
 // round-trip form: parse_poly reads back the identical double, as %.17g
-// would guarantee (FORMATS.md, "Precision"), with fewer digits.
+// would guarantee (docs/formats.md, "Precision"), with fewer digits.
 class TextOut {
 public:
   explicit TextOut(std::size_t reserve) { text_.reserve(reserve); }

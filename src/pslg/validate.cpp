@@ -1,4 +1,4 @@
-// validate() and domain_area(): the semantic checks of FORMATS.md, "Bad input".
+// validate() and domain_area(): the semantic checks of docs/formats.md, "Bad input".
 // Checks run from the most local to the most global, so that each error names
 // the real cause: vertices, then segments, then intersections (exact, on a
 // grid), then the regions left after flooding from the outside and the holes.
@@ -141,7 +141,7 @@ std::vector<std::uint32_t> check_segments_and_degrees(const Pslg& p, const Repor
   for (std::uint32_t v = 0; v < p.points.size(); ++v)
     if (degree[v] == 0)
       r.fail(InputProblem::isolated_vertex,
-             r.vertex(v) + " is on no segment; isolated vertices are not supported (FORMATS.md)", {r.id(v)},
+             r.vertex(v) + " is on no segment; isolated vertices are not supported (docs/formats.md)", {r.id(v)},
              {p.points[v]}, Item::point, v);
   return degree;
 }
@@ -189,7 +189,7 @@ void check_bounds_domain(const Pslg& p, const detail::FaceMap& fm, std::uint32_t
 
 // The domain is what Triangle keeps after flooding from the outside and from
 // every hole point: it must be exactly one face of the segment graph, and
-// every segment must have it on exactly one side (FORMATS.md, "The domain").
+// every segment must have it on exactly one side (docs/formats.md, "The domain").
 void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<std::uint32_t>& degree,
                    const Reporter& r) {
   std::vector<std::uint32_t> hole_of_face(fm.ring_count(), no_index);

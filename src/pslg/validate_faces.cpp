@@ -1,6 +1,6 @@
 // Faces of the segment graph, for the region checks of validate() and for
 // domain_area(): which regions Triangle would keep after flooding from the
-// outside and from every hole point (FORMATS.md, "Holes").
+// outside and from every hole point (docs/formats.md, "Holes").
 //
 // Method: sort the half-edges around every vertex by exact angle, walk the
 // boundary of the face left of every half-edge (a "ring"), then attach each

@@ -1,5 +1,5 @@
 // Exact, grid-accelerated search for segments that cross, overlap or touch
-// other than at a shared endpoint (FORMATS.md, "Bad input").
+// other than at a shared endpoint (docs/formats.md, "Bad input").
 #include <algorithm>
 
 #include "madd/predicates.hpp"

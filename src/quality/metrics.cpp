@@ -1,4 +1,4 @@
-// The C1-C3 figures of docs/QUALITY.md (paper Sec. 1 criteria, Sec. 7 figures).
+// The C1-C3 figures of docs/quality.md (paper Sec. 1 criteria, Sec. 7 figures).
 #include "madd/metrics.hpp"
 
 #include <algorithm>

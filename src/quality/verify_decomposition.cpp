@@ -1,4 +1,4 @@
-// verify_decomposition(): recomputes every validity invariant of QUALITY.md
+// verify_decomposition(): recomputes every validity invariant of docs/quality.md
 // from the decomposition and the input domain, trusting neither.
 #include <algorithm>
 #include <cmath>
@@ -119,7 +119,7 @@ void check_uses(const Decomposition& d, const std::vector<std::vector<Use>>& use
 // The boundary pieces of each input segment lie on it and add up to it; markers.
 // A vertex a separator put on an input segment was computed in floating point
 // and is generally not exactly on it, so "on" means within 1e-9 sqrt(domain
-// area), the tolerance of QUALITY.md (and of ddcheck.py).
+// area), the tolerance of docs/quality.md (and of ddcheck.py).
 void check_boundary_pieces(const Decomposition& d, const Pslg& domain, double domain_area, ProblemLog& log) {
   const double tolerance = 1e-9 * std::sqrt(domain_area);
   std::vector<double> covered(domain.segments.size(), 0.0);

@@ -1,6 +1,6 @@
 // No two segments of a decomposition cross, overlap or touch away from a
 // shared endpoint. Reuses validate()'s exact contact test and uniform grid
-// (src/segment_grid.hpp, src/validate_detail.hpp), so there is one grid in madd.
+// (kernel/segment_grid.hpp, pslg/validate_detail.hpp), so there is one grid in madd.
 #include "madd/pslg.hpp"
 #include "pslg/validate_detail.hpp"
 #include "quality/verify_decomposition_detail.hpp"

@@ -50,7 +50,7 @@ std::string read_text_file(const std::string& path) {
 }
 
 // The decomposition every write command needs, checked once by the
-// library's own verifier: a wrong file is never written (STYLE.md point 8).
+// library's own verifier: a wrong file is never written (docs/design.md, "Verifiers at every stage").
 const Decomposition& verified_decomposition(const ScriptCommand& c, ScriptContext& context) {
   if (!context.decomposition || !context.domain)
     c.fail(c.words[0].column, "nothing to write yet: run 'dec' first");

@@ -1,7 +1,7 @@
 // Recursive-descent parser of the expression language (docs/script.md),
 // compiling straight to a postfix program. Recursion is bounded by a nesting
 // counter (max_expression_depth), so hostile input fails with a ParseError
-// instead of overflowing the stack (STYLE.md point 6).
+// instead of overflowing the stack (docs/design.md, "Errors").
 #include <array>
 #include <cctype>
 #include <charconv>

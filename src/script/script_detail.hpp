@@ -55,7 +55,7 @@ std::string script_name_of(const std::string& field);
 // Control characters shown as '?', so a message stays one readable line.
 std::string printable(std::string_view text);
 
-// The commands of Table II (script_commands.cpp, script_set.cpp).
+// The commands of Table II (commands.cpp, set.cpp).
 void script_read(const ScriptCommand& c, ScriptContext& context);
 void script_read_values(const ScriptCommand& c, ScriptContext& context, bool areas);
 void script_dec(const ScriptCommand& c, ScriptContext& context);

@@ -1,4 +1,4 @@
-// The chord fallback (split_chord.hpp): every pair of refined boundary points
+// The chord fallback (chord.hpp): every pair of refined boundary points
 // is rated by the balance it would give, in O(1) from prefix sums of the
 // shoelace terms; only balanced pairs have their end angles measured, and
 // only the best few are checked exactly against the boundary.
@@ -20,7 +20,7 @@ namespace madd::detail {
 
 namespace {
 
-constexpr double angle_margin_deg = 1e-9;  // as medial.cpp: the committed check never disagrees
+constexpr double angle_margin_deg = 1e-9;  // as medial/medial.cpp: the committed check never disagrees
 constexpr std::size_t max_exact_checks = 256;
 constexpr std::size_t max_ring_points = 4000;
 

@@ -31,7 +31,7 @@ constexpr double points_per_vertex_cap = 32.0;
 constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
 constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
-constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split_chord.hpp)
+constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split/chord.hpp)
 constexpr double chord_gain = 0.02;             // a chord must balance at least this much better
 constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
 
@@ -217,7 +217,7 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   return out;
 }
 
-// The chord fallback (split_chord.hpp) for a face whose best split so far
+// The chord fallback (split/chord.hpp) for a face whose best split so far
 // has balance quality `best` (< 0: none found), on its boundary refined at
 // half the first spacing.
 std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan,

@@ -76,7 +76,7 @@ struct EndSmoothing {
   double min_length = 0.0;       // a move never makes a partial separator shorter than this (unless it was)
 };
 
-// Sec. 5.1 step 2 on the ends of the cut separators (see split_ends.cpp).
+// Sec. 5.1 step 2 on the ends of the cut separators (see ends.cpp).
 void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s, std::vector<CutEnd>& cut,
                  double w[2], const Point interior[2]);
 // Density weight of every G_D vertex: r * area + a * (its share of the

@@ -1,6 +1,6 @@
 #pragma once
 // The global conforming planar subdivision that a decomposition grows in
-// (DESIGN.md "state lives in one place"). A split of one face is computed as
+// (docs/design.md, "The state lives in one place"). A split of one face is computed as
 // pure geometry (SplitResult) and committed here, so that neighbours share
 // every vertex by construction: no T-junctions, ever.
 #include <array>
@@ -30,7 +30,7 @@ struct SeparatorEdge {
   std::uint8_t left_side = 0;
 };
 
-// Seconds one split spent in each phase (QUALITY.md "wall time per phase").
+// Seconds one split spent in each phase (docs/quality.md, "Phase times").
 struct SplitTimes {
   double refine = 0.0, triangulate = 0.0, graph = 0.0, bisect = 0.0;
   SplitTimes& operator+=(const SplitTimes& o) {
