@@ -13,6 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
 #include "madd/metrics.hpp"

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
-#include "madd/poly_io.hpp"
 
 namespace madd::cli {
 

@@ -118,7 +118,9 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
 }
 
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases) {
-  const detail::ResourceGuard guard(options);
+  const detail::ResourceGuard guard({.time_limit_seconds = options.time_limit_seconds,
+                                     .max_memory_bytes = options.max_memory_bytes,
+                                     .subdomains = options.subdomains});
   check_options(options);
   validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);

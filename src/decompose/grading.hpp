@@ -27,7 +27,9 @@ struct GradingMode {
 // background weights are given; a weight function wins over background weights.
 GradingMode grading_mode(const DecomposeOptions& options);
 
-// Even-odd point-in-face test over all rings of `face` (a point on the boundary may go either way).
+// Exact point-in-face test over all rings of `face`. A point on the boundary
+// belongs to the face on its right (winding_number, kernel/rings.hpp), so the
+// faces of the subdivision share out every point exactly once.
 bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p);
 
 // Samples of a weight (already an integral share: value = f * cell area for

@@ -1,4 +1,4 @@
-// METIS graph-file reader (the format gpmetis reads; FORMATS.md "Graphs").
+// METIS graph-file reader (the format gpmetis reads; docs/formats.md, "Graphs").
 // Strict: every malformed input gets a ParseError naming line and column, and
 // no count from the header is trusted before the remaining text could hold it.
 #include <charconv>
@@ -7,7 +7,7 @@
 
 #include "graph/graph_detail.hpp"
 #include "madd/error.hpp"
-#include "madd/graph.hpp"
+#include "madd/metis_io.hpp"
 
 namespace madd {
 
