@@ -28,8 +28,8 @@ struct GradingMode {
 GradingMode grading_mode(const DecomposeOptions& options);
 
 // Exact point-in-face test over all rings of `face`. A point on the boundary
-// belongs to the face on its right (winding_number, kernel/rings.hpp), so the
-// faces of the subdivision share out every point exactly once.
+// belongs to the face on its right (winding_number, kernel/rings.hpp), so
+// every point of the domain is in exactly one face (docs/grading.md).
 bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p);
 
 // Samples of a weight (already an integral share: value = f * cell area for

@@ -55,9 +55,10 @@ Orientation ring_orientation(RingView ring) noexcept;
 // Exact winding number of the ring around p: how many times the ring turns
 // counter-clockwise about p (negative for clockwise turns). For p on the ring
 // the answer is that of a point an infinitesimal step to the right of p (and
-// a yet smaller step up), so that the faces of a planar subdivision give
-// every point of the plane to exactly one face (the one to its right). Use
-// locate_in_ring to tell points on the ring apart.
+// a yet smaller step up): the faces of a planar subdivision, their outer
+// rings counter-clockwise and holes clockwise, then share out the points they
+// cover, each to exactly one face (the one on its right). Use locate_in_ring
+// to tell points on the ring apart.
 int winding_number(RingView ring, Point p) noexcept;
 
 enum class RingLocation : std::int8_t { outside, on_ring, inside };
