@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
 #include "madd/metrics.hpp"

@@ -14,10 +14,11 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
 #include "madd/graph.hpp"
-#include "madd/poly_io.hpp"
+#include "madd/metis_io.hpp"
 
 namespace madd::cli {
 

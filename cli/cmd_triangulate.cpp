@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "point_set.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
-#include "madd/poly_io.hpp"
 
 namespace madd::cli {
 

@@ -8,6 +8,7 @@
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
 #include "madd/graph.hpp"
+#include "madd/metis_io.hpp"
 
 namespace {
 

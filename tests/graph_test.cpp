@@ -5,6 +5,7 @@
 
 #include "madd/error.hpp"
 #include "madd/graph.hpp"
+#include "madd/metis_io.hpp"
 
 namespace {
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
 #include "madd/metrics.hpp"

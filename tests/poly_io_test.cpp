@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 

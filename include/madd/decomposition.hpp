@@ -1,23 +1,18 @@
 #pragma once
-// The MADD decomposition (paper Sec. 3-5): options, the result value, and the
-// one free function that does the whole job.
+// The MADD decomposition (paper Sec. 3-5): options, the result value, the
+// one free function that does the whole job, and the independent check of a
+// result.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "madd/error.hpp"
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
 
 namespace madd {
-
-// A point of a background mesh with its value (a density weight or a required area).
-struct ValuedPoint {
-  Point at;
-  double value = 0.0;
-  friend bool operator==(const ValuedPoint&, const ValuedPoint&) = default;
-};
 
 // Table III of the paper, plus the engineering knobs. Angles are in degrees
 // here (the paper's `f` is a fraction of pi: f = min_angle_deg / 180).
@@ -152,5 +147,17 @@ struct PhaseTime {
 // all threads, so with several threads they add up to more than the wall
 // time), then "insert", committing the splits to the subdivision (one thread).
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases);
+
+// Recomputes every invariant of a decomposition of `domain` into
+// `expected_count` subdomains: full cover (area sum = domain_area, rel 1e-9),
+// no two segments crossing, overlapping or touching except at shared endpoints
+// (exact, orient2d, uniform grid), one CCW outer ring per subdomain with CW
+// holes inside it, conforming (each separator in two rings in opposite
+// directions, each boundary piece in one, no T-junctions), boundary pieces
+// exactly covering the input segments with the right markers, every new angle
+// >= decomposition.min_angle_deg - 1e-9 deg, interior and hole points strictly
+// inside. Never throws on a malformed decomposition: it reports problems.
+Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,
+                                  std::uint32_t expected_count);
 
 } // namespace madd

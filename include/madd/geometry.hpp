@@ -12,6 +12,14 @@ struct Point {
   friend bool operator==(const Point&, const Point&) = default;
 };
 
+// A point with a value attached: a sample of a density weight or of a
+// required area (a background mesh node, docs/grading.md).
+struct ValuedPoint {
+  Point at;
+  double value = 0.0;
+  friend bool operator==(const ValuedPoint&, const ValuedPoint&) = default;
+};
+
 inline Point operator+(Point a, Point b) noexcept { return {a.x + b.x, a.y + b.y}; }
 inline Point operator-(Point a, Point b) noexcept { return {a.x - b.x, a.y - b.y}; }
 inline Point operator*(double s, Point a) noexcept { return {s * a.x, s * a.y}; }
@@ -25,6 +33,12 @@ inline Point lerp(Point a, Point b, double t) noexcept { return {a.x + t * (b.x 
 // Signed area of triangle abc: positive when counter-clockwise (floating point;
 // for the exact sign use orient2d).
 inline double signed_area(Point a, Point b, Point c) noexcept { return 0.5 * cross(b - a, c - a); }
+inline double triangle_area(Point a, Point b, Point c) noexcept { return std::abs(signed_area(a, b, c)); }
+
+// Centroid of triangle abc (the mean of its corners).
+inline Point triangle_centroid(Point a, Point b, Point c) noexcept {
+  return {(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+}
 
 // Angle at vertex `apex` between rays apex->a and apex->b, in radians, in [0, pi].
 inline double angle_at(Point apex, Point a, Point b) noexcept {

@@ -1,8 +1,8 @@
 #pragma once
-// A compact undirected weighted graph in CSR form, and METIS graph-file I/O.
+// A compact undirected weighted graph in CSR form (METIS graph files:
+// madd/metis_io.hpp).
+#include <cstddef>
 #include <cstdint>
-#include <string>
-#include <string_view>
 #include <vector>
 
 namespace madd {
@@ -29,14 +29,5 @@ struct WeightedEdge {
 // Builds a Graph from an edge list; parallel edges are merged (weights summed)
 // and self-loops dropped. Precondition: every endpoint < vertex_weights.size().
 Graph make_graph(std::vector<double> vertex_weights, const std::vector<WeightedEdge>& edges);
-
-// Parses METIS graph text (header "n m [fmt [ncon]]", fmt 000/001/010/011,
-// '%' comments). Throws ParseError with line and column on malformed input,
-// including asymmetric adjacency and self-loops. Weights are non-negative
-// integers (edge weights positive); a blank vertex line is a vertex without
-// neighbours; duplicate neighbours are an error. Header counts are checked
-// against the remaining text before anything is allocated.
-Graph parse_metis(std::string_view text, const std::string& path = "<memory>");
-Graph read_metis_file(const std::string& path);
 
 } // namespace madd

@@ -1,5 +1,6 @@
 #pragma once
 // The whole public API of madd in one include.
+#include "madd/atomic_write.hpp"
 #include "madd/bisect.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
@@ -7,6 +8,7 @@
 #include "madd/geometry.hpp"
 #include "madd/graph.hpp"
 #include "madd/medial.hpp"
+#include "madd/metis_io.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
 #include "madd/output_formats.hpp"

@@ -1,13 +1,12 @@
 #pragma once
 // The quality figures of a decomposition (criteria C1-C3 of the paper, Sec. 1
-// and Sec. 7; docs/quality.md) and the independent validity check.
+// and Sec. 7; docs/quality.md). The independent validity check,
+// verify_decomposition, sits beside Decomposition in madd/decomposition.hpp
+// (included here, so code that found it here still compiles).
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "madd/decomposition.hpp"
-#include "madd/error.hpp"
-#include "madd/pslg.hpp"
 
 namespace madd {
 
@@ -69,17 +68,5 @@ Metrics metrics(const Decomposition& decomposition, std::vector<PhaseTime> times
 // Quantile q (1..9) of 10 over `sorted` values, Python's "exclusive" method.
 // NaN when fewer than two values.
 double decile(const std::vector<double>& sorted, int q);
-
-// Recomputes every invariant of a decomposition of `domain` into
-// `expected_count` subdomains: full cover (area sum = domain_area, rel 1e-9),
-// no two segments crossing, overlapping or touching except at shared endpoints
-// (exact, orient2d, uniform grid), one CCW outer ring per subdomain with CW
-// holes inside it, conforming (each separator in two rings in opposite
-// directions, each boundary piece in one, no T-junctions), boundary pieces
-// exactly covering the input segments with the right markers, every new angle
-// >= decomposition.min_angle_deg - 1e-9 deg, interior and hole points strictly
-// inside. Never throws on a malformed decomposition: it reports problems.
-Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,
-                                  std::uint32_t expected_count);
 
 } // namespace madd

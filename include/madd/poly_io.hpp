@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "madd/atomic_write.hpp"  // write_file_atomically was declared here before 0.2
 #include "madd/pslg.hpp"
 
 namespace madd {
@@ -33,15 +34,5 @@ Pslg read_domain(const std::string& path, const ValidateOptions& options = {});
 // Writes `pslg` as .poly text, each coordinate as the shortest text that reads
 // back to the same double, so that parse_poly of the output gives back an equal Pslg.
 std::string format_poly(const Pslg& pslg, std::string_view header_comment = {});
-
-// Writes text to `path` through a temporary file and a rename, so that a
-// failure never leaves a partial file. Throws Error on I/O failure.
-void write_file_atomically(const std::string& path, std::string_view contents);
-
-// Async-signal-safe, for a SIGINT/SIGTERM handler: from now on every
-// write_file_atomically removes its temporary file and throws OutputError
-// instead of finishing. Returns true when such a write is in progress (the
-// handler should then return and let it unwind rather than exit at once).
-bool interrupt_output_writes() noexcept;
 
 } // namespace madd

@@ -115,7 +115,9 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
 
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases) {
   check_options(options, domain);
-  const detail::ResourceGuard guard(options);
+  const detail::ResourceGuard guard({.time_limit_seconds = options.time_limit_seconds,
+                                     .max_memory_bytes = options.max_memory_bytes,
+                                     .subdomains = options.subdomains});
   validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);
   detail::GradingState grading(options, domain);

@@ -10,6 +10,9 @@
 
 #include "madd/error.hpp"
 
+#include "kernel/box.hpp"
+#include "kernel/rings.hpp"
+
 namespace madd::detail {
 
 GradingMode grading_mode(const DecomposeOptions& options) {
@@ -32,19 +35,9 @@ GradingMode grading_mode(const DecomposeOptions& options) {
 }
 
 bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p) {
-  bool inside = false;
-  for (const auto& ring : sub.faces[face].rings) {
-    const std::size_t n = ring.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Point a = sub.points[ring[k]];
-      const Point b = sub.points[ring[(k + 1) % n]];
-      // Half-open rule on y, so that a vertex at the ray's height counts once.
-      if ((a.y > p.y) == (b.y > p.y)) continue;
-      const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-      if (x > p.x) inside = !inside;
-    }
-  }
-  return inside;
+  int winding = 0;
+  for (const auto& ring : sub.faces[face].rings) winding += winding_number(RingView(sub.points, ring), p);
+  return winding != 0;
 }
 
 namespace {
@@ -61,14 +54,10 @@ double checked_required_area(const std::function<double(double, double)>& area_f
 } // namespace
 
 FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const DecomposeOptions& options) {
-  Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
-  for (std::uint32_t v : sub.faces[face].rings[0]) {
-    const Point q = sub.points[v];
-    lo = Point{std::min(lo.x, q.x), std::min(lo.y, q.y)};
-    hi = Point{std::max(hi.x, q.x), std::max(hi.y, q.y)};
-  }
-  const double dx = (hi.x - lo.x) / grid_cells;
-  const double dy = (hi.y - lo.y) / grid_cells;
+  Box box;
+  for (std::uint32_t v : sub.faces[face].rings[0]) box.add(sub.points[v]);
+  const double dx = box.width() / grid_cells;
+  const double dy = box.height() / grid_cells;
   FaceSamples out;
   auto take = [&](Point q, double cell_area) {
     // A density cannot be negative: negative and NaN values count as 0.
@@ -79,7 +68,7 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const D
   // Cell centres, so that the weight is a midpoint-rule integral of f over the face.
   for (int i = 0; i < grid_cells; ++i) {
     for (int j = 0; j < grid_cells; ++j) {
-      const Point q{lo.x + (i + 0.5) * dx, lo.y + (j + 0.5) * dy};
+      const Point q{box.lo.x + (i + 0.5) * dx, box.lo.y + (j + 0.5) * dy};
       if (point_in_face(sub, face, q)) take(q, dx * dy);
     }
   }

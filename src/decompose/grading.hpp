@@ -27,7 +27,9 @@ struct GradingMode {
 // background weights are given (check_options refuses both at once).
 GradingMode grading_mode(const DecomposeOptions& options);
 
-// Even-odd point-in-face test over all rings of `face` (a point on the boundary may go either way).
+// Exact point-in-face test over all rings of `face`. A point on the boundary
+// belongs to the face on its right (winding_number, kernel/rings.hpp), so
+// every point of the domain is in exactly one face (docs/grading.md).
 bool point_in_face(const Subdivision& sub, std::uint32_t face, Point p);
 
 // Samples of a weight (already an integral share: value = f * cell area for

@@ -7,7 +7,7 @@
 
 #include "graph/graph_detail.hpp"
 #include "madd/error.hpp"
-#include "madd/graph.hpp"
+#include "madd/metis_io.hpp"
 
 namespace madd {
 

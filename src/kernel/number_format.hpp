@@ -1,5 +1,5 @@
 #pragma once
-// Number formatting shared by the output writers.
+// Number formatting shared by the output writers and the messages.
 #include <charconv>
 #include <cstdint>
 #include <string>
@@ -18,6 +18,13 @@ inline void append_shortest(std::string& out, double v) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
   out.append(buffer, result.ptr);
+}
+
+// v as %.17g would write it (every digit, so the exact value), for messages.
+inline std::string number_text(double v) {
+  std::string text;
+  append_g17(text, v);
+  return text;
 }
 
 inline void append_int(std::string& out, std::int64_t v) {

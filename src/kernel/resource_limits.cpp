@@ -23,11 +23,11 @@ std::size_t resident_bytes() noexcept {
   return static_cast<std::size_t>(resident) * static_cast<std::size_t>(page);
 }
 
-ResourceGuard::ResourceGuard(const DecomposeOptions& options)
+ResourceGuard::ResourceGuard(const Limits& limits)
     : start_(std::chrono::steady_clock::now()),
-      time_limit_(options.time_limit_seconds),
-      memory_limit_(options.max_memory_bytes),
-      subdomains_(options.subdomains) {
+      time_limit_(limits.time_limit_seconds),
+      memory_limit_(limits.max_memory_bytes),
+      subdomains_(limits.subdomains) {
   if (!(time_limit_ >= 0.0)) {
     throw InvalidInputError(InputProblem::other, "the time limit must be >= 0 seconds (0 = none)");
   }

@@ -6,9 +6,14 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "madd/decomposition.hpp"
-
 namespace madd::detail {
+
+// What ResourceGuard enforces (0 = no limit), and the run's size for its message.
+struct Limits {
+  double time_limit_seconds = 0.0;
+  std::size_t max_memory_bytes = 0;
+  std::uint32_t subdomains = 0;  // N, to say "k of N subdomains done"
+};
 
 // Resident set size of this process in bytes, read from /proc/self/statm;
 // 0 when it cannot be read (then the memory limit is not enforced).
@@ -19,7 +24,7 @@ std::size_t resident_bytes() noexcept;
 // /proc read when a memory limit is set), so it may run once per split.
 class ResourceGuard {
 public:
-  explicit ResourceGuard(const DecomposeOptions& options);
+  explicit ResourceGuard(const Limits& limits);
   // `done`: subdomains finished so far, for the message.
   void check(std::size_t done) const;
 

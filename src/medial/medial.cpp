@@ -7,6 +7,8 @@
 #include <numbers>
 #include <numeric>
 
+#include "kernel/angles.hpp"
+#include "kernel/union_find.hpp"
 #include "madd/predicates.hpp"
 
 namespace madd {
@@ -17,26 +19,10 @@ namespace {
 // committed geometry never disagrees at the last bit.
 constexpr double angle_margin_deg = 1e-9;
 
-// Counter-clockwise angle (degrees, [0, 360)) from direction o->u to o->w.
-double ccw_angle(Point o, Point u, Point w) {
-  const double base = degrees(angle_at(o, u, w));
-  return orient2d(o, u, w) < 0.0 ? 360.0 - base : base;
-}
-
-double triangle_area(Point a, Point b, Point c) { return std::abs(signed_area(a, b, c)); }
-
 // Sec. 5.1: f0 = 1 / (phi - Phi0 + 1) with angles in radians, phi capped at pi/2.
 double angle_coefficient(double angle_deg, double min_angle_deg) {
   const double phi = radians(std::min(angle_deg, 90.0));
   return 1.0 / (phi - radians(min_angle_deg) + 1.0);
-}
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
 }
 
 double end_angle(const Triangulation& tri, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards) {
@@ -48,9 +34,9 @@ double end_angle(const Triangulation& tri, std::span<const BoundaryLinks> links,
 } // namespace
 
 double boundary_angle(Point at, Point prev, Point next, Point towards) {
-  const double wedge = ccw_angle(at, next, prev);
-  const double a1 = ccw_angle(at, next, towards);
-  const double a2 = ccw_angle(at, towards, prev);
+  const double wedge = detail::ccw_angle_deg(at, next, prev);
+  const double a1 = detail::ccw_angle_deg(at, next, towards);
+  const double a2 = detail::ccw_angle_deg(at, towards, prev);
   if (wedge <= 0.0 || a1 <= 0.0 || a2 <= 0.0) return -1.0;
   if (std::abs(a1 + a2 - wedge) > 1e-6) return -1.0;  // outside the wedge
   return std::min(a1, a2);
@@ -206,14 +192,14 @@ void contract(MedialGraph& g, const std::vector<double>& weights, const std::vec
   std::iota(parent.begin(), parent.end(), 0u);
   for (const MedialEdge& e : g.edges) {
     if (e.acceptable) continue;
-    const std::uint32_t a = find_root(parent, e.left);
-    const std::uint32_t b = find_root(parent, e.right);
+    const std::uint32_t a = detail::find_root(parent, e.left);
+    const std::uint32_t b = detail::find_root(parent, e.right);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   }
   g.coarse.assign(n, no_index);
   std::vector<double> coarse_weights;
   for (std::uint32_t v = 0; v < n; ++v) {
-    const std::uint32_t r = find_root(parent, v);
+    const std::uint32_t r = detail::find_root(parent, v);
     if (g.coarse[r] == no_index) {
       g.coarse[r] = static_cast<std::uint32_t>(coarse_weights.size());
       coarse_weights.push_back(0.0);

@@ -5,9 +5,9 @@
 #include <system_error>
 #include <unistd.h>
 
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/output.hpp"
-#include "madd/poly_io.hpp"
 
 namespace madd {
 

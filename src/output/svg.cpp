@@ -6,10 +6,10 @@
 #include <cstdio>
 
 #include "madd/error.hpp"
+#include "kernel/number_format.hpp"
+#include "kernel/rings.hpp"
 #include "madd/output.hpp"
 #include "quality/metrics_detail.hpp"
-#include "kernel/number_format.hpp"
-#include "quality/verify_decomposition_detail.hpp"
 
 namespace madd {
 
@@ -142,9 +142,10 @@ Point label_point(const Decomposition& d, const Subdomain& sub) {
     }
   if (twice == 0.0) return sub.interior_point;
   const Point centroid{o.x + cx / (3.0 * twice), o.y + cy / (3.0 * twice)};
-  bool inside = detail::locate_in_ring(d.points, sub.rings[0], centroid) > 0;
+  using detail::RingLocation, detail::RingView;
+  bool inside = detail::locate_in_ring(RingView(d.points, sub.rings[0]), centroid) == RingLocation::inside;
   for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
-    inside = detail::locate_in_ring(d.points, sub.rings[r], centroid) < 0;
+    inside = detail::locate_in_ring(RingView(d.points, sub.rings[r]), centroid) == RingLocation::outside;
   return inside ? centroid : sub.interior_point;
 }
 

@@ -1,36 +1,25 @@
-// Writer for Triangle's .poly format, and the atomic file write used by every
-// output of madd.
-#include <atomic>
-#include <cerrno>
-#include <charconv>
-#include <cstdio>
-#include <cstring>
-#include <unistd.h>
+// Writer for Triangle's .poly format (docs/formats.md).
+#include <cstdint>
+#include <string>
 
-#include "madd/error.hpp"
+#include "kernel/number_format.hpp"
 #include "madd/poly_io.hpp"
 
 namespace madd {
 namespace {
 
-// Appends numbers without iostreams. Doubles use std::to_chars' shortest
-// round-trip form: parse_poly reads back the identical double, as %.17g
-// would guarantee (docs/formats.md, "Precision"), with fewer digits.
+// Appends numbers without iostreams. Doubles take the shortest text that
+// reads back as the same double, so parse_poly gives back the identical
+// Pslg, as %.17g would (docs/formats.md, "Precision"), with fewer digits.
 class TextOut {
 public:
   explicit TextOut(std::size_t reserve) { text_.reserve(reserve); }
   TextOut& num(double v) {
-    char buf[40];
-    auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    (void)ec;
-    text_.append(buf, ptr);
+    detail::append_shortest(text_, v);
     return *this;
   }
   TextOut& num(std::int64_t v) {
-    char buf[24];
-    auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    (void)ec;
-    text_.append(buf, ptr);
+    detail::append_int(text_, v);
     return *this;
   }
   TextOut& id(std::size_t index, std::uint32_t base) { return num(static_cast<std::int64_t>(index + base)); }
@@ -104,54 +93,6 @@ std::string format_poly(const Pslg& pslg, std::string_view header_comment) {
   write_segments(out, pslg);
   write_holes_and_regions(out, pslg);
   return out.take();
-}
-
-namespace {
-// Set from a signal handler (interrupt_output_writes), read by the writer:
-// lock-free atomics are async-signal-safe.
-std::atomic<bool> interrupt_requested{false};
-std::atomic<int> writes_in_flight{0};
-static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
-
-struct InFlight {
-  InFlight() { ++writes_in_flight; }
-  ~InFlight() { --writes_in_flight; }
-  InFlight(const InFlight&) = delete;
-  InFlight& operator=(const InFlight&) = delete;
-};
-
-void throw_if_interrupted(const std::string& path) {
-  if (interrupt_requested.load()) throw OutputError(path + ": interrupted; the file was not written");
-}
-} // namespace
-
-bool interrupt_output_writes() noexcept {
-  interrupt_requested.store(true);
-  return writes_in_flight.load() > 0;
-}
-
-void write_file_atomically(const std::string& path, std::string_view contents) {
-  const InFlight in_flight;
-  throw_if_interrupted(path);
-  const std::string tmp = path + ".tmp." + std::to_string(static_cast<long long>(::getpid()));
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
-  const bool written = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
-  const int saved = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (interrupt_requested.load()) {  // a signal arrived while writing: leave nothing behind
-    std::remove(tmp.c_str());
-    throw_if_interrupted(path);
-  }
-  if (!written || !closed) {
-    std::remove(tmp.c_str());
-    throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    throw OutputError(path + ": cannot rename '" + tmp + "' into place: " + std::strerror(err));
-  }
 }
 
 } // namespace madd

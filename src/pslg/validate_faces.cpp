@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "kernel/rings.hpp"
+#include "kernel/union_find.hpp"
 #include "madd/predicates.hpp"
 #include "pslg/validate_detail.hpp"
 
@@ -71,27 +73,19 @@ std::uint32_t next_half_edge(const Pslg& p, const Star& st, std::uint32_t h) {
 void walk_rings(const Pslg& p, const Star& st, FaceMap& fm) {
   const auto halves = static_cast<std::uint32_t>(2 * p.segments.size());
   fm.ring_of.assign(halves, no_index);
+  std::vector<std::uint32_t> ring;
   for (std::uint32_t h0 = 0; h0 < halves; ++h0) {
     if (fm.ring_of[h0] != no_index) continue;
     const auto r = static_cast<std::uint32_t>(fm.ring_area.size());
-    const Point ref = p.points[origin(p, h0)];
-    double twice_area = 0.0;
+    ring.clear();
     std::uint32_t h = h0;
     do {
       fm.ring_of[h] = r;
-      twice_area += cross(p.points[origin(p, h)] - ref, p.points[dest(p, h)] - ref);
+      ring.push_back(origin(p, h));
       h = next_half_edge(p, st, h);
     } while (h != h0);
-    fm.ring_area.push_back(0.5 * twice_area);
+    fm.ring_area.push_back(ring_signed_area(RingView(p.points, ring)));
   }
-}
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
 }
 
 // The lexicographically smallest vertex of every connected component.

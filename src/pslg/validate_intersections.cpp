@@ -2,6 +2,7 @@
 // other than at a shared endpoint (docs/formats.md, "Bad input").
 #include <algorithm>
 
+#include "kernel/containment.hpp"
 #include "madd/predicates.hpp"
 #include "pslg/validate_detail.hpp"
 
@@ -124,11 +125,7 @@ std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& 
   const std::uint32_t col = grid.col_of(p.x);
   for (const auto& entry : grid.row_range(grid.row_of(p.y), col, col)) {
     const std::uint32_t s = entry.segment; // ascending within a cell: the first hit is the smallest
-    const Point a = pslg.points[pslg.segments[s].a], b = pslg.points[pslg.segments[s].b];
-    if (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x) || p.y < std::min(a.y, b.y) ||
-        p.y > std::max(a.y, b.y))
-      continue;
-    if (orient2d(a, b, p) == 0.0) return s;
+    if (on_segment(pslg.points[pslg.segments[s].a], pslg.points[pslg.segments[s].b], p)) return s;
   }
   return std::nullopt;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "kernel/rings.hpp"
 #include "quality/metrics_detail.hpp"
 
 namespace madd {
@@ -125,8 +126,7 @@ Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
   std::vector<double> areas;
   double weight_sum = 0.0;
   for (const Subdomain& sub : d.subdomains) {
-    double area = 0.0;
-    for (const auto& ring : sub.rings) area += detail::ring_signed_area(d.points, ring);
+    const double area = detail::rings_area(d.points, sub.rings);
     areas.push_back(area);
     m.domain_area += area;
     weight_sum += sub.weight;

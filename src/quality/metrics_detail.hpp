@@ -1,5 +1,6 @@
 #pragma once
-// Ring geometry shared by metrics() and verify_decomposition().
+// The new angles of a decomposition, shared by metrics(), verify_decomposition()
+// and the SVG output.
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -8,16 +9,6 @@
 #include "madd/decomposition.hpp"
 
 namespace madd::detail {
-
-// Signed area of a closed ring of point indices (positive when CCW), summed
-// relative to the first vertex to keep the products small.
-inline double ring_signed_area(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring) {
-  if (ring.size() < 3) return 0.0;
-  const Point o = points[ring[0]];
-  double twice = 0.0;
-  for (std::size_t k = 1; k + 1 < ring.size(); ++k) twice += cross(points[ring[k]] - o, points[ring[k + 1]] - o);
-  return 0.5 * twice;
-}
 
 // Interior angle in degrees, in [0, 360), at `at` of a ring walked with the
 // interior on its left (outer rings CCW, hole rings CW): the counter-clockwise

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "madd/metrics.hpp"
+#include "kernel/number_format.hpp"
+#include "kernel/rings.hpp"
+#include "madd/decomposition.hpp"
 #include "quality/metrics_detail.hpp"
 #include "quality/verify_decomposition_detail.hpp"
 
@@ -11,7 +13,11 @@ namespace madd {
 
 namespace {
 
+using detail::Orientation;
 using detail::ProblemLog;
+using detail::RingLocation;
+using detail::RingView;
+using detail::locate_in_ring;
 using detail::point_text;
 
 std::string sub_name(std::size_t s) { return "subdomain " + std::to_string(s); }
@@ -76,18 +82,18 @@ std::vector<std::vector<Use>> check_rings(const Decomposition& d, double domain_
         }
         uses[sub.ring_segments[r][k]].push_back({s, g.a == p});
       }
-      const double ring_area = detail::ring_signed_area(d.points, ring);
-      area += ring_area;
-      if (r == 0 && !(ring_area > 0.0)) log.add(sub_name(s) + " outer ring is not counter-clockwise");
-      if (r > 0 && !(ring_area < 0.0)) log.add(sub_name(s) + " hole ring " + std::to_string(r) + " is not clockwise");
+      area += detail::ring_signed_area(RingView(d.points, ring));
+      const Orientation turn = detail::ring_orientation(RingView(d.points, ring));
+      if (r == 0 && turn != Orientation::counter_clockwise) log.add(sub_name(s) + " outer ring is not counter-clockwise");
+      if (r > 0 && turn != Orientation::clockwise) log.add(sub_name(s) + " hole ring " + std::to_string(r) + " is not clockwise");
       if (r > 0) {
         const Point probe = midpoint(d.points[ring[0]], d.points[ring[1]]);
-        if (detail::locate_in_ring(d.points, sub.rings[0], probe) < 0)
+        if (locate_in_ring(RingView(d.points, sub.rings[0]), probe) == RingLocation::outside)
           log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies outside its outer ring (not one connected polygon)");
         // A hole inside another hole would be a second, separate piece. Quadratic
         // in the hole count, so only checked where that stays cheap.
         for (std::size_t q = 1; q < sub.rings.size() && sub.rings.size() <= 1000; ++q)
-          if (q != r && detail::locate_in_ring(d.points, sub.rings[q], probe) > 0)
+          if (q != r && locate_in_ring(RingView(d.points, sub.rings[q]), probe) == RingLocation::inside)
             log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies inside hole ring " + std::to_string(q) +
                     " (not one connected polygon)");
       }
@@ -174,12 +180,12 @@ void check_points(const Decomposition& d, ProblemLog& log) {
 void check_inner_points(const Decomposition& d, ProblemLog& log) {
   for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
     const Subdomain& sub = d.subdomains[s];
-    bool inside = detail::locate_in_ring(d.points, sub.rings[0], sub.interior_point) > 0;
+    bool inside = locate_in_ring(RingView(d.points, sub.rings[0]), sub.interior_point) == RingLocation::inside;
     for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
-      inside = detail::locate_in_ring(d.points, sub.rings[r], sub.interior_point) < 0;
+      inside = locate_in_ring(RingView(d.points, sub.rings[r]), sub.interior_point) == RingLocation::outside;
     if (!inside) log.add(sub_name(s) + " interior point " + point_text(sub.interior_point) + " is not strictly inside it");
     for (std::size_t h = 0; h < sub.hole_points.size() && h + 1 < sub.rings.size(); ++h)
-      if (detail::locate_in_ring(d.points, sub.rings[h + 1], sub.hole_points[h]) <= 0)
+      if (locate_in_ring(RingView(d.points, sub.rings[h + 1]), sub.hole_points[h]) != RingLocation::inside)
         log.add(sub_name(s) + " hole point " + point_text(sub.hole_points[h]) + " is not strictly inside hole ring " +
                 std::to_string(h + 1));
   }
@@ -215,7 +221,7 @@ Verification verify_decomposition(const Decomposition& d, const Pslg& domain, st
   check_angles(d, log);
   double total = 0.0;
   for (const Subdomain& sub : d.subdomains)
-    for (const auto& ring : sub.rings) total += detail::ring_signed_area(d.points, ring);
+    for (const auto& ring : sub.rings) total += detail::ring_signed_area(RingView(d.points, ring));
   if (!(std::abs(total - area) <= 1e-9 * area))
     log.add("the subdomains' areas add up to " + detail::number_text(total) + " but the domain's is " +
             detail::number_text(area) + ": a gap or an overlap");

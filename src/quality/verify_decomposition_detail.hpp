@@ -30,12 +30,7 @@ private:
 void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
                              ProblemLog& log);
 
-// Exact point-in-ring test: 1 strictly inside, 0 on the ring, -1 outside
-// (nonzero winding number, orient2d for every sign).
-int locate_in_ring(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring, Point p);
-
 // "(x, y)" with full precision, for messages.
 std::string point_text(Point p);
-std::string number_text(double v);
 
 } // namespace madd::detail

@@ -2,13 +2,14 @@
 // Table II): read, read_weights, read_areas, dec, write, writeSubdomains.
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "madd/metrics.hpp"
+#include "kernel/number_format.hpp"
+#include "madd/atomic_write.hpp"
+#include "madd/decomposition.hpp"
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "script/script_detail.hpp"
@@ -66,12 +67,6 @@ const Decomposition& verified_decomposition(const ScriptCommand& c, ScriptContex
   }
   context.verified = true;
   return d;
-}
-
-std::string number_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
 }
 
 // decompose(), its errors located at the script line; a bad option is said

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "madd/predicates.hpp"
+#include "kernel/box.hpp"
+#include "kernel/containment.hpp"
 #include "split/refine.hpp"
 #include "split/split.hpp"
 
@@ -43,36 +44,28 @@ void add_boundary_share(const MedialGraph& g, const Triangulation& tri, const Fa
   }
 }
 
-bool contains(const std::array<Point, 3>& c, Point p) {
-  return orient2d(c[0], c[1], p) >= 0.0 && orient2d(c[1], c[2], p) >= 0.0 && orient2d(c[2], c[0], p) >= 0.0;
-}
-
 // Cases 2/3: each weight sample goes to the G_D vertex containing it, found
 // through a uniform bucket grid of the vertices' bounding boxes.
 void add_samples(const MedialGraph& g, const Triangulation& tri, const FaceDensity& density, std::vector<double>& out) {
   if (density.samples.empty() || out.empty()) return;
-  Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
-  for (Point p : tri.points) {
-    lo = Point{std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = Point{std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
+  const Box all = bounding_box(tri.points);
+  const Point lo = all.lo;
   const auto cells = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(out.size())), 1.0, 512.0));
-  const double cw = std::max((hi.x - lo.x) / cells, 1e-300), ch = std::max((hi.y - lo.y) / cells, 1e-300);
+  const double cw = std::max(all.width() / cells, 1e-300), ch = std::max(all.height() / cells, 1e-300);
   auto cell = [&](double x, double origin, double size) {
     return static_cast<std::uint32_t>(std::clamp(std::floor((x - origin) / size), 0.0, cells - 1.0));
   };
   std::vector<std::vector<std::uint32_t>> bucket(static_cast<std::size_t>(cells) * cells);
   for (std::uint32_t v = 0; v < out.size(); ++v) {
-    const auto c = vertex_triangle_corners(g, tri, v);
-    const double x0 = std::min({c[0].x, c[1].x, c[2].x}), x1 = std::max({c[0].x, c[1].x, c[2].x});
-    const double y0 = std::min({c[0].y, c[1].y, c[2].y}), y1 = std::max({c[0].y, c[1].y, c[2].y});
-    for (std::uint32_t i = cell(x0, lo.x, cw); i <= cell(x1, lo.x, cw); ++i) {
-      for (std::uint32_t j = cell(y0, lo.y, ch); j <= cell(y1, lo.y, ch); ++j) bucket[i * cells + j].push_back(v);
+    const Box box = bounding_box(vertex_triangle_corners(g, tri, v));
+    for (std::uint32_t i = cell(box.lo.x, lo.x, cw); i <= cell(box.hi.x, lo.x, cw); ++i) {
+      for (std::uint32_t j = cell(box.lo.y, lo.y, ch); j <= cell(box.hi.y, lo.y, ch); ++j) bucket[i * cells + j].push_back(v);
     }
   }
   for (const ValuedPoint& s : density.samples) {
     for (std::uint32_t v : bucket[cell(s.at.x, lo.x, cw) * cells + cell(s.at.y, lo.y, ch)]) {
-      if (contains(vertex_triangle_corners(g, tri, v), s.at)) {
+      const auto c = vertex_triangle_corners(g, tri, v);
+      if (in_closed_triangle(c[0], c[1], c[2], s.at)) {
         out[v] += density.a * s.value;
         break;
       }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/containment.hpp"
 #include "madd/predicates.hpp"
 #include "split/refine.hpp"
 #include "split/split.hpp"
@@ -47,20 +48,15 @@ double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<
   return a;
 }
 
-bool strictly_in_or_on(Point a, Point b, Point c, Point q) {
-  const double s = orient2d(a, b, c) > 0.0 ? 1.0 : -1.0;
-  return s * orient2d(a, b, q) >= 0.0 && s * orient2d(b, c, q) >= 0.0 && s * orient2d(c, a, q) >= 0.0;
-}
-
 // No point of the split (working points, circumcentres, interior points) in triangle (c, p, x)
 // other than c and the boundary points from p to x.
 bool swept_empty(const MedialGraph& g, std::uint32_t c, const std::vector<std::uint32_t>& path, const Point interior[2]) {
   const Point pc = g.points[c], pp = g.points[path.front()], px = g.points[path.back()];
   for (std::uint32_t v = 0; v < g.points.size(); ++v) {
     if (v == c || std::find(path.begin(), path.end(), v) != path.end()) continue;
-    if (strictly_in_or_on(pc, pp, px, g.points[v])) return false;
+    if (in_closed_triangle(pc, pp, px, g.points[v])) return false;
   }
-  return !strictly_in_or_on(pc, pp, px, interior[0]) && !strictly_in_or_on(pc, pp, px, interior[1]);
+  return !in_closed_triangle(pc, pp, px, interior[0]) && !in_closed_triangle(pc, pp, px, interior[1]);
 }
 
 double score(const MedialGraph& g, const FaceDomain& fd, std::uint32_t c, std::uint32_t x, double angle, double phi0) {
@@ -80,7 +76,7 @@ struct Move {
 void moved_weights(const MedialGraph& g, const EndSmoothing& s, const CutEnd& sep, int e, std::uint32_t y,
                    const double w[2], double out[2]) {
   const std::uint32_t p = sep.end[e], c = sep.end[1 - e];
-  const double area = std::abs(signed_area(g.points[c], g.points[p], g.points[y]));
+  const double area = triangle_area(g.points[c], g.points[p], g.points[y]);
   const int left_of_cp = e == 1 ? sep.left_side : 1 - sep.left_side;
   const int from = orient2d(g.points[c], g.points[p], g.points[y]) > 0.0 ? left_of_cp : 1 - left_of_cp;
   out[0] = w[0];

@@ -70,7 +70,7 @@ Point largest_triangle_centroid(const Pslg& domain) {
     const double area = signed_area(a, b, c);
     if (area > best) {
       best = area;
-      at = Point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+      at = triangle_centroid(a, b, c);
     }
   }
   return at;
@@ -121,7 +121,7 @@ SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDo
     if (g.gd.vertex_weights[v] > best[s]) {
       best[s] = g.gd.vertex_weights[v];
       const auto c = vertex_triangle_corners(g, tri, v);
-      r.interior[s] = Point{(c[0].x + c[1].x + c[2].x) / 3.0, (c[0].y + c[1].y + c[2].y) / 3.0};
+      r.interior[s] = triangle_centroid(c[0], c[1], c[2]);
     }
   }
   if (smoothing != nullptr) smooth_ends(g, fd, *smoothing, cut, r.weight, r.interior);
@@ -188,7 +188,7 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
     double area = 0.0;
     for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
       const auto c = vertex_triangle_corners(g, tri, v);
-      area += std::abs(signed_area(c[0], c[1], c[2]));
+      area += triangle_area(c[0], c[1], c[2]);
     }
     ends.weight_per_area = area > 0.0 ? (w[0] + w[1]) / area : 1.0;
     ends.min_length = min_separator_fraction * std::sqrt(area / plan);

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "madd/decomposition.hpp"
+#include "madd/geometry.hpp"
 #include "madd/medial.hpp"
 #include "madd/triangulation.hpp"
 #include "kernel/resource_limits.hpp"

@@ -4,19 +4,11 @@
 // violation can never be returned silently.
 #include <cstdio>
 
+#include "kernel/angles.hpp"
 #include "madd/error.hpp"
-#include "madd/predicates.hpp"
 #include "subdivision/subdivision.hpp"
 
 namespace madd::detail {
-
-namespace {
-// Interior angle (degrees) at v between the ring edges to prev and next; the face is on the left.
-double interior_angle(Point v, Point prev, Point next) {
-  const double base = degrees(angle_at(v, next, prev));
-  return orient2d(v, next, prev) < 0.0 ? 360.0 - base : base;
-}
-} // namespace
 
 void check_new_angles(const Subdivision& sub, double min_angle_deg) {
   constexpr double tolerance_deg = 1e-7;
@@ -29,8 +21,9 @@ void check_new_angles(const Subdivision& sub, double min_angle_deg) {
       for (std::size_t k = 0; k < n; ++k) {
         const std::size_t before = (k + n - 1) % n;
         if (sub.origin[segs[before]] != no_index && sub.origin[segs[k]] != no_index) continue;
+        // The face is on the left: its interior angle turns from the outgoing edge to the incoming one.
         const double angle =
-            interior_angle(sub.points[ring[k]], sub.points[ring[before]], sub.points[ring[(k + 1) % n]]);
+            ccw_angle_deg(sub.points[ring[k]], sub.points[ring[(k + 1) % n]], sub.points[ring[before]]);
         if (angle < min_angle_deg - tolerance_deg) {
           char buf[200];
           std::snprintf(buf, sizeof buf, "subdomain %u has a new angle of %.6g degrees < %g (internal error)", f,

@@ -6,27 +6,12 @@
 #include <map>
 #include <string>
 
+#include "kernel/rings.hpp"
 #include "madd/error.hpp"
-#include "madd/predicates.hpp"
 
 namespace madd::detail {
 
 namespace {
-
-// Winding number of ring around p, exact (orient2d decides every crossing).
-bool inside_ring(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring, Point p) {
-  int winding = 0;
-  for (std::size_t k = 0; k < ring.size(); ++k) {
-    const Point a = points[ring[k]];
-    const Point b = points[ring[(k + 1) % ring.size()]];
-    if (a.y <= p.y) {
-      if (b.y > p.y && orient2d(a, b, p) > 0.0) ++winding;
-    } else if (b.y <= p.y && orient2d(a, b, p) < 0.0) {
-      --winding;
-    }
-  }
-  return winding != 0;
-}
 
 Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& half_edges,
                  const std::vector<std::uint32_t>& ids) {
@@ -35,7 +20,7 @@ Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& 
     c.vertices.push_back(half_edges[h].from);
     c.segments.push_back(half_edges[h].segment);
   }
-  c.area = ring_area(points, c.vertices);
+  c.area = ring_signed_area(RingView(points, c.vertices));
   return c;
 }
 
@@ -76,7 +61,7 @@ Subdivision Subdivision::from_domain(const Pslg& domain) {
     if (cycles[c].area >= 0.0 || c == unbounded) continue;
     const Point* hole = nullptr;
     for (const Point& h : domain.holes) {
-      if (inside_ring(s.points, cycles[c].vertices, h)) {
+      if (locate_in_ring(RingView(s.points, cycles[c].vertices), h) == RingLocation::inside) {
         hole = &h;
         break;
       }
@@ -109,9 +94,7 @@ Point Subdivision::hole_point(std::uint32_t face, std::size_t ring) const {
 }
 
 double Subdivision::face_area(std::uint32_t face) const {
-  double area = 0.0;
-  for (const auto& ring : faces[face].rings) area += ring_area(points, ring);
-  return area;
+  return rings_area(points, faces[face].rings);
 }
 
 std::uint32_t Subdivision::split_segment(std::uint32_t piece, std::uint32_t w) {

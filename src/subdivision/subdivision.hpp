@@ -78,9 +78,6 @@ struct HalfEdge {
 std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& points,
                                                    const std::vector<HalfEdge>& half_edges);
 
-// Signed area of a closed ring of vertex indices (shoelace; positive = CCW).
-double ring_area(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring);
-
 class Subdivision {
 public:
   std::vector<Point> points;

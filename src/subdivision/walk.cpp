@@ -53,16 +53,6 @@ void split_at_repeated_vertices(const std::vector<HalfEdge>& half_edges, const s
 
 } // namespace
 
-double ring_area(const std::vector<Point>& points, const std::vector<std::uint32_t>& ring) {
-  if (ring.size() < 3) return 0.0;
-  const Point o = points[ring[0]];
-  double twice = 0.0;
-  for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
-    twice += cross(points[ring[k]] - o, points[ring[k + 1]] - o);
-  }
-  return 0.5 * twice;
-}
-
 std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& points,
                                                    const std::vector<HalfEdge>& half_edges) {
   const auto count = static_cast<std::uint32_t>(half_edges.size());

@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "kernel/box.hpp"
+
 namespace madd::detail {
 
 namespace {
@@ -100,17 +102,11 @@ void radix_sort(std::vector<Item>& items, int bits) {
 
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points) {
   const auto n = static_cast<std::uint32_t>(points.size());
-  double xlo = INFINITY, ylo = INFINITY, xhi = -INFINITY, yhi = -INFINITY;
-  for (const Point& p : points) {
-    xlo = std::min(xlo, p.x);
-    xhi = std::max(xhi, p.x);
-    ylo = std::min(ylo, p.y);
-    yhi = std::max(yhi, p.y);
-  }
+  const Box box = bounding_box(points);
   // Grid of 2^bits cells a side, about 16 cells per point: finer only costs time.
   const int bits = std::clamp(static_cast<int>(std::bit_width(n) + 1) / 2 + 2, 4, 16) & ~1;
   const double top = static_cast<double>((1u << bits) - 1);
-  const double extent = std::max(xhi - xlo, yhi - ylo);
+  const double extent = std::max(box.width(), box.height());
   const double scale = extent > 0.0 && std::isfinite(extent) ? top / extent : 0.0;
   // Rounds grow by a factor of 4: level k holds about 3n / 4^(k+1) points, so
   // the last round, in one Hilbert sweep, holds 3/4 of them (fewer sweeps, better
@@ -124,7 +120,7 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points) {
     const int level = std::min(std::countr_one(mix(i)) / 2, max_level);
     const auto round = static_cast<std::uint64_t>(max_level - level);
     const std::uint64_t h =
-        hilbert_index(quantise(points[i].x, xlo, scale, top), quantise(points[i].y, ylo, scale, top), bits);
+        hilbert_index(quantise(points[i].x, box.lo.x, scale, top), quantise(points[i].y, box.lo.y, scale, top), bits);
     items[i] = {(round << (2 * bits)) | h, i};
   }
   if (n < 512) {
