@@ -3,6 +3,7 @@
 #include <getopt.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cctype>
 #include <cerrno>
@@ -10,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -206,24 +208,21 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
   }
 }
 
-// Every output is formatted in memory first, then written file by file
-// (each atomically); the split directory is staged as a whole.
+// Every output is formatted in memory first, then the set is written all or
+// nothing (madd::OutputSet): a failure leaves no file of this run behind.
 void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
-  const std::string poly = args.poly_out.empty() ? std::string() : format_decomposition_poly(d, "made by madd from " + args.input);
-  const std::string table = args.subdomains_out.empty() ? std::string() : format_subdomain_file(d);
-  const std::string svg = args.svg_out.empty() ? std::string() : format_svg(d, args.svg);
+  OutputSet outputs;
+  if (!args.poly_out.empty())
+    outputs.add_file(args.poly_out, format_decomposition_poly(d, "made by madd from " + args.input));
+  if (!args.subdomains_out.empty()) outputs.add_file(args.subdomains_out, format_subdomain_file(d));
+  if (!args.svg_out.empty()) outputs.add_file(args.svg_out, format_svg(d, args.svg));
+  if (!args.geo_out.empty()) outputs.add_file(args.geo_out, format_geo(d));
+  if (!args.vtk_out.empty()) outputs.add_file(args.vtk_out, format_vtk(d));
+  if (!args.geojson_out.empty()) outputs.add_file(args.geojson_out, format_geojson(d));
+  if (!args.split_dir.empty()) add_split(outputs, d, args.split_dir, stem_of(args.input));
   const std::string report = args.report ? format_report_json(m) : std::string();
-  const std::string geo = args.geo_out.empty() ? std::string() : format_geo(d);
-  const std::string vtk = args.vtk_out.empty() ? std::string() : format_vtk(d);
-  const std::string geojson = args.geojson_out.empty() ? std::string() : format_geojson(d);
-  if (!args.poly_out.empty()) write_file_atomically(args.poly_out, poly);
-  if (!args.subdomains_out.empty()) write_file_atomically(args.subdomains_out, table);
-  if (!args.svg_out.empty()) write_file_atomically(args.svg_out, svg);
-  if (!args.geo_out.empty()) write_file_atomically(args.geo_out, geo);
-  if (!args.vtk_out.empty()) write_file_atomically(args.vtk_out, vtk);
-  if (!args.geojson_out.empty()) write_file_atomically(args.geojson_out, geojson);
-  if (!args.split_dir.empty()) write_split(d, args.split_dir, stem_of(args.input));
-  if (args.report && !args.report_out.empty()) write_file_atomically(args.report_out, report);
+  if (args.report && !args.report_out.empty()) outputs.add_file(args.report_out, report);
+  outputs.write();
   if (args.report && args.report_out.empty()) {
     std::fputs(report.c_str(), stdout);
     std::fflush(stdout);
@@ -450,6 +449,19 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
   }
 }
 
+// An output path given to two output options, or "".
+std::string output_named_twice(const DecomposeArgs& args) {
+  std::vector<std::string> paths;
+  for (const std::string* file : {&args.poly_out, &args.subdomains_out, &args.svg_out, &args.geo_out, &args.vtk_out,
+                                  &args.geojson_out, &args.report_out, &args.split_dir}) {
+    if (file->empty()) continue;
+    const std::string normal = std::filesystem::path(*file).lexically_normal().string();
+    if (std::find(paths.begin(), paths.end(), normal) != paths.end()) return *file;
+    paths.push_back(normal);
+  }
+  return {};
+}
+
 // The library's check of every range and combination (check_options), said
 // in the CLI's words: "--min-angle must lie strictly between 0 and 90 degrees, got '0'".
 std::string option_problem(const DecomposeArgs& args) {
@@ -517,6 +529,8 @@ int run_decompose(int argc, char** argv) {
   if (optind + 1 != argc) return usage_error("decompose", "expected exactly one input file");
   args.input = argv[optind];
   if (args.quiet && args.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");
+  if (const std::string twice = output_named_twice(args); !twice.empty())
+    return usage_error("decompose", "'" + twice + "' is named by two outputs");
   if (const std::string problem = option_problem(args); !problem.empty()) return usage_error("decompose", problem);
   return run_guarded("decompose", decompose_body, &args);
 }

@@ -132,6 +132,38 @@ TEST_CASE("reaching N in required-area mode is said in the summary and the repor
   CHECK_FALSE(contains(enough.output, "still above the area bound"));
 }
 
+TEST_CASE("the set of outputs is all or nothing: a failed write leaves no output of the run behind") {
+  const CliSandbox box;
+  const CliRun failed = box.run(key_poly + " -n 4 -o ok.poly --split parts --report=r.json --svg /nonexistent/x.svg");
+  CHECK(failed.status == 5);
+  CHECK_MESSAGE(contains(failed.output, "/nonexistent/x.svg"), failed.output);
+  CHECK_FALSE(fs::exists(box.path("ok.poly")));
+  CHECK_FALSE(fs::exists(box.path("parts")));
+  CHECK_FALSE(fs::exists(box.path("r.json")));
+  for (const auto& entry : fs::directory_iterator(box.path(".")))  // no temporary either
+    CHECK_MESSAGE(entry.path().filename() == "log", entry.path().string());
+
+  // Outputs of an earlier run stay as they were when a later run fails.
+  REQUIRE(box.run(key_poly + " -n 4 -q -o ok.poly --split parts").status == 0);
+  const auto before = fs::last_write_time(box.path("ok.poly"));
+  std::ifstream first(box.path("ok.poly"));
+  std::ostringstream old_text;
+  old_text << first.rdbuf();
+  CHECK(box.run(key_poly + " -n 6 -o ok.poly --split parts --geo /nonexistent/g.geo").status == 5);
+  std::ifstream second(box.path("ok.poly"));
+  std::ostringstream new_text;
+  new_text << second.rdbuf();
+  CHECK(new_text.str() == old_text.str());
+  CHECK(fs::last_write_time(box.path("ok.poly")) == before);
+  CHECK(fs::exists(box.path("parts/key-3.poly")));
+  CHECK_FALSE(fs::exists(box.path("parts/key-5.poly")));
+
+  // One path named by two outputs is a usage error before any work.
+  const CliRun twice = box.run(key_poly + " -n 4 -o same.poly --geo ./same.poly");
+  CHECK(twice.status == 2);
+  CHECK_MESSAGE(contains(twice.output, "is named by two outputs"), twice.output);
+}
+
 } // TEST_SUITE
 
 #endif

@@ -2,8 +2,11 @@
 // Writing an output file all or nothing, as every output of madd does
 // (docs/hostile.md): through a temporary file and a rename, never leaving a
 // partial file, even when the process is interrupted.
+#include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace madd {
 
@@ -16,5 +19,43 @@ void write_file_atomically(const std::string& path, std::string_view contents);
 // instead of finishing. Returns true when such a write is in progress (the
 // handler should then return and let it unwind rather than exit at once).
 bool interrupt_output_writes() noexcept;
+
+// Several outputs written as one, all or nothing (the CLI's set of -o, --svg,
+// --split... files). write() first stages every output in full under a
+// temporary name beside its target (a directory as a whole temporary
+// directory); only when every one is staged are they moved into place. A
+// failure while staging (a missing directory, a full disk, an interrupt)
+// removes every temporary and leaves every target as it was. The moves
+// themselves are renames within each target's directory, which do not fail
+// for space; should one fail anyway, the error says which outputs were
+// already in place.
+class OutputSet {
+public:
+  // One file. Throws OutputError when `path` is already in the set.
+  void add_file(std::string path, std::string contents);
+  // A directory holding `files` (name, contents; names without '/'), created
+  // or updated: files of an existing `dir` for which `is_stale(name)` is true
+  // and that are not in `files` are removed once the new ones are in place
+  // (an older run's files). Throws OutputError when `dir` is already in the set.
+  void add_directory(std::string dir, std::vector<std::pair<std::string, std::string>> files,
+                     std::function<bool(const std::string& name)> is_stale = {});
+  bool empty() const noexcept { return files_.empty() && directories_.empty(); }
+  // Stages and publishes everything; throws OutputError. The set is empty afterwards.
+  void write();
+
+private:
+  struct File {
+    std::string path, contents;
+  };
+  struct Directory {
+    std::string path;
+    std::vector<std::pair<std::string, std::string>> files;
+    std::function<bool(const std::string&)> is_stale;
+  };
+  void claim(const std::string& path);
+  std::vector<File> files_;
+  std::vector<Directory> directories_;
+  std::vector<std::string> targets_;
+};
 
 } // namespace madd

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/metrics.hpp"
 
@@ -32,8 +33,10 @@ std::string split_file_name(std::string_view stem, std::uint32_t k, std::uint32_
 // missing). All files are staged in a temporary sibling directory first; on
 // any failure nothing in `dir` changes. Files of an earlier run named
 // "<stem>-<digits>.poly" that this run does not produce are removed, so the
-// directory holds exactly this decomposition. Throws Error on I/O failure.
+// directory holds exactly this decomposition. Throws OutputError on I/O failure.
 void write_split(const Decomposition& decomposition, const std::string& dir, std::string_view stem);
+// The same, as one output of a set written all or nothing with the others.
+void add_split(OutputSet& outputs, const Decomposition& decomposition, const std::string& dir, std::string_view stem);
 
 // Output 3: the paper's subdomain file (Sec. 6): points, segments with
 // markers, subdomains (number, area, weight, bounding segment ids ring by

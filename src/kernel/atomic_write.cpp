@@ -3,10 +3,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 #include "madd/error.hpp"
 
@@ -36,10 +39,12 @@ bool interrupt_output_writes() noexcept {
   return writes_in_flight.load() > 0;
 }
 
-void write_file_atomically(const std::string& path, std::string_view contents) {
-  const InFlight in_flight;
+namespace {
+
+// Writes `contents` to the new file `tmp` (the staging name of `path`);
+// removes it and throws OutputError on failure or on an interrupt.
+void write_temporary(const std::string& path, const std::string& tmp, std::string_view contents) {
   throw_if_interrupted(path);
-  const std::string tmp = path + ".tmp." + std::to_string(static_cast<long long>(::getpid()));
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
   const bool written = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
@@ -53,11 +58,169 @@ void write_file_atomically(const std::string& path, std::string_view contents) {
     std::remove(tmp.c_str());
     throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
   }
+}
+
+std::string temporary_name(const std::string& path, std::size_t serial) {
+  return path + ".tmp." + std::to_string(static_cast<long long>(::getpid())) + "." + std::to_string(serial);
+}
+
+} // namespace
+
+void write_file_atomically(const std::string& path, std::string_view contents) {
+  const InFlight in_flight;
+  const std::string tmp = temporary_name(path, 0);
+  write_temporary(path, tmp, contents);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     std::remove(tmp.c_str());
     throw OutputError(path + ": cannot rename '" + tmp + "' into place: " + std::strerror(err));
   }
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A directory staged beside its target: ".<name>.madd-tmp-<pid>-<n>".
+fs::path staging_directory(const fs::path& dir) {
+  fs::path parent = dir.parent_path();
+  if (parent.empty()) parent = ".";
+  const std::string base = dir.filename().string();
+  for (int attempt = 0;; ++attempt) {
+    fs::path candidate = parent / ("." + base + ".madd-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
+    if (!fs::exists(candidate)) return candidate;
+  }
+}
+
+// "parts/" names "parts".
+fs::path directory_path(const std::string& name) {
+  fs::path dir = fs::path(name).lexically_normal();
+  if (dir.filename().empty() && dir.has_parent_path()) dir = dir.parent_path();
+  return dir;
+}
+
+// One output on its way: where it was staged, where it goes.
+struct Staged {
+  fs::path staged, target;
+  bool directory = false;
+  std::function<bool(const std::string&)> is_stale;
+  std::vector<std::string> names;  // of a directory's files
+};
+
+void remove_staged(const std::vector<Staged>& staged) {
+  std::error_code ignored;
+  for (const Staged& s : staged)
+    if (!s.staged.empty()) fs::remove_all(s.staged, ignored);
+}
+
+// Stages `files` into a new temporary directory beside `s.target`.
+void stage_directory(const std::string& name, const std::vector<std::pair<std::string, std::string>>& files,
+                     Staged& s) {
+  if (fs::exists(s.target) && !fs::is_directory(s.target)) throw OutputError(name + ": exists and is not a directory");
+  if (!s.target.parent_path().empty()) fs::create_directories(s.target.parent_path());
+  s.staged = staging_directory(s.target);
+  fs::create_directory(s.staged);
+  for (const auto& [file, contents] : files) {
+    write_temporary((s.target / file).string(), (s.staged / file).string(), contents);
+    s.names.push_back(file);
+  }
+}
+
+// Moves a staged directory's files into the target (or the staged directory
+// itself, when there is no target yet), then removes the stale ones.
+void publish_directory(const Staged& s) {
+  if (!fs::exists(s.target)) {
+    fs::rename(s.staged, s.target);
+    return;
+  }
+  for (const std::string& name : s.names) fs::rename(s.staged / name, s.target / name);
+  std::vector<fs::path> stale;
+  if (s.is_stale) {
+    for (const auto& entry : fs::directory_iterator(s.target)) {
+      const std::string name = entry.path().filename().string();
+      if (s.is_stale(name) && std::find(s.names.begin(), s.names.end(), name) == s.names.end())
+        stale.push_back(entry.path());
+    }
+  }
+  for (const fs::path& p : stale) fs::remove(p);
+  fs::remove_all(s.staged);
+}
+
+} // namespace
+
+void OutputSet::claim(const std::string& path) {
+  const std::string normal = directory_path(path).string();
+  if (std::find(targets_.begin(), targets_.end(), normal) != targets_.end())
+    throw OutputError(path + ": named twice among the outputs");
+  targets_.push_back(normal);
+}
+
+void OutputSet::add_file(std::string path, std::string contents) {
+  claim(path);
+  files_.push_back({std::move(path), std::move(contents)});
+}
+
+void OutputSet::add_directory(std::string dir, std::vector<std::pair<std::string, std::string>> files,
+                              std::function<bool(const std::string&)> is_stale) {
+  claim(dir);
+  directories_.push_back({std::move(dir), std::move(files), std::move(is_stale)});
+}
+
+void OutputSet::write() {
+  const InFlight in_flight;
+  std::vector<Staged> staged;
+  std::string current;  // the output being staged, for messages
+  try {
+    for (std::size_t k = 0; k < files_.size(); ++k) {
+      current = files_[k].path;
+      Staged s;
+      s.target = files_[k].path;
+      s.staged = temporary_name(files_[k].path, k);
+      write_temporary(files_[k].path, s.staged.string(), files_[k].contents);
+      staged.push_back(std::move(s));
+    }
+    for (const Directory& d : directories_) {
+      current = d.path;
+      Staged& s = staged.emplace_back();
+      s.target = directory_path(d.path);
+      s.directory = true;
+      s.is_stale = d.is_stale;
+      stage_directory(d.path, d.files, s);
+    }
+    throw_if_interrupted(current);
+  } catch (const fs::filesystem_error& e) {
+    remove_staged(staged);
+    throw OutputError(current + ": cannot write: " + e.code().message() + " (no output was written)");
+  } catch (const OutputError& e) {
+    remove_staged(staged);
+    throw OutputError(std::string(e.what()) + " (no output was written)");
+  }
+  // Everything is staged: move it into place.
+  std::vector<std::string> published;
+  for (std::size_t k = 0; k < staged.size(); ++k) {
+    const Staged& s = staged[k];
+    std::error_code error;
+    if (s.directory) {
+      try {
+        publish_directory(s);
+      } catch (const fs::filesystem_error& e) {
+        error = e.code();
+      }
+    } else {
+      fs::rename(s.staged, s.target, error);
+    }
+    if (error) {
+      remove_staged({staged.begin() + static_cast<std::ptrdiff_t>(k), staged.end()});
+      std::string done;
+      for (const std::string& p : published) done += (done.empty() ? "" : ", ") + p;
+      throw OutputError(s.target.string() + ": cannot move into place: " + error.message() +
+                        (done.empty() ? std::string(" (no output was written)") : " (already written: " + done + ")"));
+    }
+    published.push_back(s.target.string());
+  }
+  files_.clear();
+  directories_.clear();
+  targets_.clear();
 }
 
 } // namespace madd

@@ -1,17 +1,13 @@
-// Output 2 on disk: one .poly per subdomain, staged so that a failure never
-// leaves a partial set of files (docs/formats.md).
-#include <algorithm>
-#include <filesystem>
-#include <system_error>
-#include <unistd.h>
+// Output 2 on disk: one .poly per subdomain, staged as one directory so that a
+// failure never leaves a partial set of files (docs/formats.md).
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "madd/atomic_write.hpp"
-#include "madd/error.hpp"
 #include "madd/output.hpp"
 
 namespace madd {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -25,59 +21,21 @@ bool is_split_name(const std::string& name, std::string_view stem) {
   return true;
 }
 
-fs::path staging_path(const fs::path& dir) {
-  fs::path parent = dir.parent_path();
-  if (parent.empty()) parent = ".";
-  const std::string base = dir.filename().string();
-  for (int attempt = 0;; ++attempt) {
-    fs::path candidate = parent / ("." + base + ".madd-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
-    if (!fs::exists(candidate)) return candidate;
-  }
-}
-
-// Moves the staged files into an existing `dir`, then removes stale split files.
-void publish_into(const fs::path& staging, const fs::path& dir, std::string_view stem,
-                  const std::vector<std::string>& names) {
-  for (const std::string& name : names) fs::rename(staging / name, dir / name);
-  std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (is_split_name(name, stem) && std::find(names.begin(), names.end(), name) == names.end())
-      stale.push_back(entry.path());
-  }
-  for (const fs::path& p : stale) fs::remove(p);
-  fs::remove_all(staging);
-}
-
 } // namespace
 
-void write_split(const Decomposition& d, const std::string& dir_name, std::string_view stem) {
-  fs::path dir = fs::path(dir_name).lexically_normal();
-  if (dir.filename().empty() && dir.has_parent_path()) dir = dir.parent_path();  // "parts/" names "parts"
+void add_split(OutputSet& outputs, const Decomposition& d, const std::string& dir, std::string_view stem) {
   const auto count = static_cast<std::uint32_t>(d.subdomains.size());
-  std::vector<std::string> names;
-  for (std::uint32_t k = 0; k < count; ++k) names.push_back(split_file_name(stem, k, count));
-  fs::path staging;
-  try {
-    if (fs::exists(dir) && !fs::is_directory(dir)) throw OutputError(dir_name + ": exists and is not a directory");
-    if (!dir.parent_path().empty()) fs::create_directories(dir.parent_path());
-    staging = staging_path(dir);
-    fs::create_directory(staging);
-    for (std::uint32_t k = 0; k < count; ++k)
-      write_file_atomically((staging / names[k]).string(), format_subdomain_poly(d, k));
-    if (fs::exists(dir))
-      publish_into(staging, dir, stem, names);
-    else
-      fs::rename(staging, dir);
-  } catch (const fs::filesystem_error& e) {
-    std::error_code ignored;
-    if (!staging.empty()) fs::remove_all(staging, ignored);
-    throw OutputError(dir_name + ": cannot write the split files: " + e.code().message());
-  } catch (...) {
-    std::error_code ignored;
-    if (!staging.empty()) fs::remove_all(staging, ignored);
-    throw;
-  }
+  std::vector<std::pair<std::string, std::string>> files;
+  files.reserve(count);
+  for (std::uint32_t k = 0; k < count; ++k) files.emplace_back(split_file_name(stem, k, count), format_subdomain_poly(d, k));
+  outputs.add_directory(dir, std::move(files),
+                        [stem = std::string(stem)](const std::string& name) { return is_split_name(name, stem); });
+}
+
+void write_split(const Decomposition& d, const std::string& dir, std::string_view stem) {
+  OutputSet outputs;
+  add_split(outputs, d, dir, stem);
+  outputs.write();
 }
 
 } // namespace madd

@@ -1,0 +1,116 @@
+// madd::OutputSet: several outputs written all or nothing. A failure while
+// staging leaves every target as it was and no temporary behind; a success
+// puts every file in place and clears an earlier run's stale files.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "madd/atomic_write.hpp"
+#include "madd/error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("madd-output-set-" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::size_t entries(const fs::path& dir) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& entry : fs::recursive_directory_iterator(dir)) ++n;
+  return n;
+}
+
+bool stale(const std::string& name) { return name.rfind("old-", 0) == 0; }
+
+} // namespace
+
+TEST_SUITE("atomic write") {
+
+TEST_CASE("an output set puts every file and directory in place, and removes stale files") {
+  const Scratch s;
+  fs::create_directories(s.dir / "parts");
+  std::ofstream(s.dir / "parts" / "old-9.txt") << "from an earlier run";
+  std::ofstream(s.dir / "parts" / "keep.txt") << "not ours";
+  madd::OutputSet set;
+  set.add_file(s.path("a.txt"), "alpha");
+  set.add_file(s.path("b.txt"), "beta");
+  set.add_directory(s.path("parts"), {{"old-1.txt", "one"}, {"old-2.txt", "two"}}, stale);
+  set.add_directory(s.path("new/dir/"), {{"x.txt", "x"}});
+  set.write();
+  CHECK(set.empty());
+  CHECK(slurp(s.path("a.txt")) == "alpha");
+  CHECK(slurp(s.path("b.txt")) == "beta");
+  CHECK(slurp(s.path("parts/old-1.txt")) == "one");
+  CHECK(slurp(s.path("parts/old-2.txt")) == "two");
+  CHECK_FALSE(fs::exists(s.dir / "parts" / "old-9.txt"));
+  CHECK(slurp(s.path("parts/keep.txt")) == "not ours");
+  CHECK(slurp(s.path("new/dir/x.txt")) == "x");
+  // a.txt b.txt parts parts/{old-1,old-2,keep} new new/dir new/dir/x: nothing else (no temporary).
+  CHECK(entries(s.dir) == 9);
+}
+
+TEST_CASE("a failure while staging changes no target and leaves no temporary") {
+  const Scratch s;
+  std::ofstream(s.dir / "a.txt") << "earlier";
+  fs::create_directories(s.dir / "parts");
+  std::ofstream(s.dir / "parts" / "old-1.txt") << "earlier part";
+  const std::size_t before = entries(s.dir);
+
+  SUBCASE("a file in a missing directory") {
+    madd::OutputSet set;
+    set.add_file(s.path("a.txt"), "new");
+    set.add_directory(s.path("parts"), {{"old-1.txt", "new part"}, {"old-2.txt", "new part"}}, stale);
+    set.add_file(s.path("missing/z.txt"), "z");
+    CHECK_THROWS_AS(set.write(), madd::OutputError);
+  }
+  SUBCASE("a directory where a file is") {
+    madd::OutputSet set;
+    set.add_file(s.path("a.txt"), "new");
+    set.add_directory(s.path("a.txt/sub"), {{"f", "f"}});
+    CHECK_THROWS_AS(set.write(), madd::OutputError);
+  }
+  SUBCASE("a directory output over an existing file") {
+    madd::OutputSet set;
+    set.add_directory(s.path("parts"), {{"old-1.txt", "new part"}}, stale);
+    set.add_directory(s.path("a.txt"), {{"f", "f"}});
+    CHECK_THROWS_AS(set.write(), madd::OutputError);
+  }
+  CHECK(slurp(s.path("a.txt")) == "earlier");
+  CHECK(slurp(s.path("parts/old-1.txt")) == "earlier part");
+  CHECK_FALSE(fs::exists(s.dir / "parts" / "old-2.txt"));
+  CHECK(entries(s.dir) == before);
+}
+
+TEST_CASE("a path named twice in one set is refused before anything is written") {
+  const Scratch s;
+  madd::OutputSet set;
+  set.add_file(s.path("a.txt"), "1");
+  CHECK_THROWS_AS(set.add_file(s.path("./a.txt"), "2"), madd::OutputError);
+  CHECK_THROWS_AS(set.add_directory(s.path("a.txt"), {}), madd::OutputError);
+  CHECK_FALSE(fs::exists(s.dir / "a.txt"));
+}
+
+} // TEST_SUITE
