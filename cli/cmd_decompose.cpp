@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -17,7 +16,10 @@
 #include <string>
 #include <type_traits>
 
+#include "background_mesh.hpp"
 #include "commands.hpp"
+#include "option_names.hpp"
+#include "progress.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
@@ -108,55 +110,6 @@ std::string stem_of(const std::string& path) {
   return name;
 }
 
-// "decomposing: 312/1000 subdomains, 1.4 s".
-std::string count_text(std::uint32_t done, std::uint32_t target, double seconds) {
-  char text[96];
-  std::snprintf(text, sizeof text, "decomposing: %u/%u subdomains, %.1f s", done, target, seconds);
-  return text;
-}
-
-// A one-line progress note on stderr, only for a terminal (docs/cli.md): the
-// phase, and while decomposing the subdomains done of N and the time since
-// the phase began, rewritten in place (\r) at most a few times a second.
-// Cleared at the end, and by the destructor when an error ends the run, so
-// that the error message starts its own line.
-class Progress {
-public:
-  explicit Progress(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO) == 1) {}
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
-  ~Progress() { done(); }
-  bool enabled() const { return enabled_; }
-  void say(const std::string& text) {
-    phase_start_ = std::chrono::steady_clock::now();
-    counted_ = false;
-    show(text);
-  }
-  // DecomposeOptions::progress: the first count at once, then every 0.25 s.
-  void count(std::uint32_t done, std::uint32_t target) {
-    const auto now = std::chrono::steady_clock::now();
-    if (counted_ && now - last_count_ < std::chrono::milliseconds(250)) return;
-    counted_ = true;
-    last_count_ = now;
-    show(count_text(done, target, std::chrono::duration<double>(now - phase_start_).count()));
-  }
-  void done() {
-    if (enabled_ && shown_) std::fputs("\r\033[K", stderr);
-    shown_ = false;
-  }
-
-private:
-  void show(const std::string& text) {
-    if (!enabled_) return;
-    std::fprintf(stderr, "\r\033[Kmadd: %s", text.c_str());
-    shown_ = true;
-  }
-  bool enabled_;
-  bool shown_ = false;
-  bool counted_ = false;
-  std::chrono::steady_clock::time_point phase_start_ = std::chrono::steady_clock::now(), last_count_;
-};
-
 // A figure for the summary; "-" when it does not exist (NaN, e.g. no new angle when N = 1).
 std::string fig(double v, const char* format = "%.2f") {
   if (std::isnan(v)) return "-";
@@ -227,81 +180,6 @@ void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metr
     std::fputs(report.c_str(), stdout);
     std::fflush(stdout);
   }
-}
-
-// A background mesh (Sec. 5.2 case 2): the nodes of a .node file, value =
-// first attribute. A value a weight or a required area cannot have is bad
-// input, located at its line (as `read_areas` in a script does).
-std::vector<ValuedPoint> read_background(const std::string& path, bool areas) {
-  const PolyFile file = read_poly_file(path);
-  const Pslg& p = file.pslg;
-  const auto line_of = [&](std::size_t i) -> std::size_t {
-    return i < file.source.point_lines.size() ? file.source.point_lines[i] : 1;
-  };
-  const char* what = areas ? "required area" : "density weight";
-  if (p.attributes_per_point == 0)
-    throw ParseError(path, 1, 1, std::string("a background mesh needs one attribute per node, the ") + what);
-  std::vector<ValuedPoint> out;
-  out.reserve(p.points.size());
-  for (std::size_t i = 0; i < p.points.size(); ++i) {
-    const double v = p.attribute(i, 0);
-    if (!(std::isfinite(v) && (areas ? v > 0 : v >= 0)))
-      throw ParseError(path, line_of(i), 1,
-                       std::string("node ") + std::to_string(p.first_index + i) + ": a " + what + (areas ? " must be > 0" : " must be >= 0") +
-                           " and finite, got " + fig(v, "%.17g"));
-    out.push_back({p.points[i], v});
-  }
-  return out;
-}
-
-// How the CLI spells each DecomposeOptions (and SvgOptions) field that
-// OptionError::option() names.
-struct CliName {
-  const char* field;
-  const char* flag;
-};
-constexpr CliName cli_names[] = {
-    {"subdomains", "--subdomains"},          {"min_angle_deg", "--min-angle"},
-    {"refine", "--refine"},                  {"min_balance_quality", "--imbalance"},
-    {"threads", "--threads"},                {"seed", "--seed"},
-    {"smoothing_iterations", "--smoothing"}, {"gradation", "--gradation"},
-    {"interpolation", "--interpolation"},    {"weight_function", "--weight-fn"},
-    {"area_function", "--area-fn"},          {"background_weights", "--weights"},
-    {"background_areas", "--areas"},         {"area_ratio_bound", "--area-bound"},
-    {"time_limit_seconds", "--time-limit"},  {"max_memory_bytes", "--max-memory"},
-    {"mark_angles_below_deg", "--svg-mark-angles"},
-};
-
-const char* cli_name_of(const std::string& field) {
-  for (const CliName& n : cli_names)
-    if (field == n.field) return n.flag;
-  return nullptr;
-}
-
-bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
-
-// `text` with every whole-word field name replaced by its flag.
-std::string in_cli_words(const std::string& text) {
-  std::string out;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    std::size_t j = i;
-    while (j < text.size() && is_identifier_char(text[j])) ++j;
-    if (j == i) {
-      out.push_back(text[i++]);
-      continue;
-    }
-    const std::string word = text.substr(i, j - i);
-    const char* flag = cli_name_of(word);
-    out += flag != nullptr ? flag : word;
-    i = j;
-  }
-  return out;
-}
-
-std::string cli_message(const OptionError& e) {
-  const char* flag = cli_name_of(e.option());
-  return std::string(flag != nullptr ? flag : e.option().c_str()) + " " + in_cli_words(e.requirement());
 }
 
 // Runs f(), restating an OptionError of the library (a domain-dependent
