@@ -1,7 +1,6 @@
 // `madd decompose [options] INPUT.poly` (also the default mode): read a
 // domain, decompose it (paper Algorithm 4), self-check, write the outputs.
 #include <getopt.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
