@@ -197,23 +197,33 @@ TEST_CASE("bit-identical output for 1, 2 and 4 threads") {
 }
 
 TEST_CASE("no valid separator: a typed error naming the subdomain, never a partial result") {
-  // An equilateral triangle: every corner is 60 degrees, so no separator can
-  // make 80 degrees on both of its sides there, and the medial axis has a
-  // single junction whose spokes make 120 degrees with each other but only
-  // ~60 with the boundary.
+  // A needle triangle 1 long and 0.001 high: at Phi0 = 89.9 a separator would
+  // have to be perpendicular to two sides that are nearly parallel, within
+  // 0.1 degrees of each: none exists, at any share of the area. (An
+  // equilateral triangle, by contrast, splits at 89.9: a kite from two side
+  // midpoints to the centre cuts off a third at 90 degrees everywhere.)
+  const Pslg needle = polygon({{{0, 0}, {1, 0}, {0.5, 0.001}}});
+  madd::DecomposeOptions o;
+  o.subdomains = 2;
+  o.min_angle_deg = 89.9;
+  try {
+    (void)madd::decompose(needle, o);
+    FAIL("expected a DecompositionError");
+  } catch (const madd::DecompositionError& e) {
+    CHECK(e.subdomain() == 0);
+    CHECK(e.area() == doctest::Approx(0.0005));
+    CHECK(e.min_angle_deg() == 89.9);
+  }
+}
+
+TEST_CASE("an equilateral triangle splits at 89.9 degrees, by a kite through its centre") {
   const Pslg triangle = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2.0}}});
   madd::DecomposeOptions o;
   o.subdomains = 2;
   o.min_angle_deg = 89.9;
-  o.max_refinement_rounds = 1;
-  try {
-    (void)madd::decompose(triangle, o);
-    FAIL("expected a DecompositionError");
-  } catch (const madd::DecompositionError& e) {
-    CHECK(e.subdomain() == 0);
-    CHECK(e.area() == doctest::Approx(std::sqrt(3.0) / 4.0));
-    CHECK(e.min_angle_deg() == 89.9);
-  }
+  const Decomposition d = madd::decompose(triangle, o);
+  CHECK(madd::verify_decomposition(d, triangle, 2).ok());
+  CHECK(madd::metrics(d).angle_min >= 89.9);
 }
 
 TEST_CASE("phase times: every split phase and the commits are timed, and timing changes nothing") {

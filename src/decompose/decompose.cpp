@@ -13,6 +13,7 @@
 #include "kernel/resource_limits.hpp"
 #include "split/split.hpp"
 #include "decompose/scheduler.hpp"
+#include "decompose/stuck_faces.hpp"
 #include "kernel/stopwatch.hpp"
 #include "subdivision/subdivision.hpp"
 
@@ -77,9 +78,11 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
 // whose area exceeds area_ratio_bound x its required area (the smallest
 // required area inside it; none inside: unconstrained), the largest ratios
 // first (ties: lower face id), while the total stays <= options.subdomains.
-void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const DecomposeOptions& options) {
+void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const DecomposeOptions& options,
+                     const detail::StuckFaces& stuck) {
   std::vector<std::pair<double, std::uint32_t>> over;
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    if (stuck.is_stuck(f)) continue;
     const double required = grading.required(sub, f);
     if (!std::isfinite(required)) continue;
     const double ratio = sub.face_area(f) / required;
@@ -126,8 +129,14 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
   const detail::SplitOptions split_options = split_options_of(options);
   detail::SplitTimes split_times;
   double insert_seconds = 0.0;
+  detail::StuckFaces stuck;
   while (true) {
-    if (area_driven) plan_area_round(sub, grading, options);
+    stuck.release_changed(sub);
+    if (area_driven) {
+      plan_area_round(sub, grading, options, stuck);
+    } else {
+      stuck.replan(sub, grading, options.subdomains);
+    }
     std::vector<detail::RoundTask> tasks;
     for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
       if (sub.faces[f].plan > 1) tasks.push_back({f, sub.faces[f].plan, grading.density(sub, f)});
@@ -150,6 +159,9 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
                         grading.after_commit(sub, f, g);
                         insert_seconds += clock.lap();
                         report_progress(options, sub);
+                      },
+                      [&](std::size_t i, const DecompositionError& error) {
+                        stuck.mark(sub, tasks[i].face, error);
                       });
     grading.end_round(sub);
   }

@@ -28,13 +28,16 @@ public:
   }
 
   // Commits every task in order; computes tasks while waiting for the next one.
-  void commit_all(const CommitFn& commit) {
+  void commit_all(const CommitFn& commit, const FailFn& failed) {
     try {
       for (std::size_t i = 0; i < tasks_.size(); ++i) {
         while (!is_done(i)) {
           if (!compute_next()) wait_for(i);
         }
-        if (errors_[i]) std::rethrow_exception(errors_[i]);
+        if (errors_[i]) {
+          if (!report_unsplittable(i, failed)) std::rethrow_exception(errors_[i]);
+          continue;
+        }
         commit(i, results_[i]);
         results_[i] = SplitResult{};  // release the geometry early
       }
@@ -45,6 +48,18 @@ public:
   }
 
 private:
+  // A face without a valid separator goes to `failed`; false for any other error.
+  bool report_unsplittable(std::size_t i, const FailFn& failed) {
+    try {
+      std::rethrow_exception(errors_[i]);
+    } catch (const DecompositionError& e) {
+      failed(i, e);
+      return true;
+    } catch (...) {
+      return false;
+    }
+  }
+
   // Takes the next uncomputed task and computes it; false when none is left.
   bool compute_next() {
     const std::size_t i = next_.fetch_add(1);
@@ -91,11 +106,11 @@ private:
 } // namespace
 
 void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
-               unsigned threads, const ResourceGuard& guard, const CommitFn& commit) {
+               unsigned threads, const ResourceGuard& guard, const CommitFn& commit, const FailFn& failed) {
   Round round(snapshot, tasks, options, guard);
   std::vector<std::jthread> helpers;  // joined before `round` is destroyed
   for (unsigned t = 1; t < threads; ++t) helpers.emplace_back([&round] { round.work(); });
-  round.commit_all(commit);
+  round.commit_all(commit, failed);
 }
 
 } // namespace madd::detail

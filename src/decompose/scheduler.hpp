@@ -9,6 +9,7 @@
 #include <functional>
 #include <span>
 
+#include "madd/error.hpp"
 #include "kernel/resource_limits.hpp"
 #include "split/split.hpp"
 #include "subdivision/subdivision.hpp"
@@ -25,8 +26,12 @@ struct RoundTask {
 // `snapshot` is only read (by every thread), so commit must write elsewhere.
 // An error of task i (or of its commit) is rethrown once every thread has
 // stopped; tasks after it are not committed, so failures are deterministic.
+// A task whose face has no valid separator (DecompositionError) is not an
+// error of the round: failed(i, error) is called in its place, in the same
+// order, and the round goes on. Any other error stops the round.
 using CommitFn = std::function<void(std::size_t task, const SplitResult& result)>;
+using FailFn = std::function<void(std::size_t task, const DecompositionError& error)>;
 void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
-               unsigned threads, const ResourceGuard& guard, const CommitFn& commit);
+               unsigned threads, const ResourceGuard& guard, const CommitFn& commit, const FailFn& failed);
 
 } // namespace madd::detail

@@ -3,8 +3,10 @@
 #include "split/split.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "madd/bisect.hpp"
@@ -33,6 +35,19 @@ constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= th
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
 constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split/chord.hpp)
 constexpr double chord_gain = 0.02;             // a chord must balance at least this much better
+// When no spacing of the dyadic rounds (first_spacing / 2^k) gives any valid
+// separator, the boundary is sampled at these fractions of the first spacing
+// before the face is given up. A narrow neck or a short feature can make the
+// medial-axis approximation miss every separator that meets Phi0 at one
+// sampling while another phase of the samples finds one: a coastal face that
+// fails at r = 3, 6, 12 and 24 was measured to split at r = 4.5, 5 and 7.
+constexpr double offset_spacings[] = {2.0 / 3.0, 0.6, 3.0 / 7.0, 0.3};
+// When no even share gives a valid separator, shares of the weight on the
+// smaller side tried (on the graphs of the first uneven_rounds spacings): a
+// split that leaves one side at a quarter of the face still beats no split,
+// which would leave the whole face as one subdomain.
+constexpr double uneven_fractions[] = {0.4, 1.0 / 3.0, 0.25, 0.2};
+constexpr int uneven_rounds = 3;
 constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
@@ -158,22 +173,29 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
 // between the sides after the split. Smooths the chosen separator (Sec. 5.1).
 Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, int round,
                          const SplitOptions& options, const FaceDomain& fd, const Triangulation& tri,
-                         const MedialGraph& g) {
+                         const MedialGraph& g, std::span<const double> fractions) {
   Candidate out;
   const bool smooth = options.smoothing_iterations > 0;
   const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
   std::vector<std::uint8_t> best_side;
-  const std::uint32_t half = plan / 2;
-  for (std::uint32_t j = half; j >= 1 && half - j <= max_extra_targets; --j) {
+  const auto consider = [&](double fraction, std::uint64_t target_seed) {
     double w[2] = {0.0, 0.0};
-    auto side = valid_bisection(g, fd.refs.size(), static_cast<double>(j) / plan, seed + j, w);
-    if (side.empty()) continue;
+    auto side = valid_bisection(g, fd.refs.size(), fraction, target_seed, w);
+    if (side.empty()) return;
     const double q = balance_quality(plan, w[0], w[1]);
     if (q > out.quality) {
       out.quality = q;
       best_side = std::move(side);
     }
-    if (out.quality >= options.good_balance) break;
+  };
+  if (fractions.empty()) {
+    // The k1 : k2 shares of the plan, the even one first.
+    const std::uint32_t half = plan / 2;
+    for (std::uint32_t j = half; j >= 1 && half - j <= max_extra_targets && out.quality < options.good_balance; --j)
+      consider(static_cast<double>(j) / plan, seed + j);
+  } else {
+    for (std::size_t k = 0; k < fractions.size() && out.quality < options.good_balance; ++k)
+      consider(fractions[k], seed + 1 + k);
   }
   if (best_side.empty()) return out;
   EndSmoothing ends;
@@ -201,7 +223,8 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
 // One refinement round at `spacing`: refine, triangulate, build G_D and G'_D,
 // choose the separator; the time of each phase is added to `times`.
 Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
-                      const SplitOptions& options, const FaceDensity& density, SplitTimes& times) {
+                      const SplitOptions& options, const FaceDensity& density, SplitTimes& times,
+                      std::span<const double> fractions = {}) {
   Stopwatch clock;
   const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
   times.refine += clock.lap();
@@ -212,7 +235,7 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   if (density.graded && g.contracted.vertex_count() >= 2) set_vertex_weights(g, density_weights(g, tri, fd, density));
   times.graph += clock.lap();
   if (g.contracted.vertex_count() < 2) return Candidate{};
-  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g);
+  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g, fractions);
   times.bisect += clock.lap();
   return out;
 }
@@ -249,7 +272,8 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (const auto& ring : sub.faces[face].rings) vertices += ring.size();
   const double point_cap =
       std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
-  double spacing = std::sqrt(area) / (points_per_side * options.refine);
+  const double first_spacing = std::sqrt(area) / (points_per_side * options.refine);
+  double spacing = first_spacing;
   Candidate best;
   SplitTimes times;
   for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
@@ -270,6 +294,23 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
       best.result = std::move(chord->result);
       best.quality = chord->quality;
     }
+  }
+  // Trying harder before giving up the face: uneven shares, where the only
+  // separators meeting Phi0 cut off less than half (a neck near one end),
+  // at the first spacings, then other samplings of the boundary.
+  for (int k = 0; best.quality < 0.0 && k < uneven_rounds; ++k) {
+    if (limits != nullptr) limits->check(sub.faces.size());
+    const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
+    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + k, options, density, times,
+                              uneven_fractions);
+    if (c.quality > best.quality) best = std::move(c);
+  }
+  for (std::size_t k = 0; best.quality < 0.0 && k < std::size(offset_spacings); ++k) {
+    if (limits != nullptr) limits->check(sub.faces.size());
+    const double h = std::max(offset_spacings[k] * first_spacing, perimeter / point_cap);
+    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + uneven_rounds + static_cast<int>(k),
+                              options, density, times);
+    if (c.quality > best.quality) best = std::move(c);
   }
   if (best.quality < 0.0) {
     char buf[160];
