@@ -5,7 +5,9 @@
 // checked with verify_decomposition, then its figures (madd/metrics.hpp).
 // Prints a table per domain as the runs finish, then a summary per domain and
 // overall; --csv writes one row per run with every figure, for diffing a
-// sweep before and after a change (docs/performance.md, "Sweep").
+// sweep before and after a change (docs/performance.md, "Sweep"): the runs
+// are keyed by (domain, n, phi), no field is quoted, and the two time columns
+// come last so that `cut -d, -f1-23` drops them before a diff.
 //
 // What counts as what:
 // - a run that throws (a madd::Error, e.g. DecompositionError, LimitError with
@@ -96,11 +98,19 @@ Run run_one(const std::string& domain_name, const madd::Pslg& domain, const madd
   run.domain = domain_name;
   run.n = options.subdomains;
   run.phi = options.min_angle_deg;
+  // The time of a failed run is the time until decompose() threw; it is not repeated.
   std::vector<double> times;
   std::unique_ptr<madd::Decomposition> first;
+  double start = 0.0;
+  auto fail = [&](std::string error) {
+    times.push_back(madd::bench::now_seconds() - start);
+    run.status = Status::failed;
+    run.error = one_line(std::move(error));
+    if (first) run.deterministic = false;  // an earlier repeat succeeded
+  };
   try {
     for (int r = 0; r < repeat; ++r) {
-      const double start = madd::bench::now_seconds();
+      start = madd::bench::now_seconds();
       madd::Decomposition d = madd::decompose(domain, options);
       times.push_back(madd::bench::now_seconds() - start);
       if (!first) {
@@ -110,11 +120,9 @@ Run run_one(const std::string& domain_name, const madd::Pslg& domain, const madd
       }
     }
   } catch (const madd::Error& e) {
-    run.status = Status::failed;
-    run.error = std::string(madd::to_string(e.kind())) + ": " + one_line(e.what());
+    fail(std::string(madd::to_string(e.kind())) + ": " + e.what());
   } catch (const std::exception& e) {
-    run.status = Status::failed;
-    run.error = std::string("exception: ") + one_line(e.what());
+    fail(std::string("exception: ") + e.what());
   }
   if (!times.empty()) {
     run.time_median = median(times);
@@ -151,7 +159,7 @@ void print_run(const Run& run) {
                 run.deterministic ? "" : "  NOT DETERMINISTIC");
     break;
   case Status::failed:
-    std::printf("%-6s %s\n", "FAILED", run.error.c_str());
+    std::printf("%-6s after %.4f s: %s\n", "FAILED", run.time_median, run.error.c_str());
     break;
   case Status::check_failed:
     std::printf("%-6s verify_decomposition found %zu problem(s):\n", "CHECK", run.problems.size());
@@ -217,13 +225,12 @@ void print_summary(const std::string& label, const Summary& s) {
 
 // --- CSV --------------------------------------------------------------------
 
-std::string csv_quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
+// A message as one CSV field with no quoting: commas become semicolons and
+// double quotes single ones, so that a shell script may split rows on commas.
+std::string csv_field(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  std::replace(text.begin(), text.end(), '"', '\'');
+  return one_line(std::move(text));
 }
 
 const char* status_name(Status s) {
@@ -244,7 +251,7 @@ void write_csv_row(std::FILE* csv, const Run& run, unsigned threads, int repeat)
     message = std::to_string(run.problems.size()) + " problem(s): " + one_line(run.problems.front());
   }
   std::fprintf(csv, "%s,%u,%.17g,%u,%d,%s,%s,%d,", run.domain.c_str(), run.n, run.phi, threads, repeat,
-               status_name(run.status), csv_quoted(message).c_str(), run.deterministic ? 1 : 0);
+               status_name(run.status), csv_field(message).c_str(), run.deterministic ? 1 : 0);
   const madd::Metrics& m = run.m;
   if (run.status == Status::ok) {
     std::fprintf(csv, "%u,%u,%u,%u,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,", m.subdomains,
@@ -373,7 +380,8 @@ int run(int argc, char** argv) {
     }
     const std::string name = stem(file);
     domains.push_back(name);
-    std::printf("\n== %s (%zu segments, %zu holes)\n", name.c_str(), domain.segments.size(), domain.holes.size());
+    std::printf("\n== %s (%zu segments, %zu hole%s)\n", name.c_str(), domain.segments.size(), domain.holes.size(),
+                domain.holes.size() == 1 ? "" : "s");
     print_run_header();
     for (double phi : phis) {
       for (std::uint32_t n : counts) {
