@@ -311,6 +311,7 @@ int run(int argc, char** argv) {
       good = parse_list(value, phis);
     } else if ((arg == "--threads" || arg == "--repeat" || arg == "--time-limit") && value) {
       good = parse_list(value, numbers) && numbers.size() == 1 && numbers[0] >= 0;
+      if (good && arg != "--time-limit") good = numbers[0] == std::floor(numbers[0]) && numbers[0] <= 1e6;
       if (good && arg == "--threads") options.threads = static_cast<unsigned>(numbers[0]);
       if (good && arg == "--repeat") repeat = std::max(1, static_cast<int>(numbers[0]));
       if (good && arg == "--time-limit") options.time_limit_seconds = numbers[0];
@@ -340,7 +341,7 @@ int run(int argc, char** argv) {
     try {
       madd::check_options(o);
     } catch (const madd::Error& e) {
-      std::fprintf(stderr, "sweep: --phi %g: %s\n", phi, e.what());
+      std::fprintf(stderr, "sweep: bad options (with --phi %g): %s\n", phi, e.what());
       return 2;
     }
   }
