@@ -190,8 +190,9 @@ void check_angles(const Decomposition& d, ProblemLog& log) {
 // area between the boundary pieces and their input segments, which
 // check_boundary_pieces bounds (twice, `sliver`; 0 when every boundary vertex
 // lies exactly on its segment). Summing floating-point ring areas instead and
-// allowing a relative 1e-9 failed a correct decomposition of a unit triangle
-// near (1e9, 1e9), where the areas alone round by ~1e-7.
+// allowing a relative 1e-9 failed correct decompositions: of a unit triangle
+// near (1e9, 1e9), whose rounded boundary vertices cut off slivers of 1.7e-8
+// of its area, and of the issue 13 needle (1.2e-6, docs/hostile.md).
 void check_cover(const ExactSum& covered, const ExactSum& domain, double sliver, ProblemLog& log) {
   ExactSum difference = covered;
   difference.subtract(domain);
