@@ -18,6 +18,7 @@
 #include "madd/error.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/triangulation.hpp"
 #include "decomposition_check.hpp"
 
 namespace {
@@ -91,6 +92,46 @@ TEST_CASE("all points near (1e9, 1e9), 1e-3 apart") {
   for (int i = 0; i < 100; ++i) ring.push_back({x0 + 0.1 - i * 1e-3, y0 + 0.06});
   for (int i = 0; i < 60; ++i) ring.push_back({x0, y0 + 0.06 - i * 1e-3});
   expect_valid(polygon({ring}), 8);
+}
+
+// Issue 13: a fuzz run found this needle, 1e11 long and 0.02 wide near
+// (1e9, 1e9). Triangulation and decomposition were right; both self-checks
+// compared floating-point area sums with a fixed relative 1e-9 and failed
+// (exit 70). Now both areas are exact sums (docs/hostile.md).
+Pslg issue13_needle() {
+  return polygon({{{1040000000.0, 100000000030.0},
+                   {1000000000.02, 1000000000.0},
+                   {1000000000.01, 1000000000.004},
+                   {1000000000.006, 1000000000.004},
+                   {1000000000.006, 1000000000.008},
+                   {1000000000.0, 1000000000.008}}});
+}
+
+TEST_CASE("issue 13: a needle 1e11 long and 0.02 wide near (1e9, 1e9) triangulates and decomposes") {
+  const Pslg p = issue13_needle();
+  madd::validate(p);
+  const madd::Triangulation tri = madd::triangulate(p);
+  const madd::Verification v = madd::verify_triangulation(tri, &p);
+  INFO((v.ok() ? std::string() : v.problems.front()));
+  CHECK(v.ok());
+  for (const std::uint32_t n : {2u, 3u, 8u, 64u}) expect_valid(p, n);
+  expect_valid(p, 8, 89.0);
+}
+
+TEST_CASE("sloping sides far from the origin: a unit triangle near (1e9, 1e9) and (1e11, 1e11), a sliver near 1e10") {
+  // A vertex interpolated on a sloping side is rounded off it by up to
+  // ~1e-7 near 1e9 (1e-5 near 1e11): far more than the former fixed
+  // tolerance of 1e-9 sqrt(area), and the slivers it cuts off or adds are
+  // more than a relative 1e-9 of a unit area.
+  for (const double o : {1e9, 1e11}) {
+    const Pslg p = polygon({{{o, o}, {o + 1, o + 0.3}, {o + 0.4, o + 1}}});
+    for (const std::uint32_t n : {2u, 8u}) expect_valid(p, n);
+  }
+  const double o = 1e10, c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  const double length = 1000, width = 1e-3;  // aspect ratio 1e6, at 30 degrees
+  const Pslg sliver = polygon({{{o, o}, {o + length * c, o + length * s},
+                                {o + length * c - width * s, o + length * s + width * c}, {o - width * s, o + width * c}}});
+  for (const std::uint32_t n : {2u, 8u}) expect_valid(sliver, n);
 }
 
 TEST_CASE("a hole within 1e-12 of the outer boundary without touching it") {

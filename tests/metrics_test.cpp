@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "kernel/rings.hpp"
 #include "madd/metrics.hpp"
 #include "metrics_fixtures.hpp"
 
@@ -221,6 +222,68 @@ TEST_CASE("verify_decomposition: a gap is not full cover") {
   INFO(all_problems(v));
   CHECK(mentions(v, "gap or an overlap"));
   CHECK(mentions(v, "instead of 2"));
+}
+
+TEST_CASE("verify_decomposition: a stored area must match its rings within rings_area's own error bound") {
+  // 1e-12 off: far below the former tolerance of 1e-9 of the domain's area,
+  // far above what rings_area can round to on the unit square.
+  Fixture f = test::square_halves();
+  REQUIRE(verify_decomposition(f.decomposition, f.domain, 2).ok());
+  f.decomposition.subdomains[0].area += 1e-12;
+  CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "claims area"));
+}
+
+// A unit triangle near (1e9, 1e9) cut from a vertex interpolated on its
+// sloping side (as src/split/refine.cpp places them) to the opposite corner:
+// the vertex is rounded off the side by ~1e-8, which the former fixed
+// tolerance of 1e-9 sqrt(area) rejected, as it did the sliver of area between
+// the two halves and the triangle (more than a relative 1e-9).
+Fixture triangle_far_away(Point shift) {
+  const double o = 1e9;
+  const Point a{o, o}, b{o + 1, o + 0.3}, c{o + 0.4, o + 1};
+  const Point m = lerp(a, b, 0.6) + shift;
+  Fixture f = test::make_fixture({a, b, c, m}, 3, {{0, 1}, {1, 2}, {2, 0}}, {},
+                                 {{{{0, 3, 2}}, triangle_centroid(a, m, c), {}}, {{{3, 1, 2}}, triangle_centroid(m, b, c), {}}});
+  Decomposition& d = f.decomposition;
+  // make_fixture finds pieces by exact incidence, which m misses: a-m and m-b are pieces of side 0.
+  for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
+    const std::uint32_t lo = std::min(d.segments[g].a, d.segments[g].b), hi = std::max(d.segments[g].a, d.segments[g].b);
+    if (hi == 3 && lo <= 1) {
+      d.segment_origin[g] = 0;
+      d.segments[g].marker = 1;
+    }
+  }
+  for (Subdomain& sub : d.subdomains) sub.area = sub.weight = detail::rings_area(d.points, sub.rings);
+  d.min_angle_deg = 20;  // the cut makes angles of 26.9 and 35.5 degrees at c
+  return f;
+}
+
+TEST_CASE("verify_decomposition: a vertex rounded off a sloping side far from the origin is accepted; farther off it is not") {
+  const Fixture rounded = triangle_far_away({0, 0});
+  REQUIRE(orient2d(rounded.domain.points[0], rounded.domain.points[1], rounded.decomposition.points[3]) != 0.0);
+  const Verification v = verify_decomposition(rounded.decomposition, rounded.domain, 2);
+  INFO(all_problems(v));
+  CHECK(v.ok());
+  // 1e-5 across the side: no interpolation rounds that far at 1e9 (bound ~6e-7).
+  const Fixture moved = triangle_far_away({-3e-6, 1e-5});
+  const Verification w = verify_decomposition(moved.decomposition, moved.domain, 2);
+  INFO(all_problems(w));
+  CHECK(mentions(w, "leaves input segment 0"));
+}
+
+TEST_CASE("verify_decomposition: the pieces of an input segment form one chain from its first end to its second") {
+  // The separator x = 0.5 of square_halves passed off as a piece of the bottom side.
+  Fixture f = test::square_halves();
+  Decomposition& d = f.decomposition;
+  for (std::uint32_t g = 0; g < d.segments.size(); ++g)
+    if (d.is_separator(g)) {
+      d.segment_origin[g] = 0;
+      d.segments[g].marker = 1;
+    }
+  const Verification v = verify_decomposition(d, f.domain, 2);
+  INFO(all_problems(v));
+  CHECK(mentions(v, "leaves input segment 0"));
+  CHECK(mentions(v, "pieces branch at (0.5, 0)"));
 }
 
 TEST_CASE("verify_decomposition: wrong marker and malformed indices do not crash") {

@@ -22,6 +22,7 @@
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
+#include "triangulation/exact_area.hpp"
 
 namespace {
 
@@ -171,6 +172,36 @@ void check_constrained(const madd::Pslg& pslg) {
   const madd::Verification v = madd::verify_triangulation(tri, &pslg);
   CHECK_MESSAGE(v.ok(), problems(v));
   CHECK(tri == madd::triangulate(pslg));  // deterministic
+}
+
+// Issue 13: an outside run of fuzz_triangulate found this needle, 1e11 long
+// and 0.02 wide near (1e9, 1e9). Its 4 triangles (Triangle makes the same 4)
+// are right, exactly; the check summed floating-point triangle areas, off by
+// 208 in 990159056 (relative 2e-7), against a fixed relative 1e-9.
+constexpr const char* issue13_needle =
+    "6 2 0 0\n"
+    "1 1040000000.0 100000000030\n"
+    "2 1000000000.02 1000000000.0\n"
+    "3 1000000000.01 1000000000.004\n"
+    "4 1000000000.006 1000000000.004\n"
+    "5 1000000000.006 1000000000.008\n"
+    "6 1000000000.0 1000000000.008\n"
+    "6 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 5 1\n5 5 6 1\n6 6 1 1\n0\n";
+
+// A needle from `base` towards direction `angle`, `length` long, whose blunt
+// end is a zigzag of 5 vertices `width` across: cancellation in every
+// floating-point area of it grows with length / width.
+madd::Pslg needle(Point base, double angle, double length, double width) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  madd::Pslg p;
+  p.first_index = 0;
+  p.points.push_back({base.x + length * c, base.y + length * s});
+  for (int k = 4; k >= 0; --k) {
+    const double across = width * k / 4, back = (k % 2) * width / 5;
+    p.points.push_back({base.x + across * s - back * c, base.y - across * c - back * s});
+  }
+  for (std::uint32_t k = 0; k < 6; ++k) p.segments.push_back({k, (k + 1) % 6, 0});
+  return p;
 }
 
 } // namespace
@@ -392,6 +423,58 @@ TEST_SUITE("triangulation") {
       }
       check_constrained(pslg);
     }
+  }
+
+  TEST_CASE("issue 13: the needle 1e11 long and 0.02 wide near (1e9, 1e9) verifies, its area exactly the domain's") {
+    const madd::PolyFile file = madd::parse_poly(issue13_needle);
+    madd::validate(file.pslg, file.source);
+    const madd::Triangulation tri = madd::triangulate(file.pslg);
+    CHECK(tri.triangle_count() == 4);
+    const madd::Verification v = madd::verify_triangulation(tri, &file.pslg);
+    CHECK_MESSAGE(v.ok(), problems(v));
+    madd::detail::ExactSum difference = madd::detail::triangles_twice_area_exact(tri);
+    difference.subtract(madd::detail::domain_twice_area_exact(file.pslg));
+    CHECK(difference.is_zero());
+  }
+
+  TEST_CASE("needles of several slopes, lengths and widths far from the origin verify") {
+    for (const double offset : {1e6, 1e9, 1e11}) {
+      for (const double angle : {0.3, 1.2, 2.5, 4.0}) {
+        for (const double length : {1e6, 1e9, 1e11}) {
+          for (const double width : {0.02, 1.0}) {
+            if (width < offset * 1e-12) continue;  // not representable apart
+            CAPTURE(offset);
+            CAPTURE(angle);
+            CAPTURE(length);
+            CAPTURE(width);
+            const madd::Pslg p = needle({offset, offset}, angle, length, width);
+            madd::validate(p);
+            check_constrained(p);
+          }
+        }
+      }
+    }
+  }
+
+  TEST_CASE("the area check is exact: a spare triangle of area 1e-12 beside a unit square is caught") {
+    // Everything else about the spare triangle is consistent (counter-clockwise,
+    // no shared edge, no segment), so only the area can tell, and it is 1e-12
+    // of the domain's: below the former relative tolerance of 1e-9.
+    madd::Pslg square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (std::uint32_t k = 0; k < 4; ++k) square.segments.push_back({k, (k + 1) % 4, 0});
+    madd::Triangulation tri = madd::triangulate(square);
+    REQUIRE(madd::verify_triangulation(tri, &square).ok());
+    for (const Point p : {Point{2, 2}, Point{2 + 1e-6, 2}, Point{2, 2 + 2e-6}}) {
+      square.points.push_back(p);
+      tri.points.push_back(p);
+    }
+    tri.triangles.push_back({4, 5, 6});
+    tri.neighbours.push_back({madd::no_index, madd::no_index, madd::no_index});
+    tri.segment_of.push_back({madd::no_index, madd::no_index, madd::no_index});
+    const madd::Verification v = madd::verify_triangulation(tri, &square);
+    REQUIRE(v.problems.size() == 1);
+    CHECK(v.problems.front().find("total area") != std::string::npos);
   }
 
   TEST_CASE("a points-only .node file triangulates over its convex hull") {

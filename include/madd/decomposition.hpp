@@ -149,12 +149,16 @@ struct PhaseTime {
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases);
 
 // Recomputes every invariant of a decomposition of `domain` into
-// `expected_count` subdomains: full cover (area sum = domain_area, rel 1e-9),
+// `expected_count` subdomains: full cover (the subdomains' and the domain's
+// areas summed exactly, equal but for the slivers rounded boundary vertices
+// cut off, whose area is bounded from their exact distances; docs/quality.md),
 // no two segments crossing, overlapping or touching except at shared endpoints
 // (exact, orient2d, uniform grid), one CCW outer ring per subdomain with CW
 // holes inside it, conforming (each separator in two rings in opposite
 // directions, each boundary piece in one, no T-junctions), boundary pieces
-// exactly covering the input segments with the right markers, every new angle
+// forming one chain along each input segment, off it by no more than the
+// rounding of their interpolation, with the right markers, stored areas
+// within rings_area's rounding bound of the exact ones, every new angle
 // >= decomposition.min_angle_deg - 1e-9 deg, interior and hole points strictly
 // inside. Never throws on a malformed decomposition: it reports problems.
 Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,

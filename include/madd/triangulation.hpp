@@ -45,7 +45,8 @@ Triangulation triangulate(const Pslg& pslg);
 // Independent check of the invariants: orientation, symmetric adjacency, the
 // empty-circle property of every unconstrained interior edge (exact incircle),
 // and, when `pslg` is given, every segment present as a chain of edges and the
-// total area equal to domain_area(pslg).
+// total area exactly that of the domain (the area domain_area(pslg)
+// approximates; both summed in exact expansion arithmetic).
 Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg = nullptr);
 
 } // namespace madd

@@ -2,6 +2,8 @@
 // location that every stage uses.
 #include "kernel/rings.hpp"
 
+#include <cmath>
+
 #include "kernel/containment.hpp"
 #include "madd/predicates.hpp"
 
@@ -35,6 +37,51 @@ double rings_area(std::span<const Point> points, std::span<const std::vector<std
   double area = 0.0;
   for (const auto& ring : rings) area += ring_signed_area(RingView(points, ring));
   return area;
+}
+
+// The error of ring_signed_area, in Higham's notation (eps = 2^-53, the unit
+// roundoff; gamma_k = k eps / (1 - k eps); every operation is exact up to a
+// factor (1 + delta), |delta| <= eps). With o = ring[0], the fan has m = n - 2
+// terms c_k = fl(fl(u.x v.y) - fl(u.y v.x)), u = fl(p_k - o), v = fl(p_k+1 - o).
+// Let X_k, Y_k be the exact products of the exact differences. Each computed
+// product is X_k (1 + theta_3) (two differences, one product), the
+// subtraction adds one more factor, so c_k = X_k (1 + theta_4) - Y_k (1 + theta_4').
+// Summing the m terms from 0.0 rounds each of them at most m - 1 times, so
+// twice = sum_k X_k (1 + theta_m+3) - Y_k (1 + theta'_m+3), and
+//   |twice - exact twice area| <= gamma_(n+1) S,   S = sum_k |X_k| + |Y_k|.
+// (A fused multiply-add in the subtraction only removes a rounding.)
+// S is not available exactly; its floating-point evaluation S' (the same
+// products, 2m - 1 additions of nonnegative values) satisfies
+// S <= S' / ((1 - gamma_3)(1 - gamma_(2m-1))). For n < 2^32, n eps < 2^-21, and
+//   gamma_(n+1) / ((1 - gamma_3)(1 - gamma_2n))  <=  (n + 1) eps (1 + 2^-18),
+// so (n + 1) eps S' (1 + 2^-16) bounds the error of twice the area, with room
+// for the three roundings of the bound itself. Halving is exact.
+double ring_signed_area_error(RingView ring) noexcept {
+  const std::size_t n = ring.size();
+  if (n < 3) return 0.0;
+  const Point o = ring[0];
+  double magnitude = 0.0;
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const Point u = ring[k] - o;
+    const Point v = ring[k + 1] - o;
+    magnitude += std::abs(u.x * v.y) + std::abs(u.y * v.x);
+  }
+  constexpr double eps = 0x1p-53;
+  return 0.5 * (static_cast<double>(n + 1) * eps) * magnitude * (1.0 + 0x1p-16);
+}
+
+// rings_area adds R ring areas a_r from 0.0: |fl(sum a_r) - sum a_r| <=
+// gamma_(R-1) sum |a_r|, on top of each ring's own error; the factor
+// (1 + 2^-16) again covers gamma's denominator and the roundings of this sum.
+double rings_area_error(std::span<const Point> points, std::span<const std::vector<std::uint32_t>> rings) noexcept {
+  double each = 0.0;
+  double magnitude = 0.0;
+  for (const auto& ring : rings) {
+    each += ring_signed_area_error(RingView(points, ring));
+    magnitude += std::abs(ring_signed_area(RingView(points, ring)));
+  }
+  constexpr double eps = 0x1p-53;
+  return (each + static_cast<double>(rings.size()) * eps * magnitude) * (1.0 + 0x1p-16);
 }
 
 Orientation ring_orientation(RingView ring) noexcept {

@@ -44,6 +44,15 @@ double ring_signed_area(RingView ring) noexcept;
 // counter-clockwise, holes clockwise): the sum of the rings' signed areas.
 double rings_area(std::span<const Point> points, std::span<const std::vector<std::uint32_t>> rings) noexcept;
 
+// Upper bounds on the rounding error of the two functions above:
+// |ring_signed_area(ring) - the exact signed area| <= ring_signed_area_error(ring),
+// and likewise for rings_area. Derived in rings.cpp; they let a check compare a
+// stored floating-point area with the exact one (kernel/exact_sum.hpp) without
+// a tolerance picked by hand. Valid for rings of fewer than 2^32 vertices with
+// coordinates in validate()'s range (no underflow or overflow).
+double ring_signed_area_error(RingView ring) noexcept;
+double rings_area_error(std::span<const Point> points, std::span<const std::vector<std::uint32_t>> rings) noexcept;
+
 enum class Orientation : std::int8_t { clockwise = -1, degenerate = 0, counter_clockwise = 1 };
 
 // Exact orientation of a simple ring (no self-intersection, no repeated

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "madd/decomposition.hpp"
 #include "madd/error.hpp"
 #include "madd/pslg.hpp"
 
@@ -29,6 +30,14 @@ private:
 // T-junction), if any. Exact (orient2d); a uniform grid keeps it near-linear.
 void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
                              ProblemLog& log);
+
+// The boundary pieces: each input segment's pieces lie on it (up to the
+// rounding bound of the interpolation that placed their vertices), form one
+// chain from its first end to its second advancing along it, and carry its
+// marker (or 1); separators carry marker 0. Returns an upper bound on how far
+// twice the area the subdomains cover may differ from twice the domain's
+// because of those rounded vertices (0 when every one is exactly on its segment).
+double check_boundary_pieces(const Decomposition& d, const Pslg& domain, ProblemLog& log);
 
 // "(x, y)" with full precision, for messages.
 std::string point_text(Point p);
