@@ -73,37 +73,40 @@ ScriptContext square_context() {
   return context;
 }
 
-// Runs `text` as "s.txt", expecting a ParseError on `line` whose message contains `part`.
-void check_script_option_error(const std::string& text, std::size_t line, std::size_t column, const std::string& field,
-                               const std::string& part) {
+// Runs `text` as "s.txt" on a fresh square context; it must throw an E,
+// which `check` then examines (with its message captured).
+template <class E, class Check>
+void expect_script_error(const std::string& text, Check&& check) {
   CAPTURE(text);
   ScriptContext context = square_context();
   try {
     run_script(text, "s.txt", context);
     FAIL("no error");
-  } catch (const OptionError& e) {
+  } catch (const E& e) {
     const std::string what = e.what();
     CAPTURE(what);
-    CHECK(e.option() == field);
-    CHECK(what.rfind("s.txt:" + std::to_string(line) + ":" + std::to_string(column) + ": ", 0) == 0);
-    CHECK(what.find(part) != std::string::npos);
+    check(e, what);
   }
 }
 
+// A bad option value: an OptionError for `field`, located at line:column, whose message contains `part`.
+void check_script_option_error(const std::string& text, std::size_t line, std::size_t column, const std::string& field,
+                               const std::string& part) {
+  expect_script_error<OptionError>(text, [&](const OptionError& e, const std::string& what) {
+    CHECK(e.option() == field);
+    CHECK(what.rfind("s.txt:" + std::to_string(line) + ":" + std::to_string(column) + ": ", 0) == 0);
+    CHECK(what.find(part) != std::string::npos);
+  });
+}
+
+// The script's own problem: a ParseError on `line` (and `column`, when given) whose message contains `part`.
 void check_script_error(const std::string& text, std::size_t line, const std::string& part, std::size_t column = 0) {
-  CAPTURE(text);
-  ScriptContext context = square_context();
-  try {
-    run_script(text, "s.txt", context);
-    FAIL("no error");
-  } catch (const ParseError& e) {
-    const std::string what = e.what();
-    CAPTURE(what);
+  expect_script_error<ParseError>(text, [&](const ParseError& e, const std::string& what) {
     CHECK(e.path() == "s.txt");
     CHECK(e.line() == line);
     if (column != 0) CHECK(e.column() == column);
-    CHECK(std::string(e.what()).find(part) != std::string::npos);
-  }
+    CHECK(what.find(part) != std::string::npos);
+  });
 }
 
 } // namespace
