@@ -216,14 +216,21 @@ TEST_CASE("no valid separator: a typed error naming the subdomain, never a parti
   }
 }
 
-TEST_CASE("an equilateral triangle splits at 89.9 degrees, by a kite through its centre") {
+TEST_CASE("a face with no even split at Phi0 is split unevenly rather than given up") {
+  // An equilateral triangle at 89.9 degrees, with one refinement round: no
+  // separator halves it, but a kite from two side midpoints to the centre
+  // cuts off a third at 90 degrees everywhere (the uneven shares tried before
+  // a face is given up, docs/algorithm.md).
   const Pslg triangle = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2.0}}});
   madd::DecomposeOptions o;
   o.subdomains = 2;
   o.min_angle_deg = 89.9;
+  o.max_refinement_rounds = 1;
   const Decomposition d = madd::decompose(triangle, o);
   CHECK(madd::verify_decomposition(d, triangle, 2).ok());
-  CHECK(madd::metrics(d).angle_min >= 89.9);
+  const madd::Metrics m = madd::metrics(d);
+  CHECK(m.angle_min >= 89.9);
+  CHECK(m.min_area_over_mean < 0.9);  // uneven: about 1/3 and 2/3
 }
 
 TEST_CASE("phase times: every split phase and the commits are timed, and timing changes nothing") {
