@@ -93,4 +93,63 @@ TEST_CASE("C3: largest area / mean area <= 1.3 on the bundled domains") {
   }
 }
 
+// Rebalancing (docs/algorithm.md, "Rebalancing"): the cases below exceed 1.25
+// without it (checked, so the test cannot pass vacuously) and must come within
+// rebalance_above x the mean with it, valid, at Phi0, separators no longer.
+TEST_CASE("rebalancing brings the largest subdomain within 1.2 x the mean where splits alone cannot") {
+  struct Case {
+    const char* file;
+    std::uint32_t n;
+    double phi;
+  };
+  for (const Case c : {Case{"comb.poly", 16, 60.0}, Case{"archipelago.poly", 64, 60.0}}) {
+    CAPTURE(c.file);
+    CAPTURE(c.n);
+    const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/" + c.file);
+    madd::DecomposeOptions o;
+    o.subdomains = c.n;
+    o.min_angle_deg = c.phi;
+    o.threads = 1;
+    o.rebalance_above = 0.0;
+    const madd::Metrics off = madd::metrics(madd::decompose(domain, o));
+    REQUIRE(off.max_area_over_mean > 1.25);
+    o.rebalance_above = 1.2;
+    const madd::Decomposition d = madd::decompose(domain, o);
+    const madd::Verification check = madd::verify_decomposition(d, domain, c.n);
+    INFO((check.ok() ? std::string() : check.problems.front()));
+    CHECK(check.ok());
+    const madd::Metrics on = madd::metrics(d);
+    CHECK(on.max_area_over_mean <= 1.2);
+    CHECK(on.angle_min >= c.phi - 1e-9);
+    CHECK(on.mean_separator_per_subdomain <= 1.02 * off.mean_separator_per_subdomain);
+    // One repair at a time in a fixed order: the thread count changes nothing.
+    o.threads = 2;
+    CHECK(madd::decompose(domain, o) == d);
+  }
+}
+
+TEST_CASE("rebalancing changes nothing where every subdomain is within the bound") {
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
+  madd::DecomposeOptions o;
+  o.subdomains = 64;
+  o.threads = 1;
+  o.rebalance_above = 0.0;
+  const madd::Decomposition off = madd::decompose(domain, o);
+  const madd::Metrics m = madd::metrics(off);
+  REQUIRE(m.max_area_over_mean < 1.3);
+  o.rebalance_above = m.max_area_over_mean * 1.001;  // nothing above the bound
+  CHECK(madd::decompose(domain, o) == off);
+}
+
+TEST_CASE("the archipelago: within 1.25 at every N and Phi0 the sweep uses") {
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/archipelago.poly");
+  for (const double phi : {60.0, 70.0}) {
+    for (const std::uint32_t n : {16u, 100u, 500u, 2000u}) {
+      CAPTURE(phi);
+      CAPTURE(n);
+      CHECK(checked(domain, n, phi).max_area_over_mean <= 1.25);
+    }
+  }
+}
+
 } // TEST_SUITE

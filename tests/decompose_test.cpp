@@ -241,7 +241,7 @@ TEST_CASE("phase times: every split phase and the commits are timed, and timing 
   std::vector<madd::PhaseTime> phases;
   const Decomposition timed = madd::decompose(domain, o, phases);
   CHECK(timed == madd::decompose(domain, o));
-  const std::vector<std::string> names{"refine", "triangulate", "graph", "bisect", "insert"};
+  const std::vector<std::string> names{"refine", "triangulate", "graph", "bisect", "insert", "rebalance"};
   REQUIRE(phases.size() == names.size());
   double total = 0.0;
   for (std::size_t k = 0; k < names.size(); ++k) {

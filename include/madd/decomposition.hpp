@@ -28,6 +28,12 @@ struct DecomposeOptions {
   // Smoothing (Sec. 5.1): iterations of step 2 (0 turns smoothing off,
   // step 1's edge-weight coefficients included). See docs/smoothing.md.
   int smoothing_iterations = 1;
+  // Balance repair (C3, our extension; docs/algorithm.md, "Rebalancing"):
+  // once N is reached, a subdomain larger than rebalance_above x the mean
+  // area is merged with one or two smaller neighbours and the union split
+  // again, kept when every new part is smaller than it. 0 turns it off;
+  // otherwise >= 1. Uniform decompositions only (not graded, no required area).
+  double rebalance_above = 1.2;
 
   // Graded decomposition (Sec. 5.2). A subdomain's density weight is
   // refine * area + gradation * weight, where weight comes from, in order:

@@ -12,6 +12,7 @@
 #include "decompose/grading.hpp"
 #include "kernel/resource_limits.hpp"
 #include "split/split.hpp"
+#include "decompose/rebalance.hpp"
 #include "decompose/scheduler.hpp"
 #include "decompose/stuck_faces.hpp"
 #include "kernel/stopwatch.hpp"
@@ -33,21 +34,6 @@ using detail::Subdivision;
 unsigned thread_count(const DecomposeOptions& options, std::size_t tasks) {
   unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
-}
-
-// Shares `plan` between the two sides in proportion to what they actually got,
-// so that the imbalance of one level does not compound down the recursion.
-std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
-  std::uint32_t best = plan / 2;
-  double best_cost = INFINITY;
-  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
-    const double cost = std::max(w0 / k0, w1 / (plan - k0));
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = k0;
-    }
-  }
-  return best;
 }
 
 Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const DecomposeOptions& options,
@@ -152,7 +138,7 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
                         grading.before_commit(snapshot, r);
                         const std::uint32_t f = tasks[i].face;
                         const std::uint32_t plan = tasks[i].plan;
-                        const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
+                        const std::uint32_t k0 = detail::side0_plan(plan, r.weight[0], r.weight[1]);
                         const std::uint32_t g = sub.commit(f, r);
                         sub.faces[f].plan = k0;
                         sub.faces[g].plan = plan - k0;
@@ -165,11 +151,18 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
                       });
     grading.end_round(sub);
   }
+  double rebalance_seconds = 0.0;
+  if (options.rebalance_above > 0.0 && !area_driven && !grading.mode().graded()) {
+    detail::Stopwatch clock;
+    detail::rebalance(sub, split_options, guard, {.target = options.rebalance_above});
+    rebalance_seconds = clock.lap();
+  }
   phases.push_back({"refine", split_times.refine});
   phases.push_back({"triangulate", split_times.triangulate});
   phases.push_back({"graph", split_times.graph});
   phases.push_back({"bisect", split_times.bisect});
   phases.push_back({"insert", insert_seconds});
+  phases.push_back({"rebalance", rebalance_seconds});
   if (sub.faces.size() == 1) sub.faces[0].interior = detail::largest_triangle_centroid(domain);
   detail::check_new_angles(sub, options.min_angle_deg);
   return to_decomposition(sub, domain, options, grading);

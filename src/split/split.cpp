@@ -97,6 +97,19 @@ double balance_quality(std::uint32_t plan, double w0, double w1) {
   return (w0 + w1) / static_cast<double>(plan) / best;
 }
 
+std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
+  std::uint32_t best = plan / 2;
+  double best_cost = INFINITY;
+  for (std::uint32_t k0 = 1; k0 < plan; ++k0) {
+    const double cost = std::max(w0 / k0, w1 / (plan - k0));
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = k0;
+    }
+  }
+  return best;
+}
+
 namespace {
 
 struct Candidate {

@@ -53,6 +53,11 @@ Point largest_triangle_centroid(const Pslg& domain);
 // every final subdomain the mean weight, lower as the largest one grows.
 double balance_quality(std::uint32_t plan, double w0, double w1);
 
+// The share of `plan` for side 0 that balance_quality rates best: the plan is
+// shared between the sides in proportion to what they actually got, so that
+// the imbalance of one level does not compound down the recursion.
+std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1);
+
 // Sec. 4.3: pairs of G'_D vertices whose cut separators would pinch a side at
 // one boundary point (empty when the bisection `side` is valid).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,

@@ -11,8 +11,6 @@
 
 namespace madd::detail {
 
-namespace {
-
 Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& half_edges,
                  const std::vector<std::uint32_t>& ids) {
   Cycle c;
@@ -23,8 +21,6 @@ Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& 
   c.area = ring_signed_area(RingView(points, c.vertices));
   return c;
 }
-
-} // namespace
 
 Subdivision Subdivision::from_domain(const Pslg& domain) {
   Subdivision s;

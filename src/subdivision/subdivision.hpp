@@ -78,6 +78,10 @@ struct HalfEdge {
 std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& points,
                                                    const std::vector<HalfEdge>& half_edges);
 
+// The cycle of half-edges `ids` (one entry of walk_faces), with its signed area.
+Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& half_edges,
+                 const std::vector<std::uint32_t>& ids);
+
 class Subdivision {
 public:
   std::vector<Point> points;
@@ -102,6 +106,18 @@ public:
   std::uint32_t commit(std::uint32_t face, const SplitResult& split);
 
   double face_area(std::uint32_t face) const;
+
+  // Removes every separator between the adjacent faces `a` and `b` and makes
+  // their union one face, with the id min(a, b) and a's interior point; the
+  // last face takes the id max(a, b), so face ids stay 0..faces.size()-1.
+  // Returns false, changing nothing, when the faces share no separator or
+  // their union is not one face with simple rings (decompose/rebalance.hpp).
+  // Removed separators stay in `segments`, owned by no face, until compact().
+  bool merge(std::uint32_t a, std::uint32_t b);
+
+  // Drops the separators merge() removed and the points only they used,
+  // renumbering the remaining segments and points in their order.
+  void compact();
 
 private:
   std::uint32_t resolve(const EndRef& end);

@@ -1,0 +1,187 @@
+// The balance repair (rebalance.hpp): merge the largest subdomain with its
+// smaller neighbours, split the union again, keep it when it helps.
+#include "decompose/rebalance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "madd/error.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+std::size_t ring_vertices(const Subdivision& sub, std::uint32_t face) {
+  std::size_t n = 0;
+  for (const auto& ring : sub.faces[face].rings) n += ring.size();
+  return n;
+}
+
+// The faces across the separators of `face`, the smallest first (ties: lower id).
+std::vector<std::uint32_t> neighbours_by_area(const Subdivision& sub, std::uint32_t face,
+                                              const std::vector<double>& area) {
+  std::vector<std::uint32_t> out;
+  for (const auto& ring : sub.faces[face].ring_segments) {
+    for (const std::uint32_t seg : ring) {
+      for (const std::uint32_t f : sub.seg_faces[seg]) {
+        if (f != face && f != no_index) out.push_back(f);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  std::sort(out.begin(), out.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return area[x] != area[y] ? area[x] < area[y] : x < y;
+  });
+  return out;
+}
+
+// Splits `face` into `plan` subdomains as the N-way driver would (one face
+// at a time); the new faces are appended. Throws DecompositionError.
+void split_into(Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& split_options,
+                const ResourceGuard& guard) {
+  if (plan < 2) return;
+  const SplitResult r = compute_split(sub, face, plan, split_options, {}, &guard);
+  const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
+  const std::uint32_t added = sub.commit(face, r);
+  split_into(sub, face, k0, split_options, guard);
+  split_into(sub, added, plan - k0, split_options, guard);
+}
+
+struct Repair {
+  Subdivision sub;
+  double largest = 0.0;         // the largest of the new subdomains
+  double added_length = 0.0;    // separator length inside the union, after minus before
+};
+
+// Total length of the separators between two faces of `faces`.
+double inner_separator_length(const Subdivision& sub, const std::vector<std::uint32_t>& faces) {
+  const auto in = [&](std::uint32_t f) { return std::find(faces.begin(), faces.end(), f) != faces.end(); };
+  double length = 0.0;
+  for (std::uint32_t s = 0; s < sub.segments.size(); ++s) {
+    if (in(sub.seg_faces[s][0]) && in(sub.seg_faces[s][1]))
+      length += distance(sub.points[sub.segments[s].a], sub.points[sub.segments[s].b]);
+  }
+  return length;
+}
+
+// In a copy of `sub`: merges `face` with `partners` and splits the union into
+// as many subdomains as it was made of.
+std::optional<Repair> try_repair(const Subdivision& sub, std::uint32_t face, std::span<const std::uint32_t> partners,
+                                 const SplitOptions& split_options, const ResourceGuard& guard) {
+  Repair out{sub, 0.0};
+  const auto before = static_cast<std::uint32_t>(sub.faces.size());
+  // Merged one at a time, each with a partner that touches the union so far.
+  std::vector<std::uint32_t> left(partners.begin(), partners.end());
+  std::uint32_t merged = face;
+  while (!left.empty()) {
+    bool progress = false;
+    for (std::size_t k = 0; k < left.size(); ++k) {
+      const auto last = static_cast<std::uint32_t>(out.sub.faces.size() - 1);
+      const std::uint32_t partner = left[k];
+      if (!out.sub.merge(merged, partner)) continue;
+      // merge() keeps the lower id and moves the last face into the other one.
+      const std::uint32_t keep = std::min(merged, partner), gone = std::max(merged, partner);
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
+      for (std::uint32_t& id : left) {
+        if (id == last) id = gone;
+      }
+      merged = keep;
+      progress = true;
+      break;
+    }
+    if (!progress) return std::nullopt;
+  }
+  try {
+    split_into(out.sub, merged, static_cast<std::uint32_t>(partners.size() + 1), split_options, guard);
+  } catch (const DecompositionError&) {
+    return std::nullopt;  // no valid separator for the union: try other partners
+  }
+  std::vector<std::uint32_t> old_faces{face}, new_faces{merged};
+  old_faces.insert(old_faces.end(), partners.begin(), partners.end());
+  out.largest = out.sub.face_area(merged);
+  for (std::uint32_t f = before - static_cast<std::uint32_t>(partners.size()); f < before; ++f) {
+    out.largest = std::max(out.largest, out.sub.face_area(f));
+    new_faces.push_back(f);
+  }
+  out.added_length = inner_separator_length(out.sub, new_faces) - inner_separator_length(sub, old_faces);
+  return out;
+}
+
+} // namespace
+
+std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, const ResourceGuard& guard,
+                        const RebalanceOptions& options) {
+  const auto n = static_cast<std::uint32_t>(sub.faces.size());
+  if (n < 2) return 0;
+  std::vector<double> area(n);
+  double total = 0.0;
+  for (std::uint32_t f = 0; f < n; ++f) total += area[f] = sub.face_area(f);
+  const double bound = options.target * total / n;
+  const double max_added_length = options.max_added_separator * std::sqrt(total / n);
+  // A face that could not be improved is not tried again until its rings change.
+  std::vector<std::size_t> tried(n, 0);
+  std::uint32_t repairs = 0;
+  const std::uint32_t max_attempts = std::max<std::uint32_t>(32, n / 4);
+  for (std::uint32_t attempts = 0; attempts < max_attempts;) {
+    std::int64_t worst = -1;
+    for (std::uint32_t f = 0; f < n; ++f) {
+      if (tried[f] == ring_vertices(sub, f)) continue;
+      if (worst < 0 || area[f] > area[worst]) worst = f;
+    }
+    if (worst < 0 || area[worst] <= bound) break;
+    const auto face = static_cast<std::uint32_t>(worst);
+    const double improved = (1.0 - options.min_gain) * area[face];
+    const std::vector<std::uint32_t> around = neighbours_by_area(sub, face, area);
+    // Candidate unions: the face with one neighbour (the smallest first), then
+    // with two faces split in three (two of its neighbours, or a neighbour and
+    // the neighbour's smallest other neighbour): more room for the cuts where
+    // the pair alone has one acceptable separator (an island near it, a neck).
+    std::vector<std::vector<std::uint32_t>> unions;
+    const std::size_t near = std::min<std::size_t>(around.size(), options.partners);
+    for (std::size_t k = 0; k < near; ++k) {
+      if (0.5 * (area[face] + area[around[k]]) <= improved) unions.push_back({around[k]});
+    }
+    const auto add_triple = [&](std::uint32_t a, std::uint32_t b) {
+      if (a == b || b == face || (area[face] + area[a] + area[b]) / 3.0 > improved) return;
+      std::vector<std::uint32_t> t{std::min(a, b), std::max(a, b)};
+      if (std::find(unions.begin(), unions.end(), t) == unions.end()) unions.push_back(std::move(t));
+    };
+    for (std::size_t i = 0; i < near; ++i) {
+      for (std::size_t j = i + 1; j < near; ++j) add_triple(around[i], around[j]);
+    }
+    for (std::size_t k = 0; k < near; ++k) {
+      for (const std::uint32_t next : neighbours_by_area(sub, around[k], area)) {
+        if (next == face) continue;
+        add_triple(around[k], next);
+        break;
+      }
+    }
+    std::optional<Repair> best;
+    for (const auto& partners : unions) {
+      if (attempts == max_attempts) break;
+      ++attempts;
+      guard.check(n);
+      auto repair = try_repair(sub, face, partners, split_options, guard);
+      if (!repair || repair->largest > improved || repair->added_length > max_added_length) continue;
+      if (!best || repair->largest < best->largest) best = std::move(repair);
+      if (best->largest <= bound) break;
+    }
+    if (!best) {
+      tried[face] = ring_vertices(sub, face);
+      continue;
+    }
+    sub = std::move(best->sub);
+    for (std::uint32_t f = 0; f < n; ++f) area[f] = sub.face_area(f);
+    std::fill(tried.begin(), tried.end(), 0);  // face ids moved
+    ++repairs;
+  }
+  sub.compact();
+  return repairs;
+}
+
+} // namespace madd::detail
