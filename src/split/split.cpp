@@ -318,7 +318,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
                               uneven_fractions);
     if (c.quality > best.quality) best = std::move(c);
   }
-  for (std::size_t k = 0; best.quality < 0.0 && k < std::size(offset_spacings); ++k) {
+  for (std::size_t k = 0; best.quality < options.min_balance_quality && k < std::size(offset_spacings); ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(offset_spacings[k] * first_spacing, perimeter / point_cap);
     Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + uneven_rounds + static_cast<int>(k),
