@@ -51,6 +51,8 @@ constexpr const char* decompose_help =
     "                         neighbours (default 1.2; 0 = off; uniform runs only)\n"
     "  -a, --gradation A      grade by the boundary density weights (vertex attribute 1):\n"
     "                         a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
+    "      --adaptive-refine L  graded by boundary weights: heavier edges get up to L times\n"
+    "                         more refinement points (default 4; 1 = uniform; 1 <= L <= 64)\n"
     "  -p, --interpolation P  weight of new separator points = P x the interpolated weight\n"
     "                         of the separator's ends (default 0)\n"
     "      --weight-fn EXPR   grade by a density weight function f(x, y) (Sec. 5.2 case 3)\n"
@@ -253,7 +255,7 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
-                      opt_svg_mark, opt_report, opt_geo, opt_vtk, opt_geojson, opt_time_limit, opt_max_memory, opt_no_verify, opt_rebalance,
+                      opt_svg_mark, opt_report, opt_geo, opt_vtk, opt_geojson, opt_time_limit, opt_max_memory, opt_no_verify, opt_rebalance, opt_adaptive_refine,
                       opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound };
 
 std::string set_function(const char* text, std::function<double(double, double)>& out) {
@@ -292,6 +294,7 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
   case opt_seed: return count("seed", ~0ull, o.seed);
   case opt_smoothing: return count("smoothing_iterations", 0x7FFFFFFFull, o.smoothing_iterations);
   case opt_rebalance: return number("rebalance_above", o.rebalance_above);
+  case opt_adaptive_refine: return number("adaptive_refine", o.adaptive_refine);
   case 'a': return number("gradation", o.gradation);
   case 'p': return number("interpolation", o.interpolation);
   case opt_time_limit: return number("time_limit_seconds", o.time_limit_seconds);
@@ -384,6 +387,7 @@ int run_decompose(int argc, char** argv) {
       {"max-memory", required_argument, nullptr, opt_max_memory},
       {"no-verify", no_argument, nullptr, opt_no_verify},
       {"rebalance", required_argument, nullptr, opt_rebalance},
+      {"adaptive-refine", required_argument, nullptr, opt_adaptive_refine},
       {"weight-fn", required_argument, nullptr, opt_weight_fn},
       {"area-fn", required_argument, nullptr, opt_area_fn},
       {"weights", required_argument, nullptr, opt_weights},

@@ -14,7 +14,7 @@ constexpr CliName cli_names[] = {
     {"subdomains", "--subdomains"},          {"min_angle_deg", "--min-angle"},
     {"refine", "--refine"},                  {"min_balance_quality", "--imbalance"},
     {"threads", "--threads"},                {"seed", "--seed"},
-    {"smoothing_iterations", "--smoothing"}, {"rebalance_above", "--rebalance"}, {"gradation", "--gradation"},
+    {"smoothing_iterations", "--smoothing"}, {"rebalance_above", "--rebalance"}, {"adaptive_refine", "--adaptive-refine"}, {"gradation", "--gradation"},
     {"interpolation", "--interpolation"},    {"weight_function", "--weight-fn"},
     {"area_function", "--area-fn"},          {"background_weights", "--weights"},
     {"background_areas", "--areas"},         {"area_ratio_bound", "--area-bound"},

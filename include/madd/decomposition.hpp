@@ -20,7 +20,17 @@ struct DecomposeOptions {
   std::uint32_t subdomains = 2;     // N
   double min_angle_deg = 60.0;      // Phi0, criterion C1
   double refine = 3.0;              // r: uniform refinement factor of the boundary
-  double min_balance_quality = 0.75;  // i: accept a split when each side reaches this share of its target (0.6-0.9; docs/algorithm.md)
+  // The paper's adaptive refine level (Table I): with boundary weights
+  // (Sec. 5.2 case 1), a boundary edge heavier than the subdomain's mean is
+  // divided into up to this many times more pieces, in proportion to its
+  // weight ("segments that have greater weight will be refined more", Sec. 6).
+  // 1 refines every edge alike. In [1, 64].
+  double adaptive_refine = 4.0;
+  // i, the paper's acceptable imbalance of one split: a split whose balance
+  // quality (mean / largest final subdomain it implies) is below it is refined
+  // further and tried at other boundary samplings before it is taken, and
+  // smoothing never lowers a split below it (docs/algorithm.md, step 6).
+  double min_balance_quality = 0.75;
   unsigned threads = 0;             // 0 = hardware concurrency
   std::uint64_t seed = 1;
   int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split

@@ -27,6 +27,8 @@ void check_ranges(const DecomposeOptions& o) {
   if (o.threads > max_threads) refuse("threads", "must be at most " + std::to_string(max_threads) + " (0 = all cores)");
   if (o.max_refinement_rounds < 0 || o.max_refinement_rounds > 64)
     refuse("max_refinement_rounds", "must lie in [0, 64]");
+  if (!(o.adaptive_refine >= 1.0 && o.adaptive_refine <= 64.0))
+    refuse("adaptive_refine", "must lie in [1, 64] (1 = every edge refined alike)");
   if (!(o.rebalance_above == 0.0 || (o.rebalance_above >= 1.0 && o.rebalance_above <= 1e6)))
     refuse("rebalance_above", "must be 0 (off) or lie in [1, 1e6]");
   if (o.smoothing_iterations < 0 || o.smoothing_iterations > 1000)

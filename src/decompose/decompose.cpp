@@ -92,6 +92,7 @@ detail::SplitOptions split_options_of(const DecomposeOptions& options) {
   split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
   split_options.seed = options.seed;
   split_options.smoothing_iterations = std::max(0, options.smoothing_iterations);
+  split_options.adaptive_refine = options.adaptive_refine;
   return split_options;
 }
 

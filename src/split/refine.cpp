@@ -36,15 +36,15 @@ double mean_vertex_weight(const Face& f, const std::vector<double>* w) {
   return n == 0 ? 0.0 : total / static_cast<double>(n);
 }
 
-double weight_factor(const std::vector<double>* w, double mean, std::uint32_t a, std::uint32_t b) {
+double weight_factor(const std::vector<double>* w, double mean, std::uint32_t a, std::uint32_t b, double level) {
   if (w == nullptr || !(mean > 0.0)) return 1.0;
-  return std::clamp(0.5 * ((*w)[a] + (*w)[b]) / mean, 1.0, max_weight_refinement);
+  return std::clamp(0.5 * ((*w)[a] + (*w)[b]) / mean, 1.0, std::max(level, 1.0));
 }
 
 } // namespace
 
 FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
-                       const std::vector<double>* point_weights) {
+                       const std::vector<double>* point_weights, double adaptive_level) {
   FaceDomain out;
   out.pslg.first_index = 0;
   const Face& f = sub.faces[face];
@@ -77,7 +77,7 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
       cycle.push_back(it->second);
       const Point b = sub.points[ring[(k + 1) % ring.size()]];
       const std::uint32_t seg = f.ring_segments[r][k];
-      const double factor = weight_factor(point_weights, mean_weight, v, ring[(k + 1) % ring.size()]);
+      const double factor = weight_factor(point_weights, mean_weight, v, ring[(k + 1) % ring.size()], adaptive_level);
       const double pieces = std::max(1.0, std::ceil(distance(a, b) * factor / spacing));
       const auto m = static_cast<std::uint32_t>(std::min(pieces, 1e6));
       // Interpolate in the segment's stored direction, so that two faces

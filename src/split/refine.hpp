@@ -22,10 +22,11 @@ struct FaceDomain {
 // Sec. 5.1, midpoints of existing edges the type-2 bonus.
 // With boundary weights (Sec. 5.2 case 1, one per subdivision vertex), an edge
 // whose end weights exceed the face's mean vertex weight gets up to
-// max_weight_refinement times more pieces: heavier segments are refined more.
-constexpr double max_weight_refinement = 4.0;
+// `adaptive_level` times more pieces (in proportion to its weight over the
+// mean): heavier segments are refined more, the paper's adaptive refine level
+// (Table I, setAdaptiveRefineLevel; DecomposeOptions::adaptive_refine).
 FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
-                       const std::vector<double>* point_weights = nullptr);
+                       const std::vector<double>* point_weights = nullptr, double adaptive_level = 4.0);
 
 // Perimeter of a face: total length of its rings.
 double face_perimeter(const Subdivision& sub, std::uint32_t face);

@@ -239,7 +239,7 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
                       const SplitOptions& options, const FaceDensity& density, SplitTimes& times,
                       std::span<const double> fractions = {}) {
   Stopwatch clock;
-  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights);
+  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights, options.adaptive_refine);
   times.refine += clock.lap();
   const Triangulation tri = triangulate(fd.pslg);
   times.triangulate += clock.lap();

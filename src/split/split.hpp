@@ -23,6 +23,7 @@ struct SplitOptions {
   int max_refinement_rounds = 4;
   std::uint64_t seed = 1;
   int smoothing_iterations = 1;  // Sec. 5.1: 0 turns both smoothing steps off
+  double adaptive_refine = 4.0;  // graded runs: heavier edges get up to this many times more pieces (refine.hpp)
   double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below min_balance_quality)
 };
 
