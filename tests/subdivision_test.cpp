@@ -14,6 +14,10 @@
 #include "split/split.hpp"
 #include "subdivision/subdivision.hpp"
 
+namespace madd::detail {
+void check_new_angles(const Subdivision& sub, double min_angle_deg);  // subdivision/check.cpp
+}
+
 namespace {
 
 using madd::Point;
@@ -68,9 +72,106 @@ bool adjacent(const Subdivision& sub, std::uint32_t a, std::uint32_t b) {
   return false;
 }
 
+using madd::detail::EndRef;
+using madd::detail::SplitResult;
+
+EndRef on_segment(std::uint32_t segment, std::uint32_t local, Point p) {
+  return EndRef{EndRef::on_segment, segment, local, p};
+}
+
+// The segment of `sub` that contains p strictly inside (a piece of a straight segment).
+std::uint32_t segment_through(const Subdivision& sub, Point p) {
+  for (std::uint32_t s = 0; s < sub.segments.size(); ++s) {
+    const Point a = sub.points[sub.segments[s].a], b = sub.points[sub.segments[s].b];
+    if (std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) < 1e-12 &&
+        std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+        p.y <= std::max(a.y, b.y) && !(p == a) && !(p == b))
+      return s;
+  }
+  return madd::no_index;
+}
+
+// One separator along `path` inside face `face` (side 0 on its left): its
+// ends inside segments of `sub`, the points between them circumcentres.
+SplitResult separator(const Subdivision& sub, std::uint32_t face, const std::vector<Point>& path, Point left,
+                      Point right, double snap = 0.0) {
+  SplitResult r;
+  const auto ref = [&](std::size_t k) {
+    const auto local = static_cast<std::uint32_t>(k);
+    if (k == 0 || k + 1 == path.size()) return on_segment(segment_through(sub, path[k]), local, path[k]);
+    return EndRef{EndRef::centre, madd::no_index, local, path[k]};
+  };
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) r.edges.push_back({ref(k), ref(k + 1), 0});
+  r.ring_side.assign(sub.faces[face].rings.size(), 0);
+  r.interior[0] = left;
+  r.interior[1] = right;
+  r.snap = {snap, 60.0};
+  return r;
+}
+
+// The vertices of `sub` on the line x = 1.
+std::size_t vertices_on_x1(const Subdivision& sub) {
+  std::set<std::uint32_t> on;
+  for (const auto& s : sub.segments) {
+    for (const std::uint32_t v : {s.a, s.b}) {
+      if (sub.points[v].x == 1.0) on.insert(v);
+    }
+  }
+  return on.size();
+}
+
+// A 2 x 1 rectangle split by the vertical separator x = 1; then both halves
+// split "in the same round" (from one snapshot) by separators ending on it:
+// the left one at (1, 0.5), the right one along `right` (from a point just
+// above). Returns the subdivision.
+Subdivision two_ends_on_one_separator(const std::vector<Point>& right, double snap) {
+  Subdivision sub = Subdivision::from_domain(rectangle(2.0, 1.0));
+  sub.commit(0, separator(sub, 0, {{1, 0}, {1, 1}}, {0.5, 0.5}, {1.5, 0.5}));
+  REQUIRE(sub.faces.size() == 2);
+  const std::uint32_t left = sub.faces[0].interior.x < 1.0 ? 0u : 1u;
+  const Subdivision snapshot = sub;
+  // Left half: from its left side to (1, 0.5); side 0 (above) on the left going right.
+  sub.commit(left, separator(snapshot, left, {{0, 0.5}, {1, 0.5}}, {0.5, 0.75}, {0.5, 0.25}, snap));
+  // Right half, computed from the snapshot: from right[0] on x = 1 to the right side.
+  sub.commit(1 - left, separator(snapshot, 1 - left, right, {1.9, 0.9}, {1.9, 0.1}, snap));
+  return sub;
+}
+
 } // namespace
 
 TEST_SUITE("subdivision") {
+
+TEST_CASE("EndSnap: an end a hair from a neighbour's end on the same separator moves onto it") {
+  const std::vector<Point> horizontal{{1.0, 0.51}, {2.0, 0.51}};  // 90 degrees either way
+  const Subdivision without = two_ends_on_one_separator(horizontal, 0.0);
+  CHECK(vertices_on_x1(without) == 4);  // (1,0), (1,0.5), (1,0.51), (1,1): a 0.01 piece
+  const Subdivision with = two_ends_on_one_separator(horizontal, 0.05);
+  CHECK(vertices_on_x1(with) == 3);  // both separators end at (1, 0.5)
+  CHECK(total_area(with) == doctest::Approx(2.0).epsilon(1e-14));
+  check_ownership(with);
+  CHECK_NOTHROW(madd::detail::check_new_angles(with, 60.0));
+  // Farther than the snap distance: no move.
+  CHECK(vertices_on_x1(two_ends_on_one_separator({{1.0, 0.56}, {2.0, 0.56}}, 0.05)) == 4);
+}
+
+TEST_CASE("EndSnap: no move that would bring an angle at the separator below Phi0") {
+  // A bent separator: (1, 0.51) -> centre c -> (2, c.y). Its first piece
+  // leaves x = 1 at 60.3 degrees; from (1, 0.5) it would leave at 57.9
+  // degrees, while every other angle (at c, at the right side) would stay
+  // above 60: only the angle at the separator refuses the move.
+  const double a = 60.3 * M_PI / 180.0;
+  const Point q{1.0, 0.51}, c{q.x + 0.2 * std::sin(a), q.y + 0.2 * std::cos(a)};
+  const Subdivision sub = two_ends_on_one_separator({q, c, {2.0, c.y}}, 0.05);
+  CHECK(vertices_on_x1(sub) == 4);
+  CHECK_NOTHROW(madd::detail::check_new_angles(sub, 60.0));
+  // The same separator leaving at 64 degrees moves: from (1, 0.5) it leaves at
+  // 61.5 degrees, above Phi0.
+  const double b = 64.0 * M_PI / 180.0;
+  const Point d{q.x + 0.2 * std::sin(b), q.y + 0.2 * std::cos(b)};
+  const Subdivision moved = two_ends_on_one_separator({q, d, {2.0, d.y}}, 0.05);
+  CHECK(vertices_on_x1(moved) == 3);
+  CHECK_NOTHROW(madd::detail::check_new_angles(moved, 60.0));
+}
 
 TEST_CASE("merging the two sides of a split gives back the domain; compact drops the separator") {
   const Pslg domain = rectangle(3.0, 1.0);

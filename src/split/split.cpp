@@ -48,7 +48,12 @@ constexpr double offset_spacings[] = {2.0 / 3.0, 0.6, 3.0 / 7.0, 0.3};
 // which would leave the whole face as one subdomain.
 constexpr double uneven_fractions[] = {0.4, 1.0 / 3.0, 0.25, 0.2};
 constexpr int uneven_rounds = 3;
-constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
+constexpr double max_chord_points = 1500.0;
+// At commit, an end of this split may move to a vertex a neighbour's commit
+// put on the same straight segment within this fraction of the spacing
+// (EndSnap, subdivision/subdivision.hpp): a quarter of the distance between two working
+// points is far below what the split resolves, so the move costs nothing.
+constexpr double snap_fraction = 0.25;     // the chord search is quadratic in the boundary points
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
@@ -249,6 +254,7 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   times.graph += clock.lap();
   if (g.contracted.vertex_count() < 2) return Candidate{};
   Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g, fractions);
+  out.result.snap = {snap_fraction * spacing, options.min_angle_deg};
   times.bisect += clock.lap();
   return out;
 }
@@ -271,6 +277,7 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
   const FaceDomain fd = refine_face(sub, face, h);
   times.refine += clock.lap();
   auto chord = best_chord(fd, co);
+  if (chord) chord->result.snap = {snap_fraction * h, options.min_angle_deg};
   times.bisect += clock.lap();
   return chord;
 }

@@ -121,7 +121,7 @@ std::uint32_t Subdivision::split_segment(std::uint32_t piece, std::uint32_t w) {
   return w;
 }
 
-std::uint32_t Subdivision::resolve(const EndRef& end) {
+std::uint32_t Subdivision::resolve(const EndRef& end, const SnapEdge* snap) {
   if (end.kind == EndRef::vertex) return end.id;
   if (end.kind == EndRef::centre) {
     points.push_back(end.p);
@@ -137,6 +137,14 @@ std::uint32_t Subdivision::resolve(const EndRef& end) {
     const double t = dot(end.p - a, b - a) / dot(b - a, b - a);
     if (t >= 1.0) continue;
     if (t <= 0.0) return segments[q].a;
+    if (snap != nullptr) {
+      // The nearer end of the piece first (ties: a).
+      std::uint32_t near = segments[q].a, far = segments[q].b;
+      if (distance(end.p, points[far]) < distance(end.p, points[near])) std::swap(near, far);
+      for (const std::uint32_t v : {near, far}) {
+        if (may_snap(v, end, *snap)) return v;
+      }
+    }
     points.push_back(end.p);
     return split_segment(q, static_cast<std::uint32_t>(points.size() - 1));
   }
@@ -146,19 +154,42 @@ std::uint32_t Subdivision::resolve(const EndRef& end) {
 std::uint32_t Subdivision::add_separators(std::uint32_t face, const SplitResult& split) {
   const auto new_id = static_cast<std::uint32_t>(faces.size());
   // Ends shared by several separator edges of this split resolve once.
-  std::map<std::pair<int, std::uint32_t>, std::uint32_t> resolved;
-  auto vertex_of = [&](const EndRef& e) {
-    const std::pair<int, std::uint32_t> key{e.kind == EndRef::centre ? 1 : 0, e.local};
+  using Key = std::pair<int, std::uint32_t>;
+  const auto key_of = [](const EndRef& e) { return Key{e.kind == EndRef::centre ? 1 : 0, e.local}; };
+  // Per end: the edges of the split that meet there.
+  std::map<Key, std::vector<std::size_t>> edges_at;
+  for (std::size_t k = 0; k < split.edges.size(); ++k) {
+    edges_at[key_of(split.edges[k].a)].push_back(k);
+    edges_at[key_of(split.edges[k].b)].push_back(k);
+  }
+  std::map<Key, std::uint32_t> resolved;
+  auto vertex_of = [&](const EndRef& e, const EndRef& other) {
+    const Key key = key_of(e);
     auto it = resolved.find(key);
     if (it != resolved.end()) return it->second;
-    const std::uint32_t v = resolve(e);
+    std::uint32_t v = 0;
+    const bool far_ok = other.kind == EndRef::centre || edges_at[key_of(other)].size() == 1;
+    if (split.snap.distance > 0.0 && e.kind == EndRef::on_segment && edges_at[key].size() == 1 && far_ok) {
+      SnapEdge snap;
+      snap.split = &split;
+      snap.face = face;
+      snap.far = other;
+      for (const std::size_t k : edges_at[key_of(other)]) {
+        const SeparatorEdge& s = split.edges[k];
+        snap.far_ends.push_back(key_of(s.a) == key_of(other) ? s.b.p : s.a.p);
+      }
+      for (const auto& [k, w] : resolved) snap.taken.push_back(w);
+      v = resolve(e, &snap);
+    } else {
+      v = resolve(e);
+    }
     resolved.emplace(key, v);
     return v;
   };
   std::vector<Segment> seps;
   for (const SeparatorEdge& e : split.edges) {
-    const std::uint32_t a = vertex_of(e.a);
-    const std::uint32_t b = vertex_of(e.b);
+    const std::uint32_t a = vertex_of(e.a, e.b);
+    const std::uint32_t b = vertex_of(e.b, e.a);
     seps.push_back({a, b, 0});
   }
   const auto first = static_cast<std::uint32_t>(segments.size());

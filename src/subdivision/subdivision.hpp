@@ -42,12 +42,26 @@ struct SplitTimes {
   }
 };
 
+// Two neighbours split in the same round choose where their separators end
+// on the separator they share independently, so their ends can land a hair
+// apart and leave a piece of it far shorter than anything else around, which
+// the mesh that follows must resolve (docs/algorithm.md, "Short pieces"). At
+// commit, an end inside a segment that only one separator edge reaches moves
+// to a vertex an earlier commit put on that straight segment when it is
+// closer than `distance` and every angle at both ends of the edge stays
+// >= min_angle_deg (Phi0), with nothing in the triangle the edge sweeps.
+struct EndSnap {
+  double distance = 0.0;  // 0: ends never move
+  double min_angle_deg = 90.0;
+};
+
 // The outcome of splitting one face (Algorithm 3 as geometry).
 struct SplitResult {
   std::vector<SeparatorEdge> edges;
   std::vector<std::uint8_t> ring_side;  // per ring of the face: the side its inner neighbourhood joins
   double weight[2] = {0.0, 0.0};
   Point interior[2];                    // a point strictly inside each side
+  EndSnap snap;                         // how ends may move at commit (not part of the choice)
   SplitTimes times;                     // how long computing it took (not part of the geometry)
 };
 
@@ -120,7 +134,20 @@ public:
   void compact();
 
 private:
-  std::uint32_t resolve(const EndRef& end);
+  // The separator edge from `far` to an end inside a segment, for EndSnap.
+  struct SnapEdge {
+    const SplitResult* split = nullptr;
+    std::uint32_t face = 0;
+    EndRef far;                        // the edge's other end, as the split saw it
+    std::vector<Point> far_ends;       // far is a centre: the other ends of all its edges (this one's included)
+    std::vector<std::uint32_t> taken;  // vertices other ends of the split resolved to
+  };
+  std::uint32_t resolve(const EndRef& end, const SnapEdge* snap = nullptr);
+  // Subdivision vertex `v` (on the straight chain of the end's segment) may
+  // take the end of `edge` (snap.cpp).
+  bool may_snap(std::uint32_t v, const EndRef& end, const SnapEdge& edge) const;
+  // Every angle at the far end of `edge` stays >= phi when its near end moves to `to`.
+  bool far_angles_hold(const SnapEdge& edge, Point from, Point to, double phi) const;
   std::uint32_t add_separators(std::uint32_t face, const SplitResult& split);  // returns the first new segment
   Face assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const;
   std::uint32_t split_segment(std::uint32_t piece, std::uint32_t vertex);
