@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "kernel/angles.hpp"
 #include "madd/decomposition.hpp"
 
 namespace madd::detail {
@@ -13,13 +14,9 @@ namespace madd::detail {
 // Interior angle in degrees, in [0, 360), at `at` of a ring walked with the
 // interior on its left (outer rings CCW, hole rings CW): the counter-clockwise
 // turn from the outgoing edge to the reversed incoming edge.
-inline double interior_angle_deg(Point prev, Point at, Point next) {
-  const Point out = next - at;
-  const Point back = prev - at;
-  double a = std::atan2(cross(out, back), dot(out, back));
-  if (a < 0.0) a += 2.0 * std::numbers::pi;
-  return degrees(a);
-}
+// Whether it passes 180 is decided exactly (ccw_angle_deg), so a corner of
+// almost 0 degrees is never taken for one of almost 360.
+inline double interior_angle_deg(Point prev, Point at, Point next) { return ccw_angle_deg(at, next, prev); }
 
 // Calls f(subdomain, ring, k, angle_deg) for every corner k of every ring
 // where the incoming or the outgoing segment is a separator (a "new angle").

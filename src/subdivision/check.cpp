@@ -11,7 +11,7 @@
 namespace madd::detail {
 
 void check_new_angles(const Subdivision& sub, double min_angle_deg) {
-  constexpr double tolerance_deg = 1e-7;
+  constexpr double tolerance_deg = angle_rounding_bound_deg;  // the splits keep a margin far above it
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
     const Face& face = sub.faces[f];
     for (std::size_t r = 0; r < face.rings.size(); ++r) {
