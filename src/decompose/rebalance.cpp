@@ -15,12 +15,6 @@ namespace madd::detail {
 
 namespace {
 
-std::size_t ring_vertices(const Subdivision& sub, std::uint32_t face) {
-  std::size_t n = 0;
-  for (const auto& ring : sub.faces[face].rings) n += ring.size();
-  return n;
-}
-
 // The faces across the separators of `face`, the smallest first (ties: lower id).
 std::vector<std::uint32_t> neighbours_by_area(const Subdivision& sub, std::uint32_t face,
                                               const std::vector<double>& area) {
@@ -130,7 +124,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, con
   for (std::uint32_t attempts = 0; attempts < max_attempts;) {
     std::int64_t worst = -1;
     for (std::uint32_t f = 0; f < n; ++f) {
-      if (tried[f] == ring_vertices(sub, f)) continue;
+      if (tried[f] == sub.ring_vertex_count(f)) continue;
       if (worst < 0 || area[f] > area[worst]) worst = f;
     }
     if (worst < 0 || area[worst] <= bound) break;
@@ -172,7 +166,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, con
       if (best->largest <= bound) break;
     }
     if (!best) {
-      tried[face] = ring_vertices(sub, face);
+      tried[face] = sub.ring_vertex_count(face);
       continue;
     }
     sub = std::move(best->sub);

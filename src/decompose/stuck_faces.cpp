@@ -6,19 +6,9 @@
 
 namespace madd::detail {
 
-namespace {
-
-std::size_t ring_vertices(const Subdivision& sub, std::uint32_t face) {
-  std::size_t n = 0;
-  for (const auto& ring : sub.faces[face].rings) n += ring.size();
-  return n;
-}
-
-} // namespace
-
 void StuckFaces::mark(Subdivision& sub, std::uint32_t face, const DecompositionError& error) {
   if (vertices_.size() < sub.faces.size()) vertices_.resize(sub.faces.size(), 0);
-  vertices_[face] = ring_vertices(sub, face);
+  vertices_[face] = sub.ring_vertex_count(face);
   sub.faces[face].plan = 1;
   changed_ = true;
   last_error_ = error.what();
@@ -29,7 +19,7 @@ void StuckFaces::mark(Subdivision& sub, std::uint32_t face, const DecompositionE
 
 void StuckFaces::release_changed(const Subdivision& sub) {
   for (std::uint32_t f = 0; f < vertices_.size() && f < sub.faces.size(); ++f) {
-    if (vertices_[f] != 0 && vertices_[f] != ring_vertices(sub, f)) {
+    if (vertices_[f] != 0 && vertices_[f] != sub.ring_vertex_count(f)) {
       vertices_[f] = 0;
       changed_ = true;
     }

@@ -93,6 +93,12 @@ double Subdivision::face_area(std::uint32_t face) const {
   return rings_area(points, faces[face].rings);
 }
 
+std::size_t Subdivision::ring_vertex_count(std::uint32_t face) const {
+  std::size_t n = 0;
+  for (const auto& ring : faces[face].rings) n += ring.size();
+  return n;
+}
+
 std::uint32_t Subdivision::split_segment(std::uint32_t piece, std::uint32_t w) {
   const Segment old = segments[piece];
   const auto s2 = static_cast<std::uint32_t>(segments.size());

@@ -120,6 +120,8 @@ public:
   std::uint32_t commit(std::uint32_t face, const SplitResult& split);
 
   double face_area(std::uint32_t face) const;
+  // The vertices on all rings of a face: a face whose boundary changed has more.
+  std::size_t ring_vertex_count(std::uint32_t face) const;
 
   // Removes every separator between the adjacent faces `a` and `b` and makes
   // their union one face, with the id min(a, b) and a's interior point; the
