@@ -224,8 +224,16 @@ TEST_CASE("merge keeps the lower id, moves the last face into the other one and 
   const double union_area = sub.face_area(a) + sub.face_area(b);
   const double last_area = sub.face_area(3);
   const Point last_interior = sub.faces[3].interior;
+  // Siblings: the two sides of the latest split of a face know each other.
+  CHECK(sub.faces[1].sibling == 3);
+  CHECK(sub.faces[3].sibling == 1);
+  CHECK(sub.faces[0].sibling == 2);  // its first sibling (1) was split again
+  CHECK(sub.faces[2].sibling == 0);
+  const std::uint32_t last_sibling = sub.faces[3].sibling;
   REQUIRE(sub.merge(b, a));
   REQUIRE(sub.faces.size() == 3);
+  if (last_sibling != a && last_sibling != b) CHECK(sub.faces[last_sibling].sibling == b);  // follows the move
+  CHECK(sub.faces[a].sibling == madd::no_index);
   CHECK(sub.face_area(a) == doctest::Approx(union_area).epsilon(1e-13));
   CHECK(sub.face_area(b) == doctest::Approx(last_area).epsilon(1e-13));
   CHECK(sub.faces[b].interior == last_interior);

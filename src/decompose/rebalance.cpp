@@ -108,8 +108,10 @@ std::optional<Repair> try_repair(const Subdivision& sub, std::uint32_t face, std
 
 } // namespace
 
-std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, const ResourceGuard& guard,
+std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, const ResourceGuard& guard,
                         const RebalanceOptions& options) {
+  SplitOptions split_options = split_options_in;
+  split_options.max_refinement_rounds = std::min(split_options.max_refinement_rounds, 1);
   const auto n = static_cast<std::uint32_t>(sub.faces.size());
   if (n < 2) return 0;
   std::vector<double> area(n);
@@ -137,8 +139,11 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, con
     // the pair alone has one acceptable separator (an island near it, a neck).
     std::vector<std::vector<std::uint32_t>> unions;
     const std::size_t near = std::min<std::size_t>(around.size(), options.partners);
+    // The face with its sibling is the face their split came from, which
+    // would most likely split the same way again: that pair is tried last.
     for (std::size_t k = 0; k < near; ++k) {
-      if (0.5 * (area[face] + area[around[k]]) <= improved) unions.push_back({around[k]});
+      if (0.5 * (area[face] + area[around[k]]) <= improved && around[k] != sub.faces[face].sibling)
+        unions.push_back({around[k]});
     }
     const auto add_triple = [&](std::uint32_t a, std::uint32_t b) {
       if (a == b || b == face || (area[face] + area[a] + area[b]) / 3.0 > improved) return;
@@ -155,6 +160,11 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, con
         break;
       }
     }
+    const std::uint32_t sibling = sub.faces[face].sibling;
+    if (std::find(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(near), sibling) !=
+            around.begin() + static_cast<std::ptrdiff_t>(near) &&
+        0.5 * (area[face] + area[sibling]) <= improved)
+      unions.push_back({sibling});
     std::optional<Repair> best;
     for (const auto& partners : unions) {
       if (attempts == max_attempts) break;

@@ -65,6 +65,9 @@ bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
       }
     }
   }
+  for (const std::uint32_t f : {a, b}) {  // siblings are mutual: only theirs can name a or b
+    if (faces[f].sibling != no_index) faces[faces[f].sibling].sibling = no_index;
+  }
   faces[keep] = std::move(merged);
   const auto last = static_cast<std::uint32_t>(faces.size() - 1);
   if (gone != last) {
@@ -75,6 +78,7 @@ bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
         }
       }
     }
+    if (faces[last].sibling != no_index) faces[faces[last].sibling].sibling = gone;
     faces[gone] = std::move(faces[last]);
   }
   faces.pop_back();

@@ -252,6 +252,10 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
       else if (sf[1] == face) sf[1] = new_id;
     }
   }
+  // The other side of the split that made `face` loses its sibling (siblings are mutual).
+  if (faces[face].sibling != no_index) faces[faces[face].sibling].sibling = no_index;
+  sides[0].sibling = new_id;
+  sides[1].sibling = face;
   faces[face] = std::move(sides[0]);
   faces.push_back(std::move(sides[1]));
   return new_id;

@@ -70,6 +70,7 @@ struct Face {
   std::vector<std::vector<std::uint32_t>> ring_segments;  // ring_segments[r][k]: rings[r][k] -> rings[r][k+1]
   Point interior;                                         // strictly inside
   std::uint32_t plan = 1;                                 // final subdomains this face will become
+  std::uint32_t sibling = no_index;                       // the other side of the split that made it, if still whole
 };
 
 // A closed boundary cycle found by the face walk.
