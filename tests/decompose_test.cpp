@@ -233,6 +233,27 @@ TEST_CASE("a face with no even split at Phi0 is split unevenly rather than given
   CHECK(m.min_area_over_mean < 0.9);  // uneven: about 1/3 and 2/3
 }
 
+TEST_CASE("-i is live: where splits are hard (Phi0 = 80), a split below it is tried at other samplings") {
+  // docs/algorithm.md, step 6: below the acceptable imbalance the boundary is
+  // sampled again at four other spacings before the split is taken, so i
+  // changes which separators are found; both results stay valid.
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
+  madd::DecomposeOptions o;
+  o.subdomains = 64;
+  o.min_angle_deg = 80.0;
+  o.threads = 1;
+  o.rebalance_above = 0.0;  // the split alone
+  o.min_balance_quality = 0.5;
+  const Decomposition loose = madd::decompose(domain, o);
+  o.min_balance_quality = 0.95;
+  const Decomposition strict = madd::decompose(domain, o);
+  CHECK_FALSE(loose == strict);
+  for (const Decomposition* d : {&loose, &strict}) {
+    CHECK(madd::verify_decomposition(*d, domain, 64).ok());
+    CHECK(madd::metrics(*d).angle_min >= 80.0);
+  }
+}
+
 TEST_CASE("phase times: every split phase and the commits are timed, and timing changes nothing") {
   const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
   madd::DecomposeOptions o;
