@@ -22,13 +22,15 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  // The last byte chooses N in 2..8 and Phi0 in {60, 45, 30}; it stays part of
-  // the text (usually a newline or a digit), so plain .poly seeds work unchanged.
+  // The last byte chooses N in 2..8 and Phi0 in {60, 45, 30, 70} (all 28
+  // pairs occur among the bytes 0..27); it stays part of the text (usually a
+  // newline or a digit), so plain .poly seeds work unchanged. A newline picks
+  // N = 5 and Phi0 = 45, as it did when Phi0 was chosen from the first three.
   const std::uint8_t knob = data[size - 1];
   madd::DecomposeOptions options;
   options.subdomains = 2u + knob % 7u;
-  constexpr double angles[] = {60.0, 45.0, 30.0};
-  options.min_angle_deg = angles[(knob / 7u) % 3u];
+  constexpr double angles[] = {60.0, 45.0, 30.0, 70.0};
+  options.min_angle_deg = angles[(knob / 7u) % 4u];
   options.threads = 1;
   options.time_limit_seconds = 2.0;
   try {
