@@ -106,10 +106,51 @@ std::optional<Repair> try_repair(const Subdivision& sub, std::uint32_t face, std
   return out;
 }
 
+// The partners to merge `face` with, in the order they are tried: one
+// neighbour (the smallest first), then two faces to split in three (two of
+// its neighbours, or a neighbour and that neighbour's smallest other
+// neighbour), which leaves more room for the cuts where the pair alone has
+// one acceptable separator (an island near it, a neck); last the face's
+// sibling, since their union is the face whose split made it and would most
+// likely split the same way again. Only unions whose even shares would be
+// at most `improved` are listed.
+std::vector<std::vector<std::uint32_t>> candidate_unions(const Subdivision& sub, std::uint32_t face,
+                                                         const std::vector<double>& area, double improved,
+                                                         const RebalanceOptions& options) {
+  const std::vector<std::uint32_t> around = neighbours_by_area(sub, face, area);
+  const std::size_t near = std::min<std::size_t>(around.size(), options.partners);
+  const std::uint32_t sibling = sub.faces[face].sibling;
+  std::vector<std::vector<std::uint32_t>> unions;
+  for (std::size_t k = 0; k < near; ++k) {
+    if (around[k] != sibling && 0.5 * (area[face] + area[around[k]]) <= improved) unions.push_back({around[k]});
+  }
+  const auto add_triple = [&](std::uint32_t a, std::uint32_t b) {
+    if (a == b || b == face || (area[face] + area[a] + area[b]) / 3.0 > improved) return;
+    std::vector<std::uint32_t> t{std::min(a, b), std::max(a, b)};
+    if (std::find(unions.begin(), unions.end(), t) == unions.end()) unions.push_back(std::move(t));
+  };
+  for (std::size_t i = 0; i < near; ++i) {
+    for (std::size_t j = i + 1; j < near; ++j) add_triple(around[i], around[j]);
+  }
+  for (std::size_t k = 0; k < near; ++k) {
+    for (const std::uint32_t next : neighbours_by_area(sub, around[k], area)) {
+      if (next == face) continue;
+      add_triple(around[k], next);
+      break;
+    }
+  }
+  const auto near_end = around.begin() + static_cast<std::ptrdiff_t>(near);
+  if (std::find(around.begin(), near_end, sibling) != near_end && 0.5 * (area[face] + area[sibling]) <= improved)
+    unions.push_back({sibling});
+  return unions;
+}
+
 } // namespace
 
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, const ResourceGuard& guard,
                         const RebalanceOptions& options) {
+  // One refinement round for the repair splits: on every run of the sweeps
+  // (docs/performance.md) the result is the same as with four, in less time.
   SplitOptions split_options = split_options_in;
   split_options.max_refinement_rounds = std::min(split_options.max_refinement_rounds, 1);
   const auto n = static_cast<std::uint32_t>(sub.faces.size());
@@ -132,39 +173,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
     if (worst < 0 || area[worst] <= bound) break;
     const auto face = static_cast<std::uint32_t>(worst);
     const double improved = (1.0 - options.min_gain) * area[face];
-    const std::vector<std::uint32_t> around = neighbours_by_area(sub, face, area);
-    // Candidate unions: the face with one neighbour (the smallest first), then
-    // with two faces split in three (two of its neighbours, or a neighbour and
-    // the neighbour's smallest other neighbour): more room for the cuts where
-    // the pair alone has one acceptable separator (an island near it, a neck).
-    std::vector<std::vector<std::uint32_t>> unions;
-    const std::size_t near = std::min<std::size_t>(around.size(), options.partners);
-    // The face with its sibling is the face their split came from, which
-    // would most likely split the same way again: that pair is tried last.
-    for (std::size_t k = 0; k < near; ++k) {
-      if (0.5 * (area[face] + area[around[k]]) <= improved && around[k] != sub.faces[face].sibling)
-        unions.push_back({around[k]});
-    }
-    const auto add_triple = [&](std::uint32_t a, std::uint32_t b) {
-      if (a == b || b == face || (area[face] + area[a] + area[b]) / 3.0 > improved) return;
-      std::vector<std::uint32_t> t{std::min(a, b), std::max(a, b)};
-      if (std::find(unions.begin(), unions.end(), t) == unions.end()) unions.push_back(std::move(t));
-    };
-    for (std::size_t i = 0; i < near; ++i) {
-      for (std::size_t j = i + 1; j < near; ++j) add_triple(around[i], around[j]);
-    }
-    for (std::size_t k = 0; k < near; ++k) {
-      for (const std::uint32_t next : neighbours_by_area(sub, around[k], area)) {
-        if (next == face) continue;
-        add_triple(around[k], next);
-        break;
-      }
-    }
-    const std::uint32_t sibling = sub.faces[face].sibling;
-    if (std::find(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(near), sibling) !=
-            around.begin() + static_cast<std::ptrdiff_t>(near) &&
-        0.5 * (area[face] + area[sibling]) <= improved)
-      unions.push_back({sibling});
+    const std::vector<std::vector<std::uint32_t>> unions = candidate_unions(sub, face, area, improved, options);
     std::optional<Repair> best;
     for (const auto& partners : unions) {
       if (attempts == max_attempts) break;
