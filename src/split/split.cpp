@@ -48,12 +48,12 @@ constexpr double offset_spacings[] = {2.0 / 3.0, 0.6, 3.0 / 7.0, 0.3};
 // which would leave the whole face as one subdomain.
 constexpr double uneven_fractions[] = {0.4, 1.0 / 3.0, 0.25, 0.2};
 constexpr int uneven_rounds = 3;
-constexpr double max_chord_points = 1500.0;
+constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
 // At commit, an end of this split may move to a vertex a neighbour's commit
 // put on the same straight segment within this fraction of the spacing
 // (EndSnap, subdivision/subdivision.hpp): a quarter of the distance between two working
 // points is far below what the split resolves, so the move costs nothing.
-constexpr double snap_fraction = 0.25;     // the chord search is quadratic in the boundary points
+constexpr double snap_fraction = 0.25;
 
 bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const MedialEdge& e) {
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
