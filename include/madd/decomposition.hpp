@@ -161,7 +161,8 @@ struct PhaseTime {
 // decompose(), also appending the time of its phases to `phases` (docs/quality.md):
 // "refine", "triangulate", "graph" and "bisect" summed over every split (on
 // all threads, so with several threads they add up to more than the wall
-// time), then "insert", committing the splits to the subdivision (one thread).
+// time), then "insert", committing the splits to the subdivision (one thread),
+// and "rebalance", the balance repair once N is reached (one thread; 0 when off).
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases);
 
 // Recomputes every invariant of a decomposition of `domain` into
