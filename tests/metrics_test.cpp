@@ -8,6 +8,8 @@
 
 #include "kernel/rings.hpp"
 #include "madd/metrics.hpp"
+#include "madd/predicates.hpp"
+#include "quality/metrics_detail.hpp"
 #include "metrics_fixtures.hpp"
 
 namespace {
@@ -293,6 +295,33 @@ TEST_CASE("verify_decomposition: wrong marker and malformed indices do not crash
   f = test::square_halves();
   f.decomposition.subdomains[0].rings[0][1] = 999;
   CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "malformed"));
+}
+
+} // TEST_SUITE
+
+// The new-angle measure decides the side of 180 degrees exactly: near a
+// straight corner the rounded cross product can have the wrong sign, which
+// would read a corner of almost 0 degrees as one of almost 360 (and the
+// reverse). On Shewchuk's ulp grid around (0.5, 0.5) with (12, 12) and (24, 24)
+// such points exist; for each, the angle must agree with orient2d.
+TEST_SUITE("metrics") {
+
+TEST_CASE("new angles: the side of 180 degrees follows orient2d where the rounded cross product errs") {
+  const madd::Point next{12.0, 12.0}, prev{24.0, 24.0};
+  int wrong_sign = 0;
+  for (int i = 0; i < 64; ++i) {
+    for (int j = 0; j < 64; ++j) {
+      const madd::Point at{std::nextafter(0.5, 1.0) + i * 0x1p-53, 0.5 + j * 0x1p-53};
+      const madd::Point u{next.x - at.x, next.y - at.y}, v{prev.x - at.x, prev.y - at.y};
+      const double naive = u.x * v.y - u.y * v.x;
+      const double exact = madd::orient2d(at, next, prev);
+      if (exact == 0.0) continue;
+      if ((naive > 0.0) != (exact > 0.0)) ++wrong_sign;
+      const double angle = madd::detail::interior_angle_deg(prev, at, next);
+      CHECK((exact > 0.0) == (angle < 180.0));
+    }
+  }
+  REQUIRE(wrong_sign > 0);  // the grid does hold such points, so the test is not vacuous
 }
 
 } // TEST_SUITE
