@@ -8,6 +8,7 @@
 #include "madd/geometry.hpp"
 #include "madd/graph.hpp"
 #include "madd/medial.hpp"
+#include "madd/mesh.hpp"
 #include "madd/metis_io.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"

@@ -1,0 +1,153 @@
+#pragma once
+// Meshing the subdomains (docs/mesh.md): the Delaunay decoupling of
+// Linardakis and Chrisochoides (SIAM J. Sci. Comput. 27(4), 2006), which the
+// MADD decomposition exists for. Every separator and boundary piece is split
+// once, globally, to the local target size (discretise), then each subdomain
+// is refined on its own, with no communication, by Ruppert/Chew Delaunay
+// refinement with Ungor's off-centres, never splitting a separator; the
+// subdomain meshes share their separator vertices by construction, so their
+// union conforms.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/error.hpp"
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd {
+
+// The size bounds and the angle bound of a mesh. A triangle is too large
+// when its area exceeds the smallest of max_area, area_function at its
+// centroid and the background area there (each when set).
+struct MeshSizeOptions {
+  double min_angle_deg = 30.0;  // -q: every triangle's smallest angle at least this, away from small input angles
+  double max_area = 0.0;        // -a: 0 = no bound
+  // --size-fn: the largest allowed triangle area at (x, y); values <= 0 or
+  // NaN are ignored there (no bound).
+  std::function<double(double x, double y)> area_function;
+  // A background size file: samples of the largest allowed area; the bound at
+  // a point is the value of the nearest sample (ties: the lowest index).
+  std::vector<ValuedPoint> background_areas;
+
+  bool has_size_bound() const noexcept { return max_area > 0.0 || area_function || !background_areas.empty(); }
+};
+
+struct MeshOptions {
+  // How the domain is decomposed first (N, Phi0, threads, limits...).
+  // decomposition.threads is also the number of meshing threads (-j).
+  DecomposeOptions decomposition;
+  MeshSizeOptions size;
+  // Balance by work (docs/mesh.md, "Balance"): decompose by the expected
+  // triangle count of each subdomain rather than its area. Only when the
+  // decomposition options give no weights of their own.
+  bool balance_by_work = true;
+  // Insert Ungor's off-centre instead of a far circumcentre (fewer triangles,
+  // the same guarantee).
+  bool off_centres = true;
+  // Progress: called on the calling thread with the number of subdomains
+  // meshed so far and N. Like DecomposeOptions::progress it cannot change
+  // the result; if it throws, mesh() stops and rethrows.
+  std::function<void(std::uint32_t done, std::uint32_t total)> progress;
+};
+
+// One mesh edge on a segment of the discretised decomposition: a boundary
+// edge (in one triangle; marker from the input, >= 1) or a separator edge
+// (in one triangle of each of its two subdomains; marker 0).
+struct MeshSegment {
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+  int marker = 0;
+  std::uint32_t piece = 0;  // the segment of Mesh::decomposition it lies on
+  friend bool operator==(const MeshSegment&, const MeshSegment&) = default;
+};
+
+// Why triangles stayed below the angle bound (docs/mesh.md, "Guarantee").
+struct MeshShortfall {
+  std::size_t input_angle = 0;  // the small angle is an input angle (two segments meeting below the bound), or
+                                // its short edge joins two segments at one apex (concentric shells)
+  std::size_t separator = 0;    // fixing it would split a separator (the decoupling was not enough there)
+  std::size_t precision = 0;    // the new point would be closer to a vertex than coordinates resolve
+  std::size_t limit = 0;        // the Steiner point budget of the subdomain was spent
+  std::size_t total() const noexcept { return input_angle + separator + precision + limit; }
+  friend bool operator==(const MeshShortfall&, const MeshShortfall&) = default;
+};
+
+// The merged mesh: one conforming triangulation of the domain.
+struct Mesh {
+  // The discretised decomposition the mesh was made on (its points are the
+  // mesh's first points, same indices).
+  Decomposition decomposition;
+  std::vector<Point> points;
+  // Triangle's rule: the marker of the boundary segment a point lies on
+  // (the larger at a corner of two), 0 for points inside the domain or only
+  // on separators.
+  std::vector<int> point_markers;
+  // Counter-clockwise, grouped by subdomain: the triangles of subdomain k are
+  // [subdomain_first_triangle[k], subdomain_first_triangle[k + 1]).
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  // neighbours[t][i]: the triangle across edge i (opposite vertex i), across
+  // separators too; no_index on the domain boundary.
+  std::vector<std::array<std::uint32_t, 3>> neighbours;
+  std::vector<std::uint32_t> triangle_subdomain;
+  std::vector<std::uint32_t> subdomain_first_triangle;  // N + 1 offsets
+  // Every mesh edge on a boundary piece or separator, by piece, then along it.
+  std::vector<MeshSegment> segments;
+  MeshShortfall shortfall;
+  double min_angle_deg = 30.0;  // the bound it was refined to
+
+  std::size_t triangle_count() const noexcept { return triangles.size(); }
+  std::uint32_t subdomain_count() const noexcept {
+    return subdomain_first_triangle.empty() ? 0 : static_cast<std::uint32_t>(subdomain_first_triangle.size() - 1);
+  }
+  friend bool operator==(const Mesh&, const Mesh&) = default;
+};
+
+// Timings and work figures of one run (not part of the result: they vary
+// from run to run).
+struct MeshReport {
+  std::vector<PhaseTime> phases;          // "decompose", "discretise", "refine", "merge", "verify"
+  std::vector<double> thread_seconds;     // busy time of each meshing thread
+  std::vector<double> subdomain_seconds;  // time to mesh each subdomain
+  std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance")
+};
+
+// The largest allowed area at p under `size` (+infinity when unbounded).
+double area_bound_at(const MeshSizeOptions& size, Point p);
+
+// Decomposes the domain, discretises it and meshes every subdomain on
+// options.decomposition.threads threads. Deterministic: byte-identical for
+// any thread count. Throws OptionError on bad options, what decompose()
+// throws, LimitError on a resource limit, and InternalError when the self-check
+// (verify_mesh) fails; never returns a partial mesh.
+Mesh mesh(const Pslg& domain, const MeshOptions& options = {});
+Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report);
+
+// Meshes an existing decomposition of `domain` (decompose() output).
+Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                        MeshReport& report);
+
+// The decoupling step alone: every segment of the decomposition split into
+// pieces short enough for the size bound and the local feature size, the
+// split points computed once from each segment's endpoints in index order,
+// so both subdomains of a separator get the same points. Each subdomain of
+// the result, meshed by any mesher that keeps its boundary segments
+// (`triangle -pq30Y`), joins its neighbours conformingly.
+Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size);
+
+// Checks, independently of how the mesh was made: every triangle CCW and
+// non-degenerate, adjacency symmetric and matching shared edges; the
+// triangles cover the domain exactly (areas summed exactly); conforming (every
+// interior edge in two triangles, no vertex inside another triangle's edge, each
+// separator matched edge for edge by its two subdomains, each boundary piece
+// covered by boundary edges); each subdomain's triangulation constrained
+// Delaunay (exact incircle across every unconstrained edge); every triangle
+// within the size bound; and every triangle's smallest angle at least the
+// bound minus 1e-9 degrees, except those counted in mesh.shortfall (their
+// number must match). Never throws on a malformed mesh: it reports problems.
+Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size);
+
+} // namespace madd
