@@ -1,0 +1,134 @@
+// The decoupling step (docs/mesh.md, "Decoupling"): every segment of the
+// decomposition, separator or boundary piece, is split once into pieces no
+// longer than the local target length
+//
+//   h(p) = min(size_factor * sqrt(A(p)), feature_factor * lfs(p)),
+//
+// A the area bound and lfs the distance to the nearest non-incident feature,
+// with the pieces spread so that each holds the same share of the integral of
+// 1/h along the segment. The split points are computed once per segment, from
+// its two end points in index order, and both subdomains of a separator
+// refer to the same points: the meshes of the two sides meet at identical
+// vertices by construction.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "madd/mesh.hpp"
+#include "mesh/discretise_rules.hpp"
+#include "mesh/feature_distance.hpp"
+#include "mesh/size_field.hpp"
+
+namespace madd {
+
+namespace detail {
+namespace {
+
+// Parameters in (0, 1) of the split points of segment j, from its lower-index
+// end: the integral of 1/h, sampled and summed by the trapezoid rule, split
+// into equal shares.
+std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const SizeField& size,
+                                     const FeatureDistance& features) {
+  const Segment& s = d.segments[j];
+  const Point a = d.points[std::min(s.a, s.b)], b = d.points[std::max(s.a, s.b)];
+  const double length = distance(a, b);
+  const auto target = [&](double t) {
+    const Point p = lerp(a, b, t);
+    double h = feature_factor * features.to_nonincident(p, j);
+    if (size.bounded()) {
+      const double area = size.area_at(p);
+      if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
+    }
+    return h;
+  };
+  std::vector<double> density;  // 1/h at the samples, in units of pieces per segment length
+  std::size_t samples = 16;
+  double pieces = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    density.assign(samples + 1, 0.0);
+    for (std::size_t i = 0; i <= samples; ++i) {
+      const double h = target(static_cast<double>(i) / static_cast<double>(samples));
+      density[i] = h > 0 && std::isfinite(h) ? length / h : 0.0;
+    }
+    pieces = 0;
+    for (std::size_t i = 0; i < samples; ++i) pieces += 0.5 * (density[i] + density[i + 1]) / static_cast<double>(samples);
+    // Resample where the pieces come out finer than the samples.
+    const double wanted = std::min(4.0 * pieces, static_cast<double>(max_pieces_per_segment));
+    if (wanted <= static_cast<double>(samples)) break;
+    samples = static_cast<std::size_t>(wanted);
+  }
+  const auto n = static_cast<std::size_t>(std::clamp(std::ceil(pieces - 1e-9), 1.0, static_cast<double>(max_pieces_per_segment)));
+  std::vector<double> out;
+  if (n == 1) return out;
+  // Invert the cumulative integral piecewise linearly.
+  double cumulative = 0;
+  std::size_t i = 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double goal = pieces * static_cast<double>(k) / static_cast<double>(n);
+    for (;;) {
+      const double step = 0.5 * (density[i] + density[i + 1]) / static_cast<double>(samples);
+      if (cumulative + step >= goal || i + 1 == samples) {
+        const double f = step > 0 ? std::clamp((goal - cumulative) / step, 0.0, 1.0) : 0.5;
+        out.push_back((static_cast<double>(i) + f) / static_cast<double>(samples));
+        break;
+      }
+      cumulative += step;
+      ++i;
+    }
+  }
+  // Strictly increasing and inside (0, 1) (equal shares guarantee it but for rounding).
+  out.erase(std::remove_if(out.begin(), out.end(), [](double t) { return !(t > 0 && t < 1); }), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+} // namespace
+} // namespace detail
+
+Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size) {
+  const detail::SizeField field(size);
+  const detail::FeatureDistance features(decomposition.points, decomposition.segments);
+  Decomposition out = decomposition;
+  out.segments.clear();
+  out.segment_origin.clear();
+  // pieces[j]: the new segments of old segment j, from its lower-index end.
+  std::vector<std::vector<std::uint32_t>> pieces(decomposition.segments.size());
+  for (std::uint32_t j = 0; j < decomposition.segments.size(); ++j) {
+    const Segment& s = decomposition.segments[j];
+    const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
+    std::uint32_t from = lo;
+    for (const double t : detail::split_parameters(decomposition, j, field, features)) {
+      const auto v = static_cast<std::uint32_t>(out.points.size());
+      out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
+      pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
+      out.segments.push_back({from, v, s.marker});
+      out.segment_origin.push_back(decomposition.segment_origin[j]);
+      from = v;
+    }
+    pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
+    out.segments.push_back({from, hi, s.marker});
+    out.segment_origin.push_back(decomposition.segment_origin[j]);
+  }
+  // Rings: each old segment becomes its pieces, in the ring's direction.
+  for (Subdomain& sub : out.subdomains) {
+    for (std::size_t r = 0; r < sub.rings.size(); ++r) {
+      std::vector<std::uint32_t> ring, ring_segments;
+      for (std::size_t k = 0; k < sub.rings[r].size(); ++k) {
+        const std::uint32_t j = sub.ring_segments[r][k];
+        const bool forward = sub.rings[r][k] == std::min(decomposition.segments[j].a, decomposition.segments[j].b);
+        const std::vector<std::uint32_t>& list = pieces[j];
+        for (std::size_t q = 0; q < list.size(); ++q) {
+          const std::uint32_t piece = forward ? list[q] : list[list.size() - 1 - q];
+          const Segment& p = out.segments[piece];
+          ring.push_back(forward ? p.a : p.b);
+          ring_segments.push_back(piece);
+        }
+      }
+      sub.rings[r] = std::move(ring);
+      sub.ring_segments[r] = std::move(ring_segments);
+    }
+  }
+  return out;
+}
+
+} // namespace madd

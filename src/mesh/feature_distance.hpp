@@ -1,0 +1,34 @@
+#pragma once
+// Local feature size along the segments of a subdivision (Ruppert 1995): for
+// a point on segment j, the distance to the nearest feature not incident to
+// j, that is every vertex other than j's ends and every segment sharing no
+// end with j. Segments meeting j at an end are left out on purpose: their
+// distance goes to zero at the shared vertex, where the angle between them,
+// not their distance, is what refinement must handle (docs/mesh.md).
+#include <cstdint>
+#include <vector>
+
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd::detail {
+
+class FeatureDistance {
+public:
+  FeatureDistance(const std::vector<Point>& points, const std::vector<Segment>& segments);
+  // Distance from p to the nearest feature not incident to segment `j`
+  // (+infinity when there is none).
+  double to_nonincident(Point p, std::uint32_t j) const;
+
+private:
+  template <class Visit>
+  void for_cells_of(std::uint32_t j, Visit&& visit) const;
+
+  const std::vector<Point>& points_;
+  const std::vector<Segment>& segments_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  std::int64_t cols_ = 1, rows_ = 1;
+  std::vector<std::uint32_t> start_, items_;  // CSR: segments listed in each cell
+};
+
+} // namespace madd::detail

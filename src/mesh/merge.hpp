@@ -1,0 +1,29 @@
+#pragma once
+// From the discretised decomposition to each subdomain's own domain, and
+// from the subdomain meshes back to one mesh.
+#include <cstdint>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/mesh.hpp"
+#include "mesh/refine.hpp"
+
+namespace madd::detail {
+
+// Subdomain k as a standalone domain: its ring vertices (ring by ring, in
+// ring order) and its ring segments, with what refinement and the merge need
+// to map them back.
+struct LocalDomain {
+  Pslg pslg;
+  std::vector<bool> splittable;         // per local segment: a boundary piece (never a separator)
+  std::vector<std::uint32_t> to_global; // per local point: its point of the decomposition
+  std::vector<std::uint32_t> piece;     // per local segment: its segment of the decomposition
+};
+LocalDomain local_domain(const Decomposition& d, std::uint32_t k);
+
+// The subdomain meshes joined into one: Steiner points numbered after the
+// decomposition's points, subdomain by subdomain; triangles grouped by
+// subdomain; neighbours matched across separators by their shared vertices.
+Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_angle_deg);
+
+} // namespace madd::detail

@@ -1,0 +1,138 @@
+// mesh(): decompose, discretise (the decoupling), refine every subdomain on
+// its own thread, merge in subdomain order, verify.
+//
+// Determinism: each subdomain is refined from its own data only, and the
+// merge numbers the Steiner points subdomain by subdomain, so the mesh is the
+// same for any thread count and any order the threads finish in.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+
+#include "kernel/stopwatch.hpp"
+#include "madd/mesh.hpp"
+#include "mesh/merge.hpp"
+#include "mesh/refine.hpp"
+#include "mesh/size_field.hpp"
+#include "mesh/work.hpp"
+
+namespace madd {
+
+namespace {
+
+void check_mesh_options(const MeshOptions& options) {
+  const MeshSizeOptions& s = options.size;
+  if (!(s.min_angle_deg >= 0 && s.min_angle_deg < 60))
+    throw OptionError("min_angle_deg", "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
+  if (!(s.max_area >= 0) || !std::isfinite(s.max_area)) throw OptionError("max_area", "must be finite and >= 0");
+  for (const ValuedPoint& v : s.background_areas) {
+    if (!(v.value > 0) || !std::isfinite(v.value) || !std::isfinite(v.at.x) || !std::isfinite(v.at.y))
+      throw OptionError("background_areas", "every sample must have finite coordinates and a finite area > 0");
+  }
+}
+
+unsigned thread_count(unsigned asked, std::size_t work) {
+  unsigned n = asked ? asked : std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(work, 1)));
+}
+
+// Refines every subdomain, largest expected work first so that the last
+// ones to finish are small; results land in their own slots.
+std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const MeshOptions& options,
+                                              const detail::SizeField& field, const std::vector<double>& work,
+                                              MeshReport& report) {
+  const std::uint32_t n = static_cast<std::uint32_t>(d.subdomains.size());
+  std::vector<detail::SubdomainMesh> out(n);
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t k = 0; k < n; ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return work[a] > work[b]; });
+  detail::RefineSettings settings;
+  settings.min_angle_deg = options.size.min_angle_deg;
+  settings.size = field.bounded() ? &field : nullptr;
+  settings.off_centres = options.off_centres;
+  const unsigned threads = thread_count(options.decomposition.threads, n);
+  report.thread_seconds.assign(threads, 0.0);
+  report.subdomain_seconds.assign(n, 0.0);
+  std::atomic<std::uint32_t> next{0}, done{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  // Thread 0 is the calling thread: it reports progress between its subdomains.
+  const auto worker = [&](unsigned id) {
+    for (;;) {
+      const std::uint32_t i = next.fetch_add(1);
+      if (i >= n || failed.load()) return;
+      const std::uint32_t k = order[i];
+      try {
+        detail::Stopwatch clock;
+        const detail::LocalDomain local = detail::local_domain(d, k);
+        detail::RefineSettings mine = settings;
+        mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
+        out[k] = detail::refine_subdomain(local.pslg, local.splittable, mine);
+        const double s = clock.lap();
+        report.subdomain_seconds[k] = s;
+        report.thread_seconds[id] += s;
+        const std::uint32_t finished = done.fetch_add(1) + 1;
+        if (id == 0 && options.progress) options.progress(finished, n);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned id = 1; id < threads; ++id) pool.emplace_back(worker, id);
+  worker(0);
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  if (options.progress) options.progress(n, n);
+  return out;
+}
+
+} // namespace
+
+Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                        MeshReport& report) {
+  check_mesh_options(options);
+  detail::Stopwatch clock;
+  const Decomposition d = discretise(decomposition, options.size);
+  report.phases.push_back({"discretise", clock.lap()});
+  const detail::SizeField field(options.size);
+  report.expected_triangles = detail::expected_triangles(d, field);
+  std::vector<detail::SubdomainMesh> pieces = refine_all(d, options, field, report.expected_triangles, report);
+  report.phases.push_back({"refine", clock.lap()});
+  Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
+  report.phases.push_back({"merge", clock.lap()});
+  const Verification v = verify_mesh(m, domain, options.size);
+  report.phases.push_back({"verify", clock.lap()});
+  if (!v.ok()) {
+    std::string text = "mesh self-check failed (a bug in madd): " + v.problems.front();
+    if (v.problems.size() > 1) text += " (and " + std::to_string(v.problems.size() - 1) + " more)";
+    throw InternalError(text);
+  }
+  return m;
+}
+
+Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report) {
+  check_mesh_options(options);
+  detail::Stopwatch clock;
+  DecomposeOptions dopt = options.decomposition;
+  const detail::SizeField field(options.size);
+  if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
+  std::vector<PhaseTime> phases;
+  const Decomposition d = decompose(domain, dopt, phases);
+  report.phases.push_back({"decompose", clock.lap()});
+  return mesh_decomposition(d, domain, options, report);
+}
+
+Mesh mesh(const Pslg& domain, const MeshOptions& options) {
+  MeshReport report;
+  return mesh(domain, options, report);
+}
+
+} // namespace madd

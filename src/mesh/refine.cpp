@@ -1,0 +1,398 @@
+// Delaunay refinement of one subdomain (docs/mesh.md, "Refinement").
+//
+// Two queues, subsegments first (Ruppert): a subsegment encroached by a
+// vertex (one strictly inside its diametral circle) is split; then each bad
+// triangle (smallest angle below the bound, or area above the size bound)
+// gets a new vertex at its circumcentre or, when that is far, at Ungor's
+// off-centre. A new vertex that would encroach a boundary subsegment is not
+// inserted: the subsegment is split instead and the triangle tried again. One
+// that would encroach a separator is not inserted either, and the triangle
+// stays (the decoupling, docs/mesh.md, makes that rare; it is counted).
+//
+// Small input angles (Shewchuk 2002, Miller-Pav-Walkington 2003): a boundary
+// subsegment at a sharp corner (two segments meeting below 60 degrees) is
+// split at a power of two from the corner, so the splits of the two sides are
+// concentric shells; a triangle whose small angle is an input angle, or whose
+// short edge joins the two sides of a sharp corner at one distance, is left
+// alone; and a split of a subsegment at a sharp corner that would make it
+// shorter than the short edge of the triangle asking for it is refused
+// (Shewchuk's "Terminator"), which is what makes refinement terminate there.
+#include "mesh/refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <unordered_set>
+
+#include "madd/error.hpp"
+#include "madd/triangulation.hpp"
+#include "mesh/refinement_mesh.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+// Below this angle at a corner, two boundary pieces form a sharp corner
+// (Ruppert's bound: his algorithm needs input angles of at least 60 degrees).
+constexpr double sharp_corner_deg = 60.0;
+
+enum class Reason : std::uint8_t { none, input_angle, separator, precision, limit };
+
+struct TriangleShape {
+  double l2[3];      // squared length of edge i (opposite corner i)
+  double area;       // signed, floating point (the sign is known from orient2d)
+  int shortest;      // index of the shortest edge
+};
+
+TriangleShape shape_of(Point a, Point b, Point c) {
+  TriangleShape s{};
+  const Point e0 = c - b, e1 = a - c, e2 = b - a;
+  s.l2[0] = dot(e0, e0);
+  s.l2[1] = dot(e1, e1);
+  s.l2[2] = dot(e2, e2);
+  s.area = signed_area(a, b, c);
+  s.shortest = s.l2[0] <= s.l2[1] ? (s.l2[0] <= s.l2[2] ? 0 : 2) : (s.l2[1] <= s.l2[2] ? 1 : 2);
+  return s;
+}
+
+class Refiner {
+public:
+  Refiner(RefinementMesh& mesh, const RefineSettings& settings) : m_(mesh), settings_(settings) {
+    const double theta = settings.min_angle_deg * std::numbers::pi / 180.0;
+    beta_ = theta > 0 ? 1.0 / (2.0 * std::sin(theta)) : std::numeric_limits<double>::infinity();
+    find_sharp_corners();
+  }
+
+  void run();
+  MeshShortfall shortfall() const;
+
+private:
+  bool is_bad(std::uint32_t t) const;
+  bool too_skinny(const TriangleShape& s) const;
+  Reason input_angle_rule(std::uint32_t t, const TriangleShape& s) const;
+  Point insertion_point(std::uint32_t t, const TriangleShape& s) const;
+  void try_triangle(std::uint32_t t);
+  bool split_subsegment(std::uint32_t a, std::uint32_t b);
+  double split_parameter(std::uint32_t h) const;
+  bool at_sharp_corner(std::uint32_t h) const;
+  void queue_fresh();
+  void check_encroached_by_apex(std::uint32_t h);
+  void find_sharp_corners();
+  std::uint64_t key(std::uint32_t a, std::uint32_t b) const {
+    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+  }
+
+  RefinementMesh& m_;
+  const RefineSettings& settings_;
+  double beta_ = 1.0;  // circumradius / shortest edge bound: 1 / (2 sin theta)
+  std::vector<std::uint8_t> sharp_;  // per input vertex: two boundary pieces meet there below 60 degrees
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> segment_queue_;
+  std::vector<std::uint32_t> triangle_queue_;
+  std::vector<std::uint32_t> generation_;  // per slot, bumped when the slot holds a new triangle
+  std::vector<std::uint32_t> queued_generation_;
+  std::vector<Reason> reason_;  // per slot: why the triangle there was left bad
+  std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
+  std::size_t steiner_ = 0;
+  bool out_of_budget_ = false;
+};
+
+void Refiner::find_sharp_corners() {
+  sharp_.assign(m_.input_vertex_count(), 0);
+  // Around each input vertex, the angle between consecutive boundary pieces
+  // inside the subdomain: the sum of the triangle corners between them.
+  std::vector<double> angle(m_.input_vertex_count(), 0.0);
+  std::vector<std::uint8_t> pieces(m_.input_vertex_count(), 0);
+  for (std::uint32_t t = 0; t < m_.slot_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = m_.corner(t, i);
+      angle[v] += angle_at(m_.point(v), m_.point(m_.corner(t, (i + 1) % 3)), m_.point(m_.corner(t, (i + 2) % 3)));
+    }
+  }
+  for (std::size_t s = 0; s < m_.segment_count(); ++s) {
+    ++pieces[m_.segment(static_cast<std::uint32_t>(s)).a];
+    ++pieces[m_.segment(static_cast<std::uint32_t>(s)).b];
+  }
+  // A vertex with two pieces has one corner: its whole triangle fan.
+  for (std::uint32_t v = 0; v < m_.input_vertex_count(); ++v) {
+    sharp_[v] = pieces[v] == 2 && angle[v] < sharp_corner_deg * std::numbers::pi / 180.0 ? 1 : 0;
+  }
+}
+
+bool Refiner::too_skinny(const TriangleShape& s) const {
+  // circumradius / shortest edge = (product of the two longer edges) / (4 area).
+  const int k = s.shortest;
+  const double longer = s.l2[(k + 1) % 3] * s.l2[(k + 2) % 3];
+  return longer > 16.0 * s.area * s.area * beta_ * beta_;
+}
+
+bool Refiner::is_bad(std::uint32_t t) const {
+  const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
+  const TriangleShape s = shape_of(a, b, c);
+  if (too_skinny(s)) return true;
+  return settings_.size && s.area > settings_.size->area_at(triangle_centroid(a, b, c));
+}
+
+// Triangles refinement must not try to fix (docs/mesh.md, "Small angles").
+Reason Refiner::input_angle_rule(std::uint32_t t, const TriangleShape& s) const {
+  if (!too_skinny(s)) return Reason::none;
+  // The smallest angle is opposite the shortest edge; it is an input angle
+  // when both edges at it are segments.
+  const int k = s.shortest;
+  const std::uint32_t h1 = 3 * t + static_cast<std::uint32_t>((k + 1) % 3);
+  const std::uint32_t h2 = 3 * t + static_cast<std::uint32_t>((k + 2) % 3);
+  if (m_.segment_of(h1) != no_index && m_.segment_of(h2) != no_index) return Reason::input_angle;
+  // The short edge joins two pieces of one sharp corner at (about) one distance from it.
+  const std::uint32_t x = m_.corner(t, (k + 1) % 3), y = m_.corner(t, (k + 2) % 3);
+  const auto corner_of = [&](std::uint32_t v, std::uint32_t& apex_a, std::uint32_t& apex_b) {
+    const std::uint32_t sv = m_.vertex_segment(v);
+    if (sv == no_index) return false;
+    apex_a = m_.segment(sv).a;
+    apex_b = m_.segment(sv).b;
+    return true;
+  };
+  std::uint32_t xa = no_index, xb = no_index, ya = no_index, yb = no_index;
+  if (!corner_of(x, xa, xb) || !corner_of(y, ya, yb)) return Reason::none;
+  for (const std::uint32_t w : {xa, xb}) {
+    if (w >= sharp_.size() || !sharp_[w] || (w != ya && w != yb)) continue;
+    const double dx = distance(m_.point(w), m_.point(x)), dy = distance(m_.point(w), m_.point(y));
+    if (std::abs(dx - dy) <= 0.05 * std::max(dx, dy)) return Reason::input_angle;
+  }
+  return Reason::none;
+}
+
+// The circumcentre, or Ungor's off-centre when the circumcentre is farther
+// from the shortest edge than the apex of the triangle on that edge whose
+// circumradius / edge ratio is exactly the bound.
+Point Refiner::insertion_point(std::uint32_t t, const TriangleShape& s) const {
+  const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
+  const Point centre = circumcentre(a, b, c);
+  if (!settings_.off_centres || !std::isfinite(beta_)) return centre;
+  const int k = s.shortest;
+  const Point p = m_.point(m_.corner(t, (k + 1) % 3)), q = m_.point(m_.corner(t, (k + 2) % 3));
+  const Point mid = midpoint(p, q);
+  const double l = std::sqrt(s.l2[k]);
+  // 0.5% nearer than the apex whose angle is exactly the bound, so the new
+  // triangle on the short edge clears the bound by more than rounding.
+  const double h = 0.995 * l * (beta_ + std::sqrt(beta_ * beta_ - 0.25));
+  const double d = distance(mid, centre);
+  if (!(d > h)) return centre;
+  return mid + (h / d) * (centre - mid);
+}
+
+bool Refiner::at_sharp_corner(std::uint32_t h) const {
+  const RefinementSegment& s = m_.segment(m_.segment_of(h));
+  const std::uint32_t o = m_.origin(h), d = m_.dest(h);
+  return (o == s.a || o == s.b || d == s.a || d == s.b) &&
+         ((s.a < sharp_.size() && sharp_[s.a]) || (s.b < sharp_.size() && sharp_[s.b]));
+}
+
+// The midpoint parameter, or, with one end at a sharp corner, the power of
+// two distance from the corner nearest the middle (concentric shells).
+double Refiner::split_parameter(std::uint32_t h) const {
+  const std::uint32_t sid = m_.segment_of(h);
+  const RefinementSegment& s = m_.segment(sid);
+  const std::uint32_t o = m_.origin(h), d = m_.dest(h);
+  const auto parameter_of = [&](std::uint32_t v) {
+    return v == s.a ? 0.0 : v == s.b ? 1.0 : m_.vertex_parameter(v);
+  };
+  const double to = parameter_of(o), td = parameter_of(d);
+  const bool corner_o = (o == s.a || o == s.b) && o < sharp_.size() && sharp_[o];
+  const bool corner_d = (d == s.a || d == s.b) && d < sharp_.size() && sharp_[d];
+  if (corner_o == corner_d) return 0.5 * (to + td);
+  const double full = distance(m_.point(s.a), m_.point(s.b));
+  const double piece = distance(m_.point(o), m_.point(d));
+  const double shell = std::exp2(std::round(std::log2(0.5 * piece)));
+  const double from = corner_o ? to : td, towards = corner_o ? td : to;
+  return from + (towards > from ? 1.0 : -1.0) * shell / full;
+}
+
+bool Refiner::split_subsegment(std::uint32_t a, std::uint32_t b) {
+  std::uint32_t h = m_.find_half_edge(a, b);
+  if (h == no_index || m_.segment_of(h) == no_index) h = m_.find_half_edge(b, a);
+  if (h == no_index || m_.segment_of(h) == no_index) return false;  // split already
+  if (stuck_.count(key(a, b))) return false;
+  const std::uint32_t v = m_.split(h, split_parameter(h));
+  if (v == no_index) {
+    stuck_.insert(key(a, b));
+    return false;
+  }
+  ++steiner_;
+  queue_fresh();
+  return true;
+}
+
+void Refiner::check_encroached_by_apex(std::uint32_t h) {
+  if (m_.segment_of(h) == no_index || !m_.segment(m_.segment_of(h)).splittable) return;
+  const std::uint32_t o = m_.origin(h), d = m_.dest(h);
+  const Point apex = m_.point(m_.corner(h / 3, static_cast<int>(h % 3)));
+  if (dot(m_.point(o) - apex, m_.point(d) - apex) < 0) segment_queue_.push_back({o, d});
+}
+
+void Refiner::queue_fresh() {
+  for (const std::uint32_t t : m_.fresh()) {
+    if (generation_.size() <= t) {
+      generation_.resize(t + 1 + t / 2, 0);
+      queued_generation_.resize(generation_.size(), std::numeric_limits<std::uint32_t>::max());
+      reason_.resize(generation_.size(), Reason::none);
+    }
+    ++generation_[t];
+    reason_[t] = Reason::none;
+    for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) check_encroached_by_apex(h);
+    if (is_bad(t)) {
+      queued_generation_[t] = generation_[t];
+      triangle_queue_.push_back(t);
+    }
+  }
+  m_.fresh().clear();
+}
+
+void Refiner::try_triangle(std::uint32_t t) {
+  const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
+  const TriangleShape s = shape_of(a, b, c);
+  if (const Reason r = input_angle_rule(t, s); r != Reason::none) {
+    reason_[t] = r;
+    return;
+  }
+  if (out_of_budget_) {
+    reason_[t] = Reason::limit;
+    return;
+  }
+  const Point p = insertion_point(t, s);
+  // Coordinates must resolve the new vertex from the triangle's corners.
+  const double scale = std::max({std::abs(p.x), std::abs(p.y), std::numeric_limits<double>::min()});
+  const double near = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || distance(p, a) <= near || distance(p, b) <= near ||
+      distance(p, c) <= near) {
+    reason_[t] = Reason::precision;
+    return;
+  }
+  const RefinementMesh::Walk w = m_.walk(t, p);
+  std::vector<std::uint32_t> encroached;
+  if (w.blocked_by != no_index) {
+    encroached.push_back(w.blocked_by);  // beyond a segment: its diametral circle holds p (or p is outside)
+  } else if (w.triangle == no_index) {
+    reason_[t] = Reason::precision;
+    return;
+  } else {
+    if (!m_.prepare(w.triangle, p)) {
+      reason_[t] = Reason::precision;
+      return;
+    }
+    for (const std::uint32_t h : m_.rim_segments()) {
+      if (dot(m_.point(m_.origin(h)) - p, m_.point(m_.dest(h)) - p) < 0) encroached.push_back(h);
+    }
+    if (encroached.empty()) {
+      m_.commit();
+      ++steiner_;
+      queue_fresh();
+      return;
+    }
+    m_.abandon();
+  }
+  // p encroaches: split the boundary subsegments instead (unless at a sharp
+  // corner that would make them shorter than this triangle's short edge);
+  // a separator is never split.
+  bool split_any = false, separator = false;
+  const double shortest = std::sqrt(s.l2[s.shortest]);
+  for (const std::uint32_t h : encroached) {
+    if (!m_.segment(m_.segment_of(h)).splittable) {
+      separator = true;
+      continue;
+    }
+    const std::uint32_t o = m_.origin(h), d = m_.dest(h);
+    if (at_sharp_corner(h) && 0.5 * distance(m_.point(o), m_.point(d)) < shortest) continue;
+    split_any |= split_subsegment(o, d);
+  }
+  if (split_any) {
+    if (m_.alive(t) && queued_generation_[t] != generation_[t]) {
+      queued_generation_[t] = generation_[t];
+      triangle_queue_.push_back(t);
+    }
+    return;
+  }
+  reason_[t] = separator ? Reason::separator : encroached.empty() ? Reason::precision : Reason::input_angle;
+}
+
+void Refiner::run() {
+  // Every triangle starts fresh: encroached subsegments and bad triangles are queued.
+  for (std::uint32_t t = 0; t < m_.slot_count(); ++t) m_.fresh().push_back(t);
+  queue_fresh();
+  std::size_t head = 0;
+  for (;;) {
+    if (!segment_queue_.empty()) {
+      const auto [a, b] = segment_queue_.back();
+      segment_queue_.pop_back();
+      split_subsegment(a, b);
+      continue;
+    }
+    if (head == triangle_queue_.size()) break;
+    const std::uint32_t t = triangle_queue_[head++];
+    if (head > 4096 && head * 2 > triangle_queue_.size()) {
+      triangle_queue_.erase(triangle_queue_.begin(), triangle_queue_.begin() + static_cast<std::ptrdiff_t>(head));
+      head = 0;
+    }
+    if (!m_.alive(t) || queued_generation_[t] != generation_[t]) continue;
+    queued_generation_[t] = std::numeric_limits<std::uint32_t>::max();
+    if (!is_bad(t)) continue;
+    if (settings_.max_steiner_points && steiner_ >= settings_.max_steiner_points) out_of_budget_ = true;
+    try_triangle(t);
+  }
+}
+
+MeshShortfall Refiner::shortfall() const {
+  MeshShortfall f;
+  for (std::uint32_t t = 0; t < m_.slot_count(); ++t) {
+    if (!m_.alive(t)) continue;
+    const TriangleShape s =
+        shape_of(m_.point(m_.corner(t, 0)), m_.point(m_.corner(t, 1)), m_.point(m_.corner(t, 2)));
+    if (!too_skinny(s)) continue;
+    switch (t < reason_.size() ? reason_[t] : Reason::none) {
+      case Reason::input_angle: ++f.input_angle; break;
+      case Reason::separator: ++f.separator; break;
+      case Reason::limit: ++f.limit; break;
+      default: ++f.precision; break;
+    }
+  }
+  return f;
+}
+
+std::vector<RefinementSegment> refinement_segments(const Pslg& pslg, const std::vector<bool>& splittable) {
+  std::vector<RefinementSegment> out(pslg.segments.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {pslg.segments[i].a, pslg.segments[i].b, splittable[i]};
+  return out;
+}
+
+} // namespace
+
+SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings) {
+  RefinementMesh m(triangulate(pslg), refinement_segments(pslg, splittable));
+  Refiner refiner(m, settings);
+  refiner.run();
+  SubdomainMesh out;
+  out.shortfall = refiner.shortfall();
+  out.points.assign(m.points().begin(), m.points().end());
+  out.point_segment.resize(m.vertex_count());
+  out.point_parameter.resize(m.vertex_count());
+  for (std::uint32_t v = 0; v < m.vertex_count(); ++v) {
+    out.point_segment[v] = m.vertex_segment(v);
+    out.point_parameter[v] = m.vertex_parameter(v);
+  }
+  std::vector<std::uint32_t> index(m.slot_count(), no_index);
+  for (std::uint32_t t = 0; t < m.slot_count(); ++t) {
+    if (!m.alive(t)) continue;
+    index[t] = static_cast<std::uint32_t>(out.triangles.size());
+    out.triangles.push_back({m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)});
+  }
+  out.neighbours.resize(out.triangles.size());
+  for (std::uint32_t t = 0; t < m.slot_count(); ++t) {
+    if (!m.alive(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = m.twin(3 * t + i);
+      out.neighbours[index[t]][i] = h == no_index ? no_index : index[h / 3];
+    }
+  }
+  return out;
+}
+
+} // namespace madd::detail

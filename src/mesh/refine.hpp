@@ -1,0 +1,42 @@
+#pragma once
+// Delaunay refinement of one subdomain (docs/mesh.md, "Refinement"): Ruppert's
+// algorithm with Chew's and Shewchuk's rules for small angles, and Ungor's
+// off-centres. Separators are never split (the decoupling makes that
+// unnecessary where the guarantee holds); boundary pieces are split like
+// Ruppert's segments, at powers of two from a sharp input corner
+// (concentric shells).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "madd/mesh.hpp"
+#include "madd/pslg.hpp"
+#include "mesh/size_field.hpp"
+
+namespace madd::detail {
+
+struct RefineSettings {
+  double min_angle_deg = 30.0;
+  const SizeField* size = nullptr;  // the area bound (nullptr = none)
+  bool off_centres = true;
+  std::size_t max_steiner_points = 0;  // 0 = no budget
+};
+
+// A subdomain mesh in local numbering: the input's points first, same
+// indices, then the Steiner points. A Steiner point on a segment records it
+// and its parameter along it (0 at the segment's a, 1 at its b).
+struct SubdomainMesh {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> point_segment;  // per point: no_index, or the segment a Steiner point lies inside
+  std::vector<double> point_parameter;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::array<std::uint32_t, 3>> neighbours;  // across edge i (opposite corner i); no_index outside
+  MeshShortfall shortfall;
+};
+
+// Refines the constrained Delaunay triangulation of `pslg` (one closed
+// subdomain: rings of segments, hole points). Segment i may be split when
+// splittable[i]. Deterministic.
+SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings);
+
+} // namespace madd::detail

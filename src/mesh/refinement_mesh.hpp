@@ -1,0 +1,127 @@
+#pragma once
+// The working triangulation of Delaunay refinement: a constrained Delaunay
+// triangulation of one subdomain that grows one vertex at a time.
+//
+// Half-edges as in the triangulator (triangulation/delaunay_mesh.hpp):
+// h = 3t + i is edge i of triangle t, opposite corner i, directed
+// counter-clockwise from tv[3t + (i+1)%3] to tv[3t + (i+2)%3]; tn[h] is the
+// twin, no_index outside the subdomain (every such edge is a segment). There
+// are no ghost triangles: the subdomain is closed by its segments.
+//
+// Every vertex on a segment records it and its parameter along it, so that a
+// subsegment is split at a point computed on the segment's own line
+// (lerp of the segment's end points), never on the chord of a chord.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "madd/geometry.hpp"
+#include "madd/pslg.hpp"
+#include "madd/triangulation.hpp"
+
+namespace madd::detail {
+
+inline std::uint32_t next_half_edge(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
+inline std::uint32_t prev_half_edge(std::uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
+
+// A segment of the subdomain: a piece of the discretised boundary.
+struct RefinementSegment {
+  std::uint32_t a = 0, b = 0;  // end vertices (parameter 0 at a, 1 at b)
+  bool splittable = false;     // a domain-boundary piece (a separator never is: the decoupling)
+};
+
+class RefinementMesh {
+public:
+  // From a constrained Delaunay triangulation of the subdomain whose segment
+  // i is segments[i] (tri.segment_of indexes it).
+  RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments);
+
+  std::span<const Point> points() const noexcept { return points_; }
+  Point point(std::uint32_t v) const noexcept { return points_[v]; }
+  std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
+  std::uint32_t slot_count() const noexcept { return static_cast<std::uint32_t>(tv_.size() / 3); }
+  bool alive(std::uint32_t t) const noexcept { return alive_[t] != 0; }
+  std::uint32_t corner(std::uint32_t t, int i) const noexcept { return tv_[3 * t + static_cast<std::uint32_t>(i)]; }
+  std::uint32_t origin(std::uint32_t h) const noexcept { return tv_[next_half_edge(h)]; }
+  std::uint32_t dest(std::uint32_t h) const noexcept { return tv_[prev_half_edge(h)]; }
+  std::uint32_t twin(std::uint32_t h) const noexcept { return tn_[h]; }
+  std::uint32_t segment_of(std::uint32_t h) const noexcept { return seg_[h]; }
+  const RefinementSegment& segment(std::uint32_t s) const noexcept { return segments_[s]; }
+  std::size_t segment_count() const noexcept { return segments_.size(); }
+  // The segment a vertex lies inside (no_index for an input vertex or one
+  // inside the subdomain) and its parameter along it.
+  std::uint32_t vertex_segment(std::uint32_t v) const noexcept { return vertex_segment_[v]; }
+  double vertex_parameter(std::uint32_t v) const noexcept { return vertex_parameter_[v]; }
+  // Vertices that existed before refinement (the subdomain's ring vertices).
+  std::uint32_t input_vertex_count() const noexcept { return input_vertices_; }
+
+  // The half-edge from a to b, or no_index when a and b are not joined.
+  std::uint32_t find_half_edge(std::uint32_t a, std::uint32_t b) const noexcept;
+
+  // The outcome of locating a point by walking from a triangle.
+  struct Walk {
+    std::uint32_t triangle = no_index;   // containing triangle (closure) when reached
+    std::uint32_t blocked_by = no_index; // the segment half-edge the straight walk hit first
+  };
+  // Walks the straight line from the centroid of `from` to p, crossing only
+  // unconstrained edges. Exact orientation tests; gives up (triangle and
+  // blocked_by both no_index) after a step count no walk needs.
+  Walk walk(std::uint32_t from, Point p) const;
+
+  // Inserting p, found in the closure of triangle `t` and visible from it,
+  // by Bowyer-Watson, in two steps so that the caller can look before it
+  // leaps: prepare() collects the cavity (the triangles whose circumcircle
+  // strictly contains p, reachable from t without crossing a segment) and
+  // returns false when its fan around p would not be strictly
+  // counter-clockwise everywhere (p too close to the rim to be resolved);
+  // rim_segments() are then the segment half-edges on the cavity's rim (the
+  // diametral circles p may encroach); commit() makes the fan and returns
+  // the new vertex, abandon() forgets the cavity. Nothing changes before commit().
+  bool prepare(std::uint32_t t, Point p);
+  const std::vector<std::uint32_t>& rim_segments() const noexcept { return rim_segments_; }
+  std::uint32_t commit();
+  void abandon();
+
+  // Splits the segment half-edge h at parameter `parameter` of its segment
+  // (the new vertex at lerp of the segment's ends): the two subsegments keep
+  // the segment, the triangles inside whose circumcircle holds the new vertex
+  // are re-fanned. Returns the new vertex, or no_index when the split point
+  // does not land strictly between h's ends or the fan would fold.
+  std::uint32_t split(std::uint32_t h, double parameter);
+
+  // Newly made triangles since the last call (for the caller's queue).
+  std::vector<std::uint32_t>& fresh() noexcept { return fresh_; }
+
+private:
+  bool collect_cavity(std::uint32_t t, Point p, std::uint32_t skip);
+  std::uint32_t fan(std::uint32_t vertex_segment, double parameter);
+  void clear_cavity();
+  std::uint32_t new_slot();
+  void set_corner_home(std::uint32_t t);
+
+  std::vector<Point> points_;
+  std::vector<std::uint32_t> vertex_segment_;
+  std::vector<double> vertex_parameter_;
+  std::vector<std::uint32_t> vertex_triangle_;  // some live triangle at each vertex
+  std::uint32_t input_vertices_ = 0;
+  std::vector<RefinementSegment> segments_;
+
+  std::vector<std::uint32_t> tv_, tn_, seg_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> free_;
+
+  // Scratch of one insertion.
+  std::vector<std::uint32_t> cavity_, stack_;
+  std::vector<std::uint8_t> in_cavity_;
+  struct Rim {
+    std::uint32_t a, b, outer, segment;  // rim edge a->b seen from inside, its twin outside, its segment
+  };
+  std::vector<Rim> rim_;
+  std::vector<std::uint32_t> rim_segments_;
+  std::vector<std::uint32_t> link_;  // per vertex: the new triangle whose rim edge starts there
+  Point pending_;                    // the point prepare() dug for
+  std::uint32_t skip_ = no_index;    // the subsegment being split (not a rim edge of the fan)
+  std::vector<std::uint32_t> fresh_;
+};
+
+} // namespace madd::detail
