@@ -54,7 +54,7 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
     for (std::size_t i = 0; i < samples; ++i) pieces += 0.5 * (density[i] + density[i + 1]) / static_cast<double>(samples);
     // Resample where the pieces come out finer than the samples.
     const double wanted = std::min(4.0 * pieces, static_cast<double>(max_pieces_per_segment));
-    if (wanted <= static_cast<double>(samples)) break;
+    if (pass == 1 || wanted <= static_cast<double>(samples)) break;
     samples = static_cast<std::size_t>(wanted);
   }
   const auto n = static_cast<std::size_t>(std::clamp(std::ceil(pieces - 1e-9), 1.0, static_cast<double>(max_pieces_per_segment)));

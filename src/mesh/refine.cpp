@@ -293,16 +293,23 @@ void Refiner::try_triangle(std::uint32_t t) {
   // p encroaches: split the boundary subsegments instead (unless at a sharp
   // corner that would make them shorter than this triangle's short edge);
   // a separator is never split.
+  // (Half-edges die with each split, so the subsegments are named by their ends first.)
+  struct Encroached {
+    std::uint32_t a, b;
+    bool splittable, sharp;
+  };
+  std::vector<Encroached> list;
+  for (const std::uint32_t h : encroached)
+    list.push_back({m_.origin(h), m_.dest(h), m_.segment(m_.segment_of(h)).splittable, at_sharp_corner(h)});
   bool split_any = false, separator = false;
   const double shortest = std::sqrt(s.l2[s.shortest]);
-  for (const std::uint32_t h : encroached) {
-    if (!m_.segment(m_.segment_of(h)).splittable) {
+  for (const Encroached& e : list) {
+    if (!e.splittable) {
       separator = true;
       continue;
     }
-    const std::uint32_t o = m_.origin(h), d = m_.dest(h);
-    if (at_sharp_corner(h) && 0.5 * distance(m_.point(o), m_.point(d)) < shortest) continue;
-    split_any |= split_subsegment(o, d);
+    if (e.sharp && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
+    split_any |= split_subsegment(e.a, e.b);
   }
   if (split_any) {
     if (m_.alive(t) && queued_generation_[t] != generation_[t]) {
