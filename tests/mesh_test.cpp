@@ -1,0 +1,199 @@
+// The mesher (madd::mesh, docs/mesh.md): the decoupling's shared points, the
+// angle and size bounds, conformity across separators checked edge by edge,
+// the constrained Delaunay property brute force, small input angles, and
+// determinism across thread counts.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <utility>
+
+#include "madd/decomposition.hpp"
+#include "madd/mesh.hpp"
+#include "madd/poly_io.hpp"
+#include "madd/predicates.hpp"
+
+namespace {
+
+using madd::Mesh;
+using madd::Point;
+
+double smallest_angle_deg(const Mesh& m, std::size_t t) {
+  double best = 180;
+  for (int i = 0; i < 3; ++i) {
+    const Point a = m.points[m.triangles[t][i]], b = m.points[m.triangles[t][(i + 1) % 3]],
+                c = m.points[m.triangles[t][(i + 2) % 3]];
+    best = std::min(best, madd::angle_at(a, b, c) * 180 / std::numbers::pi);
+  }
+  return best;
+}
+
+// Each undirected edge: how many triangles have it, and of which subdomains.
+std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> edge_uses(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> uses;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
+      uses[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  }
+  return uses;
+}
+
+madd::MeshOptions options_for(std::uint32_t n, double q, double area) {
+  madd::MeshOptions o;
+  o.decomposition.subdomains = n;
+  o.decomposition.threads = 1;
+  o.size.min_angle_deg = q;
+  o.size.max_area = area;
+  return o;
+}
+
+// The properties every mesh must have, checked here without verify_mesh.
+void check_mesh(const Mesh& m, const madd::Pslg& domain, double max_area) {
+  // Orientation and the size bound.
+  double area = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Point a = m.points[m.triangles[t][0]], b = m.points[m.triangles[t][1]], c = m.points[m.triangles[t][2]];
+    REQUIRE(madd::orient2d(a, b, c) > 0);
+    if (max_area > 0) REQUIRE(madd::triangle_area(a, b, c) <= max_area * (1 + 1e-12));
+    area += madd::triangle_area(a, b, c);
+  }
+  CHECK(area == doctest::Approx(madd::domain_area(domain)).epsilon(1e-9));
+  // Conformity: every edge in one or two triangles; an edge in one triangle
+  // is a domain-boundary mesh segment; an edge between subdomains is a separator one.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> boundary, separator;
+  for (const madd::MeshSegment& s : m.segments) {
+    (s.marker == 0 ? separator : boundary).insert({std::min(s.a, s.b), std::max(s.a, s.b)});
+  }
+  for (const auto& [edge, users] : edge_uses(m)) {
+    REQUIRE(users.size() <= 2);
+    if (users.size() == 1) {
+      CHECK(boundary.count(edge) == 1);
+    } else if (m.triangle_subdomain[users[0]] != m.triangle_subdomain[users[1]]) {
+      CHECK(separator.count(edge) == 1);
+    }
+  }
+  // Every separator edge is used by two subdomains: nothing split it on one side only.
+  const auto uses = edge_uses(m);
+  for (const auto& edge : separator) {
+    const auto it = uses.find(edge);
+    REQUIRE(it != uses.end());
+    REQUIRE(it->second.size() == 2);
+    CHECK(m.triangle_subdomain[it->second[0]] != m.triangle_subdomain[it->second[1]]);
+  }
+  // Angles: below the bound only as many triangles as the shortfall counts.
+  std::size_t below = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) below += smallest_angle_deg(m, t) < m.min_angle_deg - 1e-9;
+  CHECK(below == m.shortfall.total());
+}
+
+madd::Pslg pipe() { return madd::read_domain(MADD_DATA_DIR "/pipe.poly"); }
+
+} // namespace
+
+TEST_CASE("mesh: the pipe at N = 16, q 30, a 0.002: conforming, every angle >= 30, every triangle within the bound") {
+  const madd::Pslg domain = pipe();
+  const Mesh m = madd::mesh(domain, options_for(16, 30, 0.002));
+  CHECK(m.subdomain_count() == 16);
+  CHECK(m.shortfall.total() == 0);  // the pipe has no small input angles
+  check_mesh(m, domain, 0.002);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) REQUIRE(smallest_angle_deg(m, t) >= 30.0 - 1e-9);
+}
+
+TEST_CASE("mesh: the same mesh for 1, 2 and 3 threads") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
+  madd::MeshOptions o = options_for(8, 28, 0.0);
+  o.size.max_area = madd::domain_area(domain) / 4000;
+  const Mesh one = madd::mesh(domain, o);
+  o.decomposition.threads = 2;
+  const Mesh two = madd::mesh(domain, o);
+  o.decomposition.threads = 3;
+  const Mesh three = madd::mesh(domain, o);
+  CHECK(one == two);
+  CHECK(one == three);
+  check_mesh(one, domain, o.size.max_area);
+}
+
+TEST_CASE("mesh: each subdomain is constrained Delaunay (brute force: no vertex of the subdomain inside a circumcircle it sees)") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/l_shape.poly");
+  madd::MeshOptions o = options_for(3, 25, madd::domain_area(domain) / 300);
+  const Mesh m = madd::mesh(domain, o);
+  check_mesh(m, domain, o.size.max_area);
+  // Locally Delaunay across every edge that is not a segment suffices for a
+  // constrained Delaunay triangulation; check it across every unconstrained edge.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> constrained;
+  for (const madd::MeshSegment& s : m.segments) constrained.insert({std::min(s.a, s.b), std::max(s.a, s.b)});
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = m.neighbours[t][i];
+      if (u == madd::no_index) continue;
+      const std::uint32_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
+      if (constrained.count({std::min(a, b), std::max(a, b)})) continue;
+      std::uint32_t opposite = madd::no_index;
+      for (int j = 0; j < 3; ++j) {
+        if (m.triangles[u][j] != a && m.triangles[u][j] != b) opposite = m.triangles[u][j];
+      }
+      REQUIRE(opposite != madd::no_index);
+      const auto& v = m.triangles[t];
+      CHECK(madd::incircle(m.points[v[0]], m.points[v[1]], m.points[v[2]], m.points[opposite]) <= 0);
+    }
+  }
+}
+
+TEST_CASE("discretise: a separator's split points are shared by both its subdomains, computed once") {
+  const madd::Pslg domain = pipe();
+  madd::DecomposeOptions d;
+  d.subdomains = 8;
+  d.threads = 1;
+  const madd::Decomposition dec = madd::decompose(domain, d);
+  madd::MeshSizeOptions size;
+  size.max_area = 0.001;
+  const madd::Decomposition split = madd::discretise(dec, size);
+  CHECK(split.segments.size() > 4 * dec.segments.size());
+  // Every separator piece is in exactly two rings, in opposite directions.
+  std::map<std::uint32_t, int> forward, backward;
+  for (const madd::Subdomain& s : split.subdomains) {
+    for (std::size_t r = 0; r < s.rings.size(); ++r) {
+      for (std::size_t k = 0; k < s.rings[r].size(); ++k) {
+        const std::uint32_t j = s.ring_segments[r][k];
+        (s.rings[r][k] == split.segments[j].a ? forward : backward)[j]++;
+      }
+    }
+  }
+  for (std::uint32_t j = 0; j < split.segments.size(); ++j) {
+    if (!split.is_separator(j)) continue;
+    CHECK(forward[j] == 1);
+    CHECK(backward[j] == 1);
+  }
+  // Pieces are short enough for the decoupling: at most 1.2408 sqrt(A).
+  for (const madd::Segment& s : split.segments) {
+    CHECK(madd::distance(split.points[s.a], split.points[s.b]) <= 1.2408 * std::sqrt(0.001));
+  }
+  // The discretised decomposition is still a valid decomposition of the domain.
+  CHECK(madd::verify_decomposition(split, domain, 8).ok());
+}
+
+TEST_CASE("mesh: a 0.5-degree input angle terminates, and the triangles left below the bound are counted as input angles") {
+  // A thin wedge: two long sides meeting at 0.5 degrees at the origin.
+  madd::Pslg wedge;
+  const double a = 0.5 * std::numbers::pi / 180;
+  wedge.points = {{0, 0}, {10, 0}, {10 * std::cos(a), 10 * std::sin(a)}};
+  wedge.segments = {{0, 1, 1}, {1, 2, 1}, {2, 0, 1}};
+  madd::validate(wedge);
+  madd::MeshOptions o = options_for(1, 30, 0.0);
+  const Mesh m = madd::mesh(wedge, o);
+  check_mesh(m, wedge, 0);
+  CHECK(m.shortfall.total() > 0);
+  CHECK(m.shortfall.input_angle == m.shortfall.total());
+  CHECK(m.triangles.size() < 5000);
+}
+
+TEST_CASE("mesh: refuses an angle bound of 60 degrees or more and a negative area") {
+  const madd::Pslg domain = pipe();
+  CHECK_THROWS_AS(madd::mesh(domain, options_for(2, 60, 0)), madd::OptionError);
+  CHECK_THROWS_AS(madd::mesh(domain, options_for(2, 30, -1)), madd::OptionError);
+}
