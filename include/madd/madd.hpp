@@ -9,6 +9,7 @@
 #include "madd/graph.hpp"
 #include "madd/medial.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_output.hpp"
 #include "madd/metis_io.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"

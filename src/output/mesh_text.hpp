@@ -1,0 +1,45 @@
+#pragma once
+// What the mesh writers (src/output/mesh_*.cpp) share: Triangle-style lines
+// of numbers, the first_index rule, and the marker of every boundary edge.
+#include <concepts>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include "madd/mesh.hpp"
+#include "kernel/number_format.hpp"
+
+namespace madd::detail {
+
+// Throws OptionError unless first_index is 0 or 1 (Triangle's two numberings).
+void check_first_index(unsigned first_index);
+
+// One value of a line: integers as they are, doubles as %.17g, so a vertex
+// has the same text in the whole mesh's files and in its split pieces.
+inline void put(std::string& out, double v) { append_g17(out, v); }
+inline void put(std::string& out, std::integral auto v) { append_int(out, static_cast<std::int64_t>(v)); }
+
+// "v0 v1 ...\n", values separated by one space.
+template <typename First, typename... Rest>
+void line(std::string& out, First first, Rest... rest) {
+  put(out, first);
+  ((out += ' ', put(out, rest)), ...);
+  out += '\n';
+}
+
+// The key of the undirected edge {a, b}.
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t{a} << 32) | b;
+}
+
+// The marker of every MeshSegment, by edge: what a boundary edge of the mesh
+// is labelled with.
+std::unordered_map<std::uint64_t, int> segment_markers(const Mesh& mesh);
+
+// The marker written for the domain-boundary edge {a, b}: its segment's, or 1
+// (Triangle's marker of an unmarked boundary) should no segment cover it.
+int boundary_marker(const std::unordered_map<std::uint64_t, int>& markers, std::uint32_t a, std::uint32_t b);
+
+} // namespace madd::detail

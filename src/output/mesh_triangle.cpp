@@ -1,0 +1,157 @@
+// The merged mesh in Triangle's formats (.node, .ele, .neigh, .edge), and one
+// subdomain's piece of it (include/madd/mesh_output.hpp). The layouts are
+// Triangle 1.6's, so triangle -r, showme and every reader of Triangle's
+// output take them.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/mesh_output.hpp"
+#include "output/mesh_text.hpp"
+
+namespace madd {
+
+namespace detail {
+
+void check_first_index(unsigned first_index) {
+  if (first_index > 1) throw OptionError("first_index", "must be 0 or 1 (the id of the first point and triangle)");
+}
+
+std::unordered_map<std::uint64_t, int> segment_markers(const Mesh& mesh) {
+  std::unordered_map<std::uint64_t, int> markers;
+  markers.reserve(mesh.segments.size());
+  for (const MeshSegment& s : mesh.segments) markers[edge_key(s.a, s.b)] = s.marker;
+  return markers;
+}
+
+int boundary_marker(const std::unordered_map<std::uint64_t, int>& markers, std::uint32_t a, std::uint32_t b) {
+  const auto it = markers.find(edge_key(a, b));
+  return it == markers.end() ? 1 : it->second;
+}
+
+} // namespace detail
+
+namespace {
+
+using detail::line;
+
+// Lines of "id v0 v1 v2 k" per triangle, vertices through `id_of`.
+template <typename IdOf>
+void append_triangle_line(std::string& out, std::int64_t id, const std::array<std::uint32_t, 3>& t, IdOf id_of,
+                          std::uint32_t subdomain) {
+  line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
+}
+
+} // namespace
+
+std::string format_mesh_node(const Mesh& mesh, unsigned first_index) {
+  detail::check_first_index(first_index);
+  std::string out;
+  out.reserve(48 * mesh.points.size() + 32);
+  line(out, mesh.points.size(), 2, 0, 1);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
+    line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
+  }
+  return out;
+}
+
+std::string format_mesh_ele(const Mesh& mesh, unsigned first_index) {
+  detail::check_first_index(first_index);
+  std::string out;
+  out.reserve(40 * mesh.triangles.size() + 32);
+  line(out, mesh.triangles.size(), 3, 1);
+  const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
+                         mesh.triangle_subdomain[t]);
+  return out;
+}
+
+std::string format_mesh_neigh(const Mesh& mesh, unsigned first_index) {
+  detail::check_first_index(first_index);
+  std::string out;
+  out.reserve(36 * mesh.triangles.size() + 32);
+  line(out, mesh.triangles.size(), 3);
+  const auto id_of = [first_index](std::uint32_t t) { return t == no_index ? -1 : std::int64_t{t} + first_index; };
+  for (std::size_t t = 0; t < mesh.neighbours.size(); ++t) {
+    const auto& n = mesh.neighbours[t];
+    line(out, t + first_index, id_of(n[0]), id_of(n[1]), id_of(n[2]));
+  }
+  return out;
+}
+
+// Each edge once, from the lower-numbered of its two triangles (or its only
+// one), as cmd_triangulate writes it: the count is only known at the end.
+std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) {
+  detail::check_first_index(first_index);
+  const auto markers = detail::segment_markers(mesh);
+  std::string body;
+  body.reserve(30 * 3 * mesh.triangles.size() / 2 + 32);
+  std::int64_t count = 0;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t across = mesh.neighbours[t][static_cast<std::size_t>(i)];
+      if (across != no_index && across < t) continue;
+      const std::uint32_t a = mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)];
+      const std::uint32_t b = mesh.triangles[t][static_cast<std::size_t>((i + 2) % 3)];
+      const int marker = across == no_index ? detail::boundary_marker(markers, a, b) : 0;
+      line(body, count + first_index, std::int64_t{a} + first_index, std::int64_t{b} + first_index, marker);
+      ++count;
+    }
+  }
+  std::string out;
+  line(out, count, 1);
+  return out + body;
+}
+
+namespace {
+
+// The global vertices of subdomain k's triangles, in increasing index: its
+// piece's local numbering (local id = position + first_index).
+std::vector<std::uint32_t> subdomain_vertices(const Mesh& mesh, std::uint32_t k) {
+  std::vector<std::uint32_t> vertices;
+  for (std::uint32_t t = mesh.subdomain_first_triangle.at(k); t < mesh.subdomain_first_triangle.at(k + 1); ++t)
+    vertices.insert(vertices.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+} // namespace
+
+std::string format_subdomain_mesh_node(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+  detail::check_first_index(first_index);
+  const std::vector<std::uint32_t> vertices = subdomain_vertices(mesh, k);
+  std::string out;
+  out.reserve(56 * vertices.size() + 32);
+  line(out, vertices.size(), 2, 1, 1);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const std::uint32_t g = vertices[i];
+    const int marker = g < mesh.point_markers.size() ? mesh.point_markers[g] : 0;
+    line(out, i + first_index, mesh.points[g].x, mesh.points[g].y, std::int64_t{g} + first_index, marker);
+  }
+  return out;
+}
+
+std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+  detail::check_first_index(first_index);
+  const std::vector<std::uint32_t> vertices = subdomain_vertices(mesh, k);
+  const auto id_of = [&](std::uint32_t g) {
+    const auto at = std::lower_bound(vertices.begin(), vertices.end(), g) - vertices.begin();
+    return static_cast<std::int64_t>(at) + first_index;
+  };
+  const std::uint32_t first = mesh.subdomain_first_triangle[k], end = mesh.subdomain_first_triangle[k + 1];
+  std::string out;
+  out.reserve(40 * (end - first) + 32);
+  line(out, end - first, 3, 1);
+  for (std::uint32_t t = first; t < end; ++t)
+    append_triangle_line(out, std::int64_t{t - first} + first_index, mesh.triangles[t], id_of, k);
+  return out;
+}
+
+} // namespace madd
