@@ -115,6 +115,12 @@ struct MeshReport {
   std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance")
 };
 
+// The ranges of the mesh options (min_angle_deg in [0, 60), max_area finite
+// and >= 0, background samples finite with areas > 0); throws OptionError
+// naming the field. mesh() calls it; the decomposition options are checked by
+// decompose().
+void check_options(const MeshOptions& options);
+
 // The largest allowed area at p under `size` (+infinity when unbounded).
 double area_bound_at(const MeshSizeOptions& size, Point p);
 

@@ -21,9 +21,7 @@
 
 namespace madd {
 
-namespace {
-
-void check_mesh_options(const MeshOptions& options) {
+void check_options(const MeshOptions& options) {
   const MeshSizeOptions& s = options.size;
   if (!(s.min_angle_deg >= 0 && s.min_angle_deg < 60))
     throw OptionError("min_angle_deg", "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
@@ -33,6 +31,8 @@ void check_mesh_options(const MeshOptions& options) {
       throw OptionError("background_areas", "every sample must have finite coordinates and a finite area > 0");
   }
 }
+
+namespace {
 
 unsigned thread_count(unsigned asked, std::size_t work) {
   unsigned n = asked ? asked : std::max(1u, std::thread::hardware_concurrency());
@@ -98,7 +98,7 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
 
 Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                         MeshReport& report) {
-  check_mesh_options(options);
+  check_options(options);
   detail::Stopwatch clock;
   const Decomposition d = discretise(decomposition, options.size);
   report.phases.push_back({"discretise", clock.lap()});
@@ -119,7 +119,7 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
 }
 
 Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report) {
-  check_mesh_options(options);
+  check_options(options);
   detail::Stopwatch clock;
   DecomposeOptions dopt = options.decomposition;
   const detail::SizeField field(options.size);
