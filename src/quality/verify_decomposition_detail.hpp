@@ -39,6 +39,13 @@ void check_segments_disjoint(const std::vector<Point>& points, const std::vector
 // because of those rounded vertices (0 when every one is exactly on its segment).
 double check_boundary_pieces(const Decomposition& d, const Pslg& domain, ProblemLog& log);
 
+// A bound on |cross(b - a, p - a)| (exact) for every vertex p that
+// interpolation put on input segment ab cut into `pieces` pieces: how far
+// rounding can move such a vertex off the line ab, times |b - a|. Derived in
+// verify_decomposition_pieces.cpp; verify_mesh applies it to the mesh's
+// boundary edges, whose vertices are placed the same way.
+double off_line_bound(Point a, Point b, std::size_t pieces) noexcept;
+
 // "(x, y)" with full precision, for messages.
 std::string point_text(Point p);
 

@@ -14,8 +14,8 @@
 namespace madd::detail {
 
 namespace {
-
 constexpr double eps = 0x1p-53;  // unit roundoff
+} // namespace
 
 // How far a vertex on a piece of input segment ab may lie from the line ab,
 // times |b - a|: a bound on |cross(b - a, p - a)| over the vertices of the k
@@ -50,6 +50,8 @@ double off_line_bound(Point a, Point b, std::size_t pieces) noexcept {
   const double feedback = 7.0 * k * eps * (W + H + X0 + Y0) * (W + H);
   return rounded_up(k * (2.0 * eps) * ((W + X0) * H + (H + Y0) * W + feedback), 16);
 }
+
+namespace {
 
 std::string piece_text(std::uint32_t g) { return "boundary piece " + std::to_string(g); }
 

@@ -1,0 +1,47 @@
+#pragma once
+// Internals of verify_mesh(), split by concern. Every check after
+// check_mesh_shape relies on the indices it has checked being in range.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kernel/exact_sum.hpp"
+#include "madd/mesh.hpp"
+#include "quality/verify_decomposition_detail.hpp"
+
+namespace madd::detail {
+
+// "triangle t (subdomain k) (x, y) (x, y) (x, y)", for messages.
+std::string mesh_triangle_text(const Mesh& mesh, std::uint32_t t);
+
+// What the edge pass (verify_mesh_edges.cpp) leaves for the later checks.
+struct MeshEdges {
+  // Twice the triangles' total signed area, exactly.
+  ExactSum twice_area;
+  // Every edge found in exactly one triangle, directed as that triangle has it.
+  std::vector<Segment> boundary;
+};
+
+// Adjacency, conformity across subdomains, boundary edges = boundary
+// segments, constrained Delaunay within each subdomain; one pass over the
+// edges grouped by their lower vertex. ccw[t] != 0 when triangle t is
+// strictly counter-clockwise (the in-circle test needs it).
+MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log);
+
+// The mesh segments against the decomposition and the input: markers, each
+// decomposition segment covered by one chain of its mesh segments, each input
+// segment by one chain of boundary segments near it, the points' markers.
+// Returns the bound on twice the area between the boundary chains and the
+// input segments (for the cover check).
+double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log);
+
+// No triangle vertex strictly inside an edge that only one triangle has.
+void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& boundary, ProblemLog& log);
+
+// Every triangle within the size bound at its centroid.
+void check_mesh_size(const Mesh& mesh, const MeshSizeOptions& size, ProblemLog& log);
+
+// The triangles below the angle bound are exactly as many as the shortfall counts.
+void check_mesh_angles(const Mesh& mesh, ProblemLog& log);
+
+} // namespace madd::detail

@@ -1,0 +1,48 @@
+// verify_mesh, hanging vertices: no triangle vertex lies strictly inside an
+// edge that only one triangle has (the long side of a T-junction, where the
+// triangle across was split and this one was not). Exact: orient2d decides
+// that the vertex is on the edge's line, coordinate comparisons that it is
+// strictly between the ends. The free edges go into the uniform segment grid
+// (kernel/segment_grid.hpp), which lists each in every cell it may pass
+// through, so each vertex is tested against the few edges of its own cell:
+// near-linear in the vertices plus the free edges.
+#include <algorithm>
+
+#include "kernel/segment_grid.hpp"
+#include "madd/predicates.hpp"
+#include "quality/verify_mesh_detail.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+// p strictly between a and b, given that the three are collinear.
+bool strictly_between(Point a, Point b, Point p) noexcept {
+  if (a.x != b.x) return std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x);
+  return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
+}
+
+} // namespace
+
+void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary, ProblemLog& log) {
+  if (boundary.empty()) return;
+  const auto& P = m.points;
+  std::vector<std::uint8_t> vertex(P.size(), 0);
+  for (const auto& c : m.triangles)
+    for (const std::uint32_t v : c) vertex[v] = 1;
+  const SegmentGrid grid(P, boundary);
+  for (std::uint32_t v = 0; v < P.size(); ++v) {
+    if (vertex[v] == 0 || !grid.contains(P[v])) continue;
+    const std::uint32_t col = grid.col_of(P[v].x);
+    for (const SegmentGrid::Entry& e : grid.row_range(grid.row_of(P[v].y), col, col)) {
+      const Segment& s = boundary[e.segment];
+      if (s.a == v || s.b == v) continue;
+      if (orient2d(P[s.a], P[s.b], P[v]) == 0.0 && strictly_between(P[s.a], P[s.b], P[v]))
+        log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " + std::to_string(s.a) + "-" +
+                std::to_string(s.b) + " " + point_text(P[s.a]) + "-" + point_text(P[s.b]) +
+                ", which only one triangle has (a hanging vertex)");
+    }
+  }
+}
+
+} // namespace madd::detail

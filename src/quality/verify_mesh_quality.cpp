@@ -1,0 +1,79 @@
+// verify_mesh, the quality bounds: every triangle within the size bound at
+// its centroid, and the triangles below the angle bound exactly as many as
+// the shortfall counts.
+#include <cmath>
+#include <limits>
+
+#include "kernel/number_format.hpp"
+#include "quality/area_bound.hpp"
+#include "quality/mesh_angle.hpp"
+#include "quality/verify_mesh_detail.hpp"
+
+namespace madd::detail {
+
+// A triangle is too large when twice its area exceeds twice its bound by
+// more than the rounding of both computations of the area, this one and the
+// mesher's:
+// - the area is computed here as |cross(b - a, c - a)| / 2 in doubles; with
+//   each difference and product rounded, it is within 4u (|u.x v.y| + |u.y v.x|)
+//   <= 8u L^2 of twice the exact area (u = 2^-53, L the longest edge); the
+//   mesher's own formula, at whatever corner, is within the same kind of
+//   bound, so 16u L^2 (doubled: 32u L^2 on twice the area) covers the two.
+//   For a well-shaped triangle that is ~1e-14 relative; it only matters for
+//   flat ones, where the rounded area is mostly noise;
+// - the relative 1e-12 on the bound is room for the mesher reaching the same
+//   bound through other roundings: a bound computed once and scaled, the
+//   function evaluated at a centroid formed another way (a few ulps off).
+//   Both use triangle_centroid and area_bound_at; a bound that differs by
+//   more than this is another bound, not rounding.
+void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, ProblemLog& log) {
+  if (!size.has_size_bound()) return;
+  constexpr double u = 0x1p-53;
+  const AreaBound bound_at(size);
+  const auto& P = m.points;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
+    const double bound = bound_at.at(triangle_centroid(a, b, c));
+    if (!(bound < std::numeric_limits<double>::infinity())) continue;
+    const Point ab = b - a, ac = c - a, bc = c - b;
+    const double twice = std::abs(cross(ab, ac));
+    const double longest2 = std::max({dot(ab, ab), dot(ac, ac), dot(bc, bc)});
+    if (twice > 2.0 * bound * (1.0 + 1e-12) + 32.0 * u * longest2)
+      log.add(mesh_triangle_text(m, t) + " has area " + number_text(0.5 * twice) + ", above the size bound " +
+              number_text(bound) + " at its centroid");
+  }
+}
+
+// The angle measure is smallest_angle_deg (quality/mesh_angle.hpp), the one
+// the mesher's shortfall count must use too; a triangle counts when it is
+// below min_angle_deg by more than mesh_angle_slack_deg.
+void check_mesh_angles(const Mesh& m, ProblemLog& log) {
+  const double below = m.min_angle_deg - mesh_angle_slack_deg;
+  std::size_t count = 0;
+  double worst = std::numeric_limits<double>::infinity();
+  std::uint32_t worst_t = no_index;
+  const auto& P = m.points;
+  const std::size_t claimed = m.shortfall.total();
+  // No angle is below a bound <= 0 (a mesh with no angle bound): then the
+  // angles are only measured to name the worst triangle of a wrong count.
+  if (below > 0.0 || claimed > 0) {
+    for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+      const double angle = smallest_angle_deg(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]);
+      if (angle < below) ++count;
+      if (angle < worst) {
+        worst = angle;
+        worst_t = t;
+      }
+    }
+  }
+  if (count == claimed) return;
+  std::string text = std::to_string(count) + " triangles have a smallest angle below the bound " +
+                     number_text(m.min_angle_deg) + " deg, but the shortfall counts " + std::to_string(claimed) + " (" +
+                     std::to_string(m.shortfall.input_angle) + " input angle, " + std::to_string(m.shortfall.separator) +
+                     " separator, " + std::to_string(m.shortfall.precision) + " precision, " +
+                     std::to_string(m.shortfall.limit) + " limit)";
+  if (worst_t != no_index) text += "; the smallest angle is " + number_text(worst) + " deg, of " + mesh_triangle_text(m, worst_t);
+  log.add(text);
+}
+
+} // namespace madd::detail
