@@ -26,6 +26,9 @@ namespace {
 // adds per factor e of size change along one piece.
 constexpr double kappa = 0.5;
 constexpr double nu = 2.0;
+// Balance by work only when the boundary's triangles are at least this
+// share of the interior's (below it the area says as much).
+constexpr double boundary_share_for_work = 0.1;
 
 double piece_work(Point a, Point b, double area_bound, double fallback_edge) {
   const double length = distance(a, b);
@@ -80,6 +83,14 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeFiel
     samples.push_back({m, std::isfinite(bound) ? w * kappa * bound : w});
     total += w;
   }
+  // Where the boundary adds little to the interior's triangles, the area is
+  // as good a measure of work, and an area-balanced decomposition is
+  // rebalanced (DecomposeOptions::rebalance_above) where a graded one is
+  // not: keep the areas then.
+  const double interior = size.bounded() && std::isfinite(size.area_at(samples.empty() ? Point{} : samples[0].at))
+                              ? area / (kappa * size.area_at(samples[0].at))
+                              : 0.0;
+  if (size.bounded() && total < boundary_share_for_work * interior) return;
   if (!size.bounded()) {
     for (ValuedPoint& v : samples) v.value *= 100.0 * area / std::max(total, 1.0);
   }
