@@ -22,6 +22,7 @@
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
+#include "madd/mesh.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
 #include "madd/output_formats.hpp"
@@ -64,6 +65,10 @@ constexpr const char* decompose_help =
     "      --time-limit S     give up (exit 6, nothing written) after S seconds (default 0 = none)\n"
     "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
     "                         (default 0 = none; checked before every split)\n"
+    "      --max-area A       write the outputs with every segment split for meshes of\n"
+    "                         triangle area <= A (the decoupling, docs/mesh.md): --split's\n"
+    "                         files, meshed one by one by `triangle -pq30Y`, join up\n"
+    "      --size-fn EXPR     the same, the largest area at (x, y) given by EXPR\n"
     "      --no-verify        skip the self-check (verify_decomposition) before writing\n\n"
     "outputs (none by default; see docs/formats.md):\n"
     "  -o FILE.poly           the whole decomposition as one .poly, one region per subdomain\n"
@@ -95,6 +100,7 @@ struct DecomposeArgs {
   bool verbose = false;
   bool verify = true;  // --no-verify turns the self-check off
   std::string weights_file, areas_file;  // --weights, --areas: read with the domain
+  MeshSizeOptions discretise;  // --max-area, --size-fn: outputs with the boundaries discretised (docs/mesh.md)
   std::map<std::string, std::string> typed;  // option field -> the value as typed, for messages
 };
 
@@ -232,7 +238,13 @@ int decompose_body(void* context) {
   const Metrics m = metrics(d, times);
   progress.say("writing");
   writing_outputs = 1;
-  write_outputs(args, d, m);
+  // For external meshers: every segment split once to the size bound and the
+  // local feature size, so that meshers keeping boundary segments join up.
+  if (args.discretise.has_size_bound()) {
+    write_outputs(args, discretise(d, args.discretise), m);
+  } else {
+    write_outputs(args, d, m);
+  }
   writing_outputs = 0;
   progress.done();
   const bool report_on_stdout = args.report && args.report_out.empty();
@@ -256,7 +268,7 @@ bool parse_count(const char* text, unsigned long long limit, unsigned long long&
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,
                       opt_svg_mark, opt_report, opt_geo, opt_vtk, opt_geojson, opt_time_limit, opt_max_memory, opt_no_verify, opt_rebalance, opt_adaptive_refine,
-                      opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound };
+                      opt_weight_fn, opt_area_fn, opt_weights, opt_areas, opt_area_bound, opt_max_area, opt_size_fn };
 
 std::string set_function(const char* text, std::function<double(double, double)>& out) {
   try {
@@ -306,6 +318,11 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
     return {};
   case opt_weight_fn: return set_function(arg, o.weight_function);
   case opt_area_fn: return set_function(arg, o.area_function);
+  case opt_max_area:
+    if (!parse_number(arg, x) || !(x > 0)) return "--max-area needs an area > 0";
+    args.discretise.max_area = x;
+    return {};
+  case opt_size_fn: return set_function(arg, args.discretise.area_function);
   case opt_weights: args.weights_file = arg; return {};
   case opt_areas: args.areas_file = arg; return {};
   case 'o': args.poly_out = arg; return {};
@@ -393,6 +410,8 @@ int run_decompose(int argc, char** argv) {
       {"weights", required_argument, nullptr, opt_weights},
       {"areas", required_argument, nullptr, opt_areas},
       {"area-bound", required_argument, nullptr, opt_area_bound},
+      {"max-area", required_argument, nullptr, opt_max_area},
+      {"size-fn", required_argument, nullptr, opt_size_fn},
       {"quiet", no_argument, nullptr, 'q'},
       {"verbose", no_argument, nullptr, 'v'},
       {"help", no_argument, nullptr, 'h'},

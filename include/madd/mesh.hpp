@@ -41,7 +41,7 @@ struct MeshOptions {
   // decomposition.threads is also the number of meshing threads (-j).
   DecomposeOptions decomposition;
   MeshSizeOptions size;
-  // Balance by work (docs/mesh.md, "Balance"): decompose by the expected
+  // Balance by work (docs/mesh.md, "Balance by work"): decompose by the expected
   // triangle count of each subdomain rather than its area. Only when the
   // decomposition options give no weights of their own.
   bool balance_by_work = true;
@@ -112,7 +112,7 @@ struct MeshReport {
   std::vector<PhaseTime> phases;          // "decompose", "discretise", "refine", "merge", "verify"
   std::vector<double> thread_seconds;     // busy time of each meshing thread
   std::vector<double> subdomain_seconds;  // time to mesh each subdomain
-  std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance")
+  std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance by work")
 };
 
 // The ranges of the mesh options (min_angle_deg in [0, 60), max_area finite

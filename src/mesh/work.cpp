@@ -21,10 +21,10 @@ namespace madd::detail {
 
 namespace {
 
-// Measured (docs/mesh.md, "Balance by work"): the mean triangle area of a
+// docs/mesh.md, "Balance by work": the mean triangle area of a
 // mesh refined to an area bound A, over A; and the triangles one graded layer
 // adds per factor e of size change along one piece.
-constexpr double kappa = 0.5;
+constexpr double kappa = 0.64;
 constexpr double nu = 2.0;
 // Balance by work only when the boundary's triangles are at least this
 // share of the interior's (below it the area says as much).
