@@ -120,13 +120,16 @@ std::vector<double> smallest_angles(const Mesh& m) {
 // A k x k square of unit cells, each cut into two triangles, in `strips`
 // vertical strips (the subdomains) of k / strips columns each; built
 // directly, without the fixture's map, so that it can be large. Every point
-// is exactly on its segment.
+// is exactly on its segment. Square cells are cocircular (every in-circle
+// test is the exact, slow case); `sheared` moves lattice point (i, j) to
+// (i - j / 2, j), cells become parallelograms cut along their short
+// diagonal, strictly Delaunay, with smallest angles of 53.13 degrees.
 struct GridMesh {
   Pslg domain;
   Mesh mesh;
 };
 
-GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips) {
+GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) {
   GridMesh g;
   const double K = k;
   g.domain.points = {{0, 0}, {K, 0}, {K, K}, {0, K}};
@@ -227,6 +230,11 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips) {
                             d.segments[p].marker, p});
     }
   }
+  if (sheared) {
+    m.min_angle_deg = 53.0;
+    for (auto* points : {&m.points, &d.points, &g.domain.points})
+      for (Point& p : *points) p.x -= 0.5 * p.y;
+  }
   return g;
 }
 
@@ -260,6 +268,11 @@ TEST_CASE("verify_mesh: a synthetic grid mesh passes at its exact bounds") {
   CHECK(v.ok());
   size.max_area = 0.4999;
   CHECK(mentions(madd::verify_mesh(g.mesh, g.domain, size), "above the size bound"));
+  GridMesh sheared = grid_mesh(40, 4, true);
+  size.max_area = 0.5;
+  CHECK(madd::verify_mesh(sheared.mesh, sheared.domain, size).ok());
+  sheared.mesh.min_angle_deg = 53.2;  // above 53.13: every triangle short
+  CHECK(mentions(madd::verify_mesh(sheared.mesh, sheared.domain, size), "3200 triangles have a smallest angle below"));
 }
 
 TEST_CASE("verify_mesh: a flipped triangle") {
@@ -621,7 +634,7 @@ TEST_CASE("verify_mesh: time on a large synthetic mesh") {
   // strips; the default keeps the test quick.
   const char* env = std::getenv("MADD_VERIFY_MESH_GRID");
   const std::uint32_t k = env != nullptr ? static_cast<std::uint32_t>(std::atoi(env)) : 200;
-  const GridMesh g = grid_mesh(k, 8);
+  const GridMesh g = grid_mesh(k, 8, true);
   MeshSizeOptions size;
   size.max_area = 0.5;
   const auto start = std::chrono::steady_clock::now();
