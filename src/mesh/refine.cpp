@@ -28,6 +28,7 @@
 #include "madd/error.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/refinement_mesh.hpp"
+#include "quality/mesh_angle.hpp"
 
 namespace madd::detail {
 
@@ -351,9 +352,10 @@ MeshShortfall Refiner::shortfall() const {
   MeshShortfall f;
   for (std::uint32_t t = 0; t < m_.slot_count(); ++t) {
     if (!m_.alive(t)) continue;
-    const TriangleShape s =
-        shape_of(m_.point(m_.corner(t, 0)), m_.point(m_.corner(t, 1)), m_.point(m_.corner(t, 2)));
-    if (!too_skinny(s)) continue;
+    // Counted with verify_mesh's own measure, so the two always agree.
+    if (smallest_angle_deg(m_.point(m_.corner(t, 0)), m_.point(m_.corner(t, 1)), m_.point(m_.corner(t, 2))) >=
+        settings_.min_angle_deg - mesh_angle_slack_deg)
+      continue;
     switch (t < reason_.size() ? reason_[t] : Reason::none) {
       case Reason::input_angle: ++f.input_angle; break;
       case Reason::separator: ++f.separator; break;
