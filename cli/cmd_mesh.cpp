@@ -321,7 +321,10 @@ int run_mesh(int argc, char** argv) {
     check_options(args.options.decomposition);
     check_options(args.options);
   } catch (const OptionError& e) {
-    return usage_error("mesh", e.what());
+    // Said with the CLI's names of the mesh options.
+    const std::string field = e.option();
+    const char* name = field == "min_angle_deg" ? "-q" : field == "max_area" ? "-a" : field == "background_areas" ? "--sizes" : nullptr;
+    return usage_error("mesh", name ? std::string(name) + " " + e.requirement() : std::string(e.what()));
   }
   return run_guarded("mesh", mesh_body, &args);
 }

@@ -245,6 +245,34 @@ TEST_CASE("triangulate: a .poly without segments is a point set, as a .node is")
   CHECK(!fs::exists(dir / "h.1.ele"));
 }
 
+TEST_CASE("mesh: writes every format asked for, the same for -j 1 and -j 2, and refuses bad options with nothing written") {
+  const Scratch dir("mesh");
+  const std::string pipe = "'" MADD_DATA_DIR "/pipe.poly'";
+  const Result one = run_madd(dir, "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 1 -o one --msh --vtu --split-mesh parts --report=r.json");
+  REQUIRE_MESSAGE(one.code == 0, one.err);
+  CHECK(has(one.out, "4 subdomains"));
+  for (const char* ext : {".node", ".ele", ".neigh", ".edge", ".msh", ".vtu"}) {
+    CAPTURE(ext);
+    CHECK(!slurp(dir / (std::string("one") + ext)).empty());
+  }
+  CHECK(fs::exists(dir / "parts" / "one-0.ele"));
+  CHECK(fs::exists(dir / "parts" / "one-3.node"));
+  CHECK(has(slurp(dir / "r.json"), "\"share_below_bound\": 0,"));
+  const Result two = run_madd(dir, "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 2 -o two --quiet");
+  REQUIRE_MESSAGE(two.code == 0, two.err);
+  CHECK(two.out.empty());
+  CHECK(slurp(dir / "two.ele") == slurp(dir / "one.ele"));
+  CHECK(slurp(dir / "two.node") == slurp(dir / "one.node"));
+  for (const char* bad : {"-q 60", "-a -1", "-a x", "--balance speed", "-n 0"}) {
+    CAPTURE(bad);
+    const Result r = run_madd(dir, "mesh " + pipe + " " + bad + " -o bad");
+    CHECK(r.code == 2);
+    CHECK(has(r.err, "madd mesh: "));
+    CHECK(line_count(r.err) == 2);  // the problem, then where help is
+    CHECK(!fs::exists(dir / "bad.ele"));
+  }
+}
+
 TEST_CASE("check FILE.node validates and summarises a point set") {
   const Scratch dir("check-node");
   const std::vector<madd::Point> pts = square_points();

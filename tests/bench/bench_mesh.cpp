@@ -192,7 +192,9 @@ int run_mesh(int argc, char** argv) {
     }
     const std::string name = fs::path(file).stem().string();
     for (const unsigned threads : thread_counts) {
-      Row row{name, threads};
+      Row row;
+      row.file = name;
+      row.threads = threads;
       options.decomposition.threads = threads;
       std::vector<double> times;
       std::map<std::string, std::vector<double>> phase_times;
