@@ -27,19 +27,41 @@ namespace {
 // Parameters in (0, 1) of the split points of segment j, from its lower-index
 // end: the integral of 1/h, sampled and summed by the trapezoid rule, split
 // into equal shares.
+// The target length at p on segment j, before grading from the ends.
+double local_target(Point p, std::uint32_t j, const SizeField& size, const FeatureDistance& features) {
+  double h = feature_factor * features.to_nonincident(p, j);
+  if (size.bounded()) {
+    const double area = size.area_at(p);
+    if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
+  }
+  return h;
+}
+
+// Per vertex: the smallest target length of the segments meeting there, at
+// that end. A piece next to a vertex is then no longer than the shortest
+// piece of any other segment there, plus the grading: where a separator
+// (whose local feature size ignores the boundary it ends on) meets short
+// boundary pieces, its first pieces are short too, and the triangle between
+// them has no reason to be skinny (docs/mesh.md, "Decoupling").
+std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size, const FeatureDistance& features) {
+  std::vector<double> out(d.points.size(), std::numeric_limits<double>::infinity());
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
+    const Segment& s = d.segments[j];
+    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], j, size, features));
+    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], j, size, features));
+  }
+  return out;
+}
+
 std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const SizeField& size,
-                                     const FeatureDistance& features) {
+                                     const FeatureDistance& features, const std::vector<double>& at_vertex) {
   const Segment& s = d.segments[j];
-  const Point a = d.points[std::min(s.a, s.b)], b = d.points[std::max(s.a, s.b)];
+  const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
+  const Point a = d.points[lo], b = d.points[hi];
   const double length = distance(a, b);
   const auto target = [&](double t) {
-    const Point p = lerp(a, b, t);
-    double h = feature_factor * features.to_nonincident(p, j);
-    if (size.bounded()) {
-      const double area = size.area_at(p);
-      if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
-    }
-    return h;
+    const double graded = std::min(at_vertex[lo] + grading * t * length, at_vertex[hi] + grading * (1 - t) * length);
+    return std::min(local_target(lerp(a, b, t), j, size, features), graded);
   };
   std::vector<double> density;  // 1/h at the samples, in units of pieces per segment length
   std::size_t samples = 16;
@@ -88,6 +110,7 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size) {
   const detail::SizeField field(size);
   const detail::FeatureDistance features(decomposition.points, decomposition.segments);
+  const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features);
   Decomposition out = decomposition;
   out.segments.clear();
   out.segment_origin.clear();
@@ -97,7 +120,7 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
     const Segment& s = decomposition.segments[j];
     const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
     std::uint32_t from = lo;
-    for (const double t : detail::split_parameters(decomposition, j, field, features)) {
+    for (const double t : detail::split_parameters(decomposition, j, field, features, at_vertex)) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));

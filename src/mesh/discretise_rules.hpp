@@ -16,6 +16,11 @@ inline constexpr double size_factor = 1.18;
 // and the vertices refinement puts near them are spaced like the pieces.
 inline constexpr double feature_factor = 0.5;
 
+// Along a segment the target length grows from its ends' targets by at
+// most this much per unit of length (half the local feature size's own
+// Lipschitz bound of 1), so neighbouring pieces differ by a bounded factor.
+inline constexpr double grading = 0.5;
+
 // A bound on the split points of one segment (a size bound many orders of
 // magnitude below the segment's length is refused as a limit elsewhere).
 inline constexpr std::size_t max_pieces_per_segment = std::size_t{1} << 24;

@@ -74,6 +74,7 @@ private:
   Reason input_angle_rule(std::uint32_t t, const TriangleShape& s) const;
   Point insertion_point(std::uint32_t t, const TriangleShape& s) const;
   void try_triangle(std::uint32_t t);
+  bool insert_nearer(std::uint32_t t, const TriangleShape& s, Point p);
   bool split_subsegment(std::uint32_t a, std::uint32_t b);
   double split_parameter(std::uint32_t h) const;
   bool at_sharp_corner(std::uint32_t h) const;
@@ -319,7 +320,38 @@ void Refiner::try_triangle(std::uint32_t t) {
     }
     return;
   }
+  if (separator && insert_nearer(t, s, p)) return;
   reason_[t] = separator ? Reason::separator : encroached.empty() ? Reason::precision : Reason::input_angle;
+}
+
+// A point that would encroach a separator: try points nearer the shortest
+// edge on the same bisector (the triangle they make on that edge has an
+// apex angle above the bound, so it is good), kept when they encroach
+// nothing. A separator is never split, so this is the only way to fix the
+// triangle; the points stay at least 0.82 x the short edge from its ends
+// (0.35 of the way from the edge to the off-centre, which is at least 1.86 x
+// the edge away), so they make no edge much shorter than the one fixed.
+bool Refiner::insert_nearer(std::uint32_t t, const TriangleShape& s, Point p) {
+  const int k = s.shortest;
+  const Point mid = midpoint(m_.point(m_.corner(t, (k + 1) % 3)), m_.point(m_.corner(t, (k + 2) % 3)));
+  for (const double f : {0.6, 0.35}) {
+    const Point q = mid + f * (p - mid);
+    const RefinementMesh::Walk w = m_.walk(t, q);
+    if (w.triangle == no_index || !m_.prepare(w.triangle, q)) continue;
+    bool clear = true;
+    for (const std::uint32_t h : m_.rim_segments()) {
+      if (dot(m_.point(m_.origin(h)) - q, m_.point(m_.dest(h)) - q) < 0) clear = false;
+    }
+    if (!clear) {
+      m_.abandon();
+      continue;
+    }
+    m_.commit();
+    ++steiner_;
+    queue_fresh();
+    return true;
+  }
+  return false;
 }
 
 void Refiner::run() {
