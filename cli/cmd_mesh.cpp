@@ -53,6 +53,8 @@ constexpr const char* mesh_help =
     "      --min-angle DEG    Phi0, the smallest angle a separator makes (default 60)\n"
     "  -j, --threads T        threads, 0 = all cores (default 0); the mesh is identical\n"
     "      --seed S           random seed of the decomposition (default 1)\n"
+    "      --time-limit S     give up (exit 6, nothing written) after S seconds (default none)\n"
+    "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
     "outputs:\n"
     "  -o, --output PREFIX    PREFIX.node, .ele, .neigh, .edge (default: INPUT without .poly)\n"
     "      --msh              also PREFIX.msh (gmsh 4.1: a physical surface per subdomain)\n"
@@ -212,7 +214,7 @@ int mesh_body(void* context) {
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_size_fn, opt_sizes, opt_balance, opt_no_off_centres, opt_msh,
-                      opt_vtu, opt_split_mesh, opt_report, opt_quiet };
+                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory };
 
 std::string apply_option(int c, const char* arg, MeshArgs& args) {
   double x = 0;
@@ -258,6 +260,14 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     if (!parse_count(arg, ~0ull, k)) return "--seed needs a whole number";
     o.decomposition.seed = k;
     return {};
+  case opt_time_limit:
+    if (!parse_number(arg, x) || x < 0) return "--time-limit needs seconds >= 0";
+    o.decomposition.time_limit_seconds = x;
+    return {};
+  case opt_max_memory:
+    if (!parse_number(arg, x) || x < 0 || x > 1e12) return "--max-memory needs megabytes in [0, 1e12]";
+    o.decomposition.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
+    return {};
   case 'o': args.prefix = arg; return {};
   case opt_msh: args.formats.msh = true; return {};
   case opt_vtu: args.formats.vtu = true; return {};
@@ -283,6 +293,8 @@ int run_mesh(int argc, char** argv) {
       {"min-angle", required_argument, nullptr, opt_min_angle},
       {"threads", required_argument, nullptr, 'j'},
       {"seed", required_argument, nullptr, opt_seed},
+      {"time-limit", required_argument, nullptr, opt_time_limit},
+      {"max-memory", required_argument, nullptr, opt_max_memory},
       {"output", required_argument, nullptr, 'o'},
       {"msh", no_argument, nullptr, opt_msh},
       {"vtu", no_argument, nullptr, opt_vtu},

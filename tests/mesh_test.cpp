@@ -197,3 +197,16 @@ TEST_CASE("mesh: refuses an angle bound of 60 degrees or more and a negative are
   CHECK_THROWS_AS(madd::mesh(domain, options_for(2, 60, 0)), madd::OptionError);
   CHECK_THROWS_AS(madd::mesh(domain, options_for(2, 30, -1)), madd::OptionError);
 }
+
+TEST_CASE("mesh: a time or memory limit reached while refining throws LimitError, nothing returned") {
+  const madd::Pslg domain = pipe();
+  // The decomposition is quick; refinement to a tiny area is not: the limit is met while refining.
+  madd::MeshOptions o = options_for(2, 30, 1e-6);
+  madd::MeshReport report;
+  const madd::Decomposition d = madd::decompose(domain, o.decomposition);
+  o.decomposition.time_limit_seconds = 1e-9;
+  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o, report), madd::LimitError);
+  o.decomposition.time_limit_seconds = 0;
+  o.decomposition.max_memory_bytes = 1;
+  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o, report), madd::LimitError);
+}

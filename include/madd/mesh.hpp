@@ -38,7 +38,9 @@ struct MeshSizeOptions {
 
 struct MeshOptions {
   // How the domain is decomposed first (N, Phi0, threads, limits...).
-  // decomposition.threads is also the number of meshing threads (-j).
+  // decomposition.threads is also the number of meshing threads (-j), and
+  // its time and memory limits apply to meshing as well (checked every few
+  // thousand new vertices of each subdomain; LimitError, nothing returned).
   DecomposeOptions decomposition;
   MeshSizeOptions size;
   // Balance by work (docs/mesh.md, "Balance by work"): decompose by the expected

@@ -12,6 +12,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
 #include "madd/mesh.hpp"
 #include "mesh/merge.hpp"
@@ -43,7 +44,7 @@ unsigned thread_count(unsigned asked, std::size_t work) {
 // ones to finish are small; results land in their own slots.
 std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const MeshOptions& options,
                                               const detail::SizeField& field, const std::vector<double>& work,
-                                              MeshReport& report) {
+                                              const detail::ResourceGuard& guard, MeshReport& report) {
   const std::uint32_t n = static_cast<std::uint32_t>(d.subdomains.size());
   std::vector<detail::SubdomainMesh> out(n);
   std::vector<std::uint32_t> order(n);
@@ -53,6 +54,7 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
   settings.min_angle_deg = options.size.min_angle_deg;
   settings.size = field.bounded() ? &field : nullptr;
   settings.off_centres = options.off_centres;
+  settings.guard = &guard;
   const unsigned threads = thread_count(options.decomposition.threads, n);
   report.thread_seconds.assign(threads, 0.0);
   report.subdomain_seconds.assign(n, 0.0);
@@ -70,6 +72,7 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
         detail::Stopwatch clock;
         const detail::LocalDomain local = detail::local_domain(d, k);
         detail::RefineSettings mine = settings;
+        mine.meshed = &done;
         mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
         out[k] = detail::refine_subdomain(local.pslg, local.splittable, mine);
         const double s = clock.lap();
@@ -100,11 +103,13 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
                         MeshReport& report) {
   check_options(options);
   detail::Stopwatch clock;
+  const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
+                                     static_cast<std::uint32_t>(decomposition.subdomains.size())});
   const Decomposition d = discretise(decomposition, options.size);
   report.phases.push_back({"discretise", clock.lap()});
   const detail::SizeField field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
-  std::vector<detail::SubdomainMesh> pieces = refine_all(d, options, field, report.expected_triangles, report);
+  std::vector<detail::SubdomainMesh> pieces = refine_all(d, options, field, report.expected_triangles, guard, report);
   report.phases.push_back({"refine", clock.lap()});
   Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
   report.phases.push_back({"merge", clock.lap()});

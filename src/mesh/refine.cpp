@@ -97,6 +97,7 @@ private:
   std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
   std::size_t steiner_ = 0;
   bool out_of_budget_ = false;
+  std::size_t next_check_ = 8192;  // steiner_ at the next resource check
 };
 
 void Refiner::find_sharp_corners() {
@@ -376,6 +377,10 @@ void Refiner::run() {
     queued_generation_[t] = std::numeric_limits<std::uint32_t>::max();
     if (!is_bad(t)) continue;
     if (settings_.max_steiner_points && steiner_ >= settings_.max_steiner_points) out_of_budget_ = true;
+    if (settings_.guard && steiner_ >= next_check_) {
+      settings_.guard->check(settings_.meshed ? settings_.meshed->load() : 0);
+      next_check_ = steiner_ + 8192;
+    }
     try_triangle(t);
   }
 }

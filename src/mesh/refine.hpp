@@ -6,11 +6,13 @@
 // Ruppert's segments, at powers of two from a sharp input corner
 // (concentric shells).
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
+#include "kernel/resource_limits.hpp"
 #include "mesh/size_field.hpp"
 
 namespace madd::detail {
@@ -20,6 +22,10 @@ struct RefineSettings {
   const SizeField* size = nullptr;  // the area bound (nullptr = none)
   bool off_centres = true;
   std::size_t max_steiner_points = 0;  // 0 = no budget
+  // Checked every few thousand new vertices: throws LimitError past the
+  // run's time or memory limit (nullptr = none).
+  const ResourceGuard* guard = nullptr;
+  const std::atomic<std::uint32_t>* meshed = nullptr;  // subdomains done so far, for the limit's message
 };
 
 // A subdomain mesh in local numbering: the input's points first, same
