@@ -5,8 +5,9 @@
 
 Reads PREFIX.node ("id x y [attrs] [marker]") and PREFIX.ele
 ("id a b c k": the one attribute k is the subdomain), as `madd mesh -o PREFIX`
-writes them. Subdomain k is filled with PALETTE[k % len(PALETTE)], so a
-separator shows as a change of colour. --box crops to a rectangle in mesh
+writes them. Each subdomain gets a colour of a fixed palette that no
+subdomain touching it has (greedy, in index order; --by-index:
+PALETTE[k % len]), so a separator shows as a change of colour. --box crops to a rectangle in mesh
 coordinates (the triangles meeting it are drawn, clipped to it). Coordinates
 are scaled to a picture --width pixels wide and rounded to 0.1 px (4-5
 significant digits), which keeps a picture of 40,000 triangles near 2 MB.
@@ -22,10 +23,30 @@ import sys
 # far apart in hue.
 PALETTE = [
     "#8dd3c7", "#fdb462", "#bebada", "#fb8072", "#80b1d3", "#b3de69",
-    "#fccde5", "#ffed6f", "#bc80bd", "#ccebc5", "#d9b38c", "#a6cee3",
-    "#f4a582", "#b2df8a", "#cab2d6", "#e5d8bd", "#92c5de", "#fdd0a2",
-    "#c7e9c0", "#f1b6da",
+    "#fccde5", "#ffed6f", "#bc80bd", "#d9b38c", "#66c2a5", "#e5e5e5",
 ]
+
+
+def colour_subdomains(triangles, count):
+    """Colour index of each subdomain: the least used so far of the colours
+    not taken by a subdomain met earlier (in index order) that shares a vertex
+    with it, so two subdomains that touch never share a colour while the
+    palette lasts, and the palette is spread over the picture."""
+    at_vertex = {}
+    for a, b, c, k in triangles:
+        for v in (a, b, c):
+            at_vertex.setdefault(v, set()).add(k)
+    touching = {}
+    for ks in at_vertex.values():
+        for k in ks:
+            touching.setdefault(k, set()).update(ks - {k})
+    colour, uses = {}, [0] * count
+    for k in sorted({t[3] for t in triangles}):
+        taken = {colour[j] for j in touching.get(k, ()) if j in colour}
+        free = [i for i in range(count) if i not in taken]
+        colour[k] = min(free, key=lambda i: (uses[i], i)) if free else k % count
+        uses[colour[k]] += 1
+    return colour
 
 
 def data_lines(path):
@@ -77,10 +98,16 @@ def main(argv):
     ap.add_argument("--box", nargs=4, type=float, metavar=("X0", "Y0", "X1", "Y1"))
     ap.add_argument("--width", type=float, default=1000.0)
     ap.add_argument("--edge", type=float, default=None)
+    ap.add_argument("--by-index", action="store_true")
     args = ap.parse_args(argv)
 
     points = read_node(args.prefix + ".node")
     triangles = read_ele(args.prefix + ".ele")
+    # Coloured on the whole mesh, so a crop has the colours of the full picture.
+    if args.by_index:
+        colour = {k: k % len(PALETTE) for k in {t[3] for t in triangles}}
+    else:
+        colour = colour_subdomains(triangles, len(PALETTE))
 
     if args.box:
         x0, y0, x1, y1 = args.box
@@ -137,7 +164,7 @@ def main(argv):
     else:
         out.append('<g stroke="#333333" stroke-width="%s" stroke-linejoin="round">' % ("%.3g" % edge))
     for k in sorted(by_subdomain):
-        out.append('<path fill="%s" d="%s"/>' % (PALETTE[k % len(PALETTE)], "".join(by_subdomain[k])))
+        out.append('<path fill="%s" d="%s"/>' % (PALETTE[colour[k]], "".join(by_subdomain[k])))
     out.append("</g>")
     out.append("</svg>")
     with open(args.out, "w") as f:

@@ -58,21 +58,29 @@ std::vector<unsigned> parse_list(const char* s) {
   return out;
 }
 
+// The shortest decimal text that reads back as x, never in exponent form
+// (Triangle's switch parser takes only digits and '.').
 std::string shortest(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
   for (int digits = 1; digits <= 17; ++digits) {
     char b[64];
     std::snprintf(b, sizeof b, "%.*g", digits, x);
+    if (std::strtod(b, nullptr) == x && !std::strpbrk(b, "eE")) return b;
+  }
+  for (int decimals = 0; decimals <= 60; ++decimals) {
+    char b[128];
+    std::snprintf(b, sizeof b, "%.*f", decimals, x);
     if (std::strtod(b, nullptr) == x) return b;
   }
-  return buf;
+  char b[128];
+  std::snprintf(b, sizeof b, "%.60f", x);
+  return b;
 }
 
 struct PeerResult {
   bool ok = false;
   double seconds = 0.0;  // median
   long long triangles = 0;
+  std::string switches;
   std::string error;
 };
 
@@ -95,6 +103,7 @@ PeerResult run_triangle(const std::string& binary, const std::string& poly, doub
     return result;
   }
   const std::string switches = "-pq" + shortest(q) + (a > 0 ? "a" + shortest(a) : std::string()) + "Q";
+  result.switches = switches;
   const std::string absolute = fs::absolute(binary).string();
   std::vector<double> times;
   for (int r = 0; r < runs; ++r) {
@@ -236,9 +245,8 @@ int run_mesh(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", file.c_str(), peer.error.c_str());
         status = 1;
       } else {
-        std::printf("%-24s %3s %10lld %9.3f %11.0f  (Triangle -pq%ga%gQ)\n", name.c_str(), "T", peer.triangles,
-                    peer.seconds, static_cast<double>(peer.triangles) / peer.seconds, options.size.min_angle_deg,
-                    options.size.max_area);
+        std::printf("%-24s %3s %10lld %9.3f %11.0f  (Triangle %s)\n", name.c_str(), "T", peer.triangles,
+                    peer.seconds, static_cast<double>(peer.triangles) / peer.seconds, peer.switches.c_str());
         for (Row& r : rows) {
           if (r.file == name) {
             r.peer = peer;
