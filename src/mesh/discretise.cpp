@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "madd/mesh.hpp"
+#include "mesh/discretise.hpp"
 #include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
 #include "mesh/size_field.hpp"
@@ -28,8 +29,8 @@ namespace {
 // end: the integral of 1/h, sampled and summed by the trapezoid rule, split
 // into equal shares.
 // The target length at p on segment j, before grading from the ends.
-double local_target(Point p, std::uint32_t j, const SizeField& size, const FeatureDistance& features) {
-  double h = feature_factor * features.to_nonincident(p, j);
+double local_target(Point p, const Segment& s, const SizeField& size, const FeatureDistance& features) {
+  double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
     const double area = size.area_at(p);
     if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
@@ -47,21 +48,26 @@ std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size
   std::vector<double> out(d.points.size(), std::numeric_limits<double>::infinity());
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     const Segment& s = d.segments[j];
-    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], j, size, features));
-    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], j, size, features));
+    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], s, size, features));
+    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], s, size, features));
   }
   return out;
 }
 
+// `features` are the features the segment's pieces must resolve: every
+// segment, or, for a boundary piece refinement may still split, only the
+// separators (see detail::discretise).
 std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const SizeField& size,
-                                     const FeatureDistance& features, const std::vector<double>& at_vertex) {
+                                     const FeatureDistance& features, const std::vector<double>& at_vertex,
+                                     bool graded_from_ends) {
   const Segment& s = d.segments[j];
   const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
   const Point a = d.points[lo], b = d.points[hi];
   const double length = distance(a, b);
   const auto target = [&](double t) {
-    const double graded = std::min(at_vertex[lo] + grading * t * length, at_vertex[hi] + grading * (1 - t) * length);
-    return std::min(local_target(lerp(a, b, t), j, size, features), graded);
+    const double h = local_target(lerp(a, b, t), s, size, features);
+    if (!graded_from_ends) return h;
+    return std::min(h, std::min(at_vertex[lo] + grading * t * length, at_vertex[hi] + grading * (1 - t) * length));
   };
   std::vector<double> density;  // 1/h at the samples, in units of pieces per segment length
   std::size_t samples = 16;
@@ -108,9 +114,21 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
 } // namespace detail
 
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size) {
+  return detail::discretise(decomposition, size, true);
+}
+
+Decomposition detail::discretise(const Decomposition& decomposition, const MeshSizeOptions& size,
+                                 bool boundary_by_features) {
   const detail::SizeField field(size);
   const detail::FeatureDistance features(decomposition.points, decomposition.segments);
   const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features);
+  // Boundary pieces our refinement may split need only resolve the
+  // separators near them (the decoupling); elsewhere it splits them itself.
+  std::vector<Segment> separators;
+  for (std::uint32_t j = 0; j < decomposition.segments.size(); ++j) {
+    if (decomposition.is_separator(j)) separators.push_back(decomposition.segments[j]);
+  }
+  const detail::FeatureDistance separator_features(decomposition.points, separators);
   Decomposition out = decomposition;
   out.segments.clear();
   out.segment_origin.clear();
@@ -120,7 +138,9 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
     const Segment& s = decomposition.segments[j];
     const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
     std::uint32_t from = lo;
-    for (const double t : detail::split_parameters(decomposition, j, field, features, at_vertex)) {
+    const bool only_separators = !boundary_by_features && !decomposition.is_separator(j);
+    for (const double t : detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features,
+                                                   at_vertex, !only_separators)) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
@@ -152,6 +172,47 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
     }
   }
   return out;
+}
+
+std::vector<std::uint32_t> detail::split_separator_pieces(Decomposition& d, const std::vector<std::uint32_t>& pieces) {
+  // New segment of each split piece: from the midpoint to the higher-index end.
+  std::vector<std::uint32_t> upper(d.segments.size(), no_index);
+  for (const std::uint32_t j : pieces) {
+    const Segment s = d.segments[j];
+    const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
+    const auto mid = static_cast<std::uint32_t>(d.points.size());
+    d.points.push_back(lerp(d.points[lo], d.points[hi], 0.5));
+    d.segments[j] = {lo, mid, s.marker};
+    upper[j] = static_cast<std::uint32_t>(d.segments.size());
+    d.segments.push_back({mid, hi, s.marker});
+    d.segment_origin.push_back(d.segment_origin[j]);
+  }
+  std::vector<std::uint32_t> changed;
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    Subdomain& sub = d.subdomains[k];
+    bool touched = false;
+    for (std::size_t r = 0; r < sub.rings.size(); ++r) {
+      std::vector<std::uint32_t> ring, segments;
+      for (std::size_t i = 0; i < sub.rings[r].size(); ++i) {
+        const std::uint32_t v = sub.rings[r][i], j = sub.ring_segments[r][i];
+        if (upper[j] == no_index) {
+          ring.push_back(v);
+          segments.push_back(j);
+          continue;
+        }
+        touched = true;
+        const std::uint32_t mid = d.segments[j].b;
+        // From the lower end: lower half (j) then upper half; from the higher end, the reverse.
+        const bool from_lower = v == d.segments[j].a;
+        ring.insert(ring.end(), {v, mid});
+        segments.insert(segments.end(), {from_lower ? j : upper[j], from_lower ? upper[j] : j});
+      }
+      sub.rings[r] = std::move(ring);
+      sub.ring_segments[r] = std::move(segments);
+    }
+    if (touched) changed.push_back(k);
+  }
+  return changed;
 }
 
 } // namespace madd

@@ -72,10 +72,9 @@ void FeatureDistance::for_cells_of(std::uint32_t j, Visit&& visit) const {
   }
 }
 
-double FeatureDistance::to_nonincident(Point p, std::uint32_t j) const {
+double FeatureDistance::to_nonincident(Point p, std::uint32_t ja, std::uint32_t jb) const {
   double best = std::numeric_limits<double>::infinity();
   if (segments_.empty()) return best;
-  const std::uint32_t ja = segments_[j].a, jb = segments_[j].b;
   const auto c0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p.x - x0_) / cell_)), 0, cols_ - 1);
   const auto r0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p.y - y0_) / cell_)), 0, rows_ - 1);
   const std::int64_t max_ring = std::max(cols_, rows_);

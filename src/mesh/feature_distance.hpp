@@ -16,9 +16,10 @@ namespace madd::detail {
 class FeatureDistance {
 public:
   FeatureDistance(const std::vector<Point>& points, const std::vector<Segment>& segments);
-  // Distance from p to the nearest feature not incident to segment `j`
-  // (+infinity when there is none).
-  double to_nonincident(Point p, std::uint32_t j) const;
+  // Distance from p to the nearest feature not incident to the segment from
+  // vertex a to vertex b (+infinity when there is none). The segment need not
+  // be among this object's segments.
+  double to_nonincident(Point p, std::uint32_t a, std::uint32_t b) const;
 
 private:
   template <class Visit>

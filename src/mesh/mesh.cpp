@@ -15,6 +15,7 @@
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
 #include "madd/mesh.hpp"
+#include "mesh/discretise.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/refine.hpp"
 #include "mesh/size_field.hpp"
@@ -40,15 +41,15 @@ unsigned thread_count(unsigned asked, std::size_t work) {
   return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(work, 1)));
 }
 
-// Refines every subdomain, largest expected work first so that the last
-// ones to finish are small; results land in their own slots.
-std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const MeshOptions& options,
-                                              const detail::SizeField& field, const std::vector<double>& work,
-                                              const detail::ResourceGuard& guard, MeshReport& report) {
-  const std::uint32_t n = static_cast<std::uint32_t>(d.subdomains.size());
-  std::vector<detail::SubdomainMesh> out(n);
-  std::vector<std::uint32_t> order(n);
-  for (std::uint32_t k = 0; k < n; ++k) order[k] = k;
+// Refines the subdomains in `todo` (all of them in the first round, then
+// those next to separators split since), largest expected work first so that
+// the last ones to finish are small; results land in their own slots.
+void refine_some(const Decomposition& d, const MeshOptions& options, const detail::SizeField& field,
+                 const std::vector<double>& work, const detail::ResourceGuard& guard, MeshReport& report,
+                 const std::vector<std::uint32_t>& todo, std::vector<detail::SubdomainMesh>& out) {
+  const auto n = static_cast<std::uint32_t>(todo.size());
+  const auto all = static_cast<std::uint32_t>(d.subdomains.size());
+  std::vector<std::uint32_t> order = todo;
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return work[a] > work[b]; });
   detail::RefineSettings settings;
   settings.min_angle_deg = options.size.min_angle_deg;
@@ -56,8 +57,8 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
   settings.off_centres = options.off_centres;
   settings.guard = &guard;
   const unsigned threads = thread_count(options.decomposition.threads, n);
-  report.thread_seconds.assign(threads, 0.0);
-  report.subdomain_seconds.assign(n, 0.0);
+  if (report.thread_seconds.size() < threads) report.thread_seconds.resize(threads, 0.0);
+  report.subdomain_seconds.resize(all, 0.0);
   std::atomic<std::uint32_t> next{0}, done{0};
   std::atomic<bool> failed{false};
   std::exception_ptr error;
@@ -76,10 +77,10 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
         mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
         out[k] = detail::refine_subdomain(local.pslg, local.splittable, mine);
         const double s = clock.lap();
-        report.subdomain_seconds[k] = s;
+        report.subdomain_seconds[k] += s;
         report.thread_seconds[id] += s;
         const std::uint32_t finished = done.fetch_add(1) + 1;
-        if (id == 0 && options.progress) options.progress(finished, n);
+        if (id == 0 && options.progress) options.progress(finished, n);  // n: this round's subdomains
       } catch (...) {
         const std::lock_guard lock(error_mutex);
         if (!error) error = std::current_exception();
@@ -94,6 +95,20 @@ std::vector<detail::SubdomainMesh> refine_all(const Decomposition& d, const Mesh
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
   if (options.progress) options.progress(n, n);
+}
+
+// The separator segments of `d` that stopped a fix in the subdomains just
+// meshed (global ids, sorted, once each).
+std::vector<std::uint32_t> blocking_separators(const Decomposition& d, const std::vector<std::uint32_t>& meshed,
+                                               const std::vector<detail::SubdomainMesh>& pieces) {
+  std::vector<std::uint32_t> out;
+  for (const std::uint32_t k : meshed) {
+    if (pieces[k].blocking_separators.empty()) continue;
+    const detail::LocalDomain local = detail::local_domain(d, k);
+    for (const std::uint32_t s : pieces[k].blocking_separators) out.push_back(local.piece[s]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
@@ -105,11 +120,24 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  const Decomposition d = discretise(decomposition, options.size);
+  Decomposition d = detail::discretise(decomposition, options.size, false);
   report.phases.push_back({"discretise", clock.lap()});
   const detail::SizeField field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
-  std::vector<detail::SubdomainMesh> pieces = refine_all(d, options, field, report.expected_triangles, guard, report);
+  // Rounds: mesh, then split every separator piece that stopped a fix, once
+  // for both its sides, and mesh those sides again (docs/mesh.md,
+  // "Decoupling"). Which pieces are split depends on the meshes only, never
+  // on the threads, so the result stays the same for any thread count.
+  std::vector<detail::SubdomainMesh> pieces(d.subdomains.size());
+  std::vector<std::uint32_t> todo(d.subdomains.size());
+  for (std::uint32_t k = 0; k < todo.size(); ++k) todo[k] = k;
+  for (int round = 0;; ++round) {
+    refine_some(d, options, field, report.expected_triangles, guard, report, todo, pieces);
+    if (round == detail::max_separator_rounds) break;
+    const std::vector<std::uint32_t> blocking = blocking_separators(d, todo, pieces);
+    if (blocking.empty()) break;
+    todo = detail::split_separator_pieces(d, blocking);
+  }
   report.phases.push_back({"refine", clock.lap()});
   Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
   report.phases.push_back({"merge", clock.lap()});

@@ -66,7 +66,9 @@ public:
   }
 
   void run();
-  MeshShortfall shortfall() const;
+  // The triangles left below the bound, by reason; `blocking` gets the
+  // separator segments that stopped a fix (sorted, once each).
+  MeshShortfall shortfall(std::vector<std::uint32_t>& blocking) const;
 
 private:
   bool is_bad(std::uint32_t t) const;
@@ -94,6 +96,7 @@ private:
   std::vector<std::uint32_t> generation_;  // per slot, bumped when the slot holds a new triangle
   std::vector<std::uint32_t> queued_generation_;
   std::vector<Reason> reason_;  // per slot: why the triangle there was left bad
+  std::vector<std::uint32_t> blocker_;  // per slot: with Reason::separator, the separator segment in the way
   std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
   std::size_t steiner_ = 0;
   bool out_of_budget_ = false;
@@ -238,6 +241,7 @@ void Refiner::queue_fresh() {
       generation_.resize(t + 1 + t / 2, 0);
       queued_generation_.resize(generation_.size(), std::numeric_limits<std::uint32_t>::max());
       reason_.resize(generation_.size(), Reason::none);
+      blocker_.resize(generation_.size(), no_index);
     }
     ++generation_[t];
     reason_[t] = Reason::none;
@@ -302,8 +306,11 @@ void Refiner::try_triangle(std::uint32_t t) {
     bool splittable, sharp;
   };
   std::vector<Encroached> list;
-  for (const std::uint32_t h : encroached)
+  std::uint32_t blocking = no_index;  // the first separator in the way
+  for (const std::uint32_t h : encroached) {
     list.push_back({m_.origin(h), m_.dest(h), m_.segment(m_.segment_of(h)).splittable, at_sharp_corner(h)});
+    if (!list.back().splittable && blocking == no_index) blocking = m_.segment_of(h);
+  }
   bool split_any = false, separator = false;
   const double shortest = std::sqrt(s.l2[s.shortest]);
   for (const Encroached& e : list) {
@@ -323,6 +330,7 @@ void Refiner::try_triangle(std::uint32_t t) {
   }
   if (separator && insert_nearer(t, s, p)) return;
   reason_[t] = separator ? Reason::separator : encroached.empty() ? Reason::precision : Reason::input_angle;
+  blocker_[t] = blocking;
 }
 
 // A point that would encroach a separator: try points nearer the shortest
@@ -385,8 +393,9 @@ void Refiner::run() {
   }
 }
 
-MeshShortfall Refiner::shortfall() const {
+MeshShortfall Refiner::shortfall(std::vector<std::uint32_t>& blocking) const {
   MeshShortfall f;
+  blocking.clear();
   for (std::uint32_t t = 0; t < m_.slot_count(); ++t) {
     if (!m_.alive(t)) continue;
     // Counted with verify_mesh's own measure, so the two always agree.
@@ -395,11 +404,16 @@ MeshShortfall Refiner::shortfall() const {
       continue;
     switch (t < reason_.size() ? reason_[t] : Reason::none) {
       case Reason::input_angle: ++f.input_angle; break;
-      case Reason::separator: ++f.separator; break;
+      case Reason::separator:
+        ++f.separator;
+        if (blocker_[t] != no_index) blocking.push_back(blocker_[t]);
+        break;
       case Reason::limit: ++f.limit; break;
       default: ++f.precision; break;
     }
   }
+  std::sort(blocking.begin(), blocking.end());
+  blocking.erase(std::unique(blocking.begin(), blocking.end()), blocking.end());
   return f;
 }
 
@@ -416,7 +430,7 @@ SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splitt
   Refiner refiner(m, settings);
   refiner.run();
   SubdomainMesh out;
-  out.shortfall = refiner.shortfall();
+  out.shortfall = refiner.shortfall(out.blocking_separators);
   out.points.assign(m.points().begin(), m.points().end());
   out.point_segment.resize(m.vertex_count());
   out.point_parameter.resize(m.vertex_count());

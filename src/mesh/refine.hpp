@@ -38,6 +38,10 @@ struct SubdomainMesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 3>> neighbours;  // across edge i (opposite corner i); no_index outside
   MeshShortfall shortfall;
+  // Separator segments (local ids) whose diametral circle a point that would
+  // fix a bad triangle fell into: split them (for both subdomains) and mesh
+  // again (docs/mesh.md, "Decoupling").
+  std::vector<std::uint32_t> blocking_separators;
 };
 
 // Refines the constrained Delaunay triangulation of `pslg` (one closed
