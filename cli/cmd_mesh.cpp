@@ -56,7 +56,8 @@ constexpr const char* mesh_help =
     "      --time-limit S     give up (exit 6, nothing written) after S seconds (default none)\n"
     "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
     "outputs:\n"
-    "  -o, --output PREFIX    PREFIX.node, .ele, .neigh, .edge (default: INPUT without .poly)\n"
+    "  -o, --output PREFIX    PREFIX.node and PREFIX.ele (default: INPUT without .poly)\n"
+    "      --neigh, --edge    also PREFIX.neigh, PREFIX.edge (Triangle's -n, -e)\n"
     "      --msh              also PREFIX.msh (gmsh 4.1: a physical surface per subdomain)\n"
     "      --vtu              also PREFIX.vtu (VTK; subdomain as cell data)\n"
     "      --split-mesh DIR   also one .node/.ele per subdomain in DIR, with global vertex ids\n"
@@ -205,7 +206,7 @@ int mesh_body(void* context) {
     const AngleFigures a = angle_figures(m);
     std::fprintf(args.report && args.report_out.empty() ? stderr : stdout,
                  "%s: %u subdomains, %zu triangles, %zu vertices, smallest angle %.2f deg (%zu below %.4g: %zu at "
-                 "small input angles, %zu at separators), %.2f s -> %s.{node,ele,neigh,edge}\n",
+                 "small input angles, %zu at separators), %.2f s -> %s.{node,ele}\n",
                  args.input.c_str(), m.subdomain_count(), m.triangles.size(), m.points.size(), a.min_deg, a.below,
                  m.min_angle_deg, m.shortfall.input_angle, m.shortfall.separator, seconds_since(start),
                  args.prefix.c_str());
@@ -214,7 +215,7 @@ int mesh_body(void* context) {
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_size_fn, opt_sizes, opt_balance, opt_no_off_centres, opt_msh,
-                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory };
+                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory, opt_neigh, opt_edge };
 
 std::string apply_option(int c, const char* arg, MeshArgs& args) {
   double x = 0;
@@ -270,6 +271,8 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     return {};
   case 'o': args.prefix = arg; return {};
   case opt_msh: args.formats.msh = true; return {};
+  case opt_neigh: args.formats.neigh = true; return {};
+  case opt_edge: args.formats.edge = true; return {};
   case opt_vtu: args.formats.vtu = true; return {};
   case opt_split_mesh: args.split_dir = arg; return {};
   case opt_report:
@@ -297,6 +300,8 @@ int run_mesh(int argc, char** argv) {
       {"max-memory", required_argument, nullptr, opt_max_memory},
       {"output", required_argument, nullptr, 'o'},
       {"msh", no_argument, nullptr, opt_msh},
+      {"neigh", no_argument, nullptr, opt_neigh},
+      {"edge", no_argument, nullptr, opt_edge},
       {"vtu", no_argument, nullptr, opt_vtu},
       {"split-mesh", required_argument, nullptr, opt_split_mesh},
       {"report", optional_argument, nullptr, opt_report},

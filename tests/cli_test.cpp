@@ -248,7 +248,7 @@ TEST_CASE("triangulate: a .poly without segments is a point set, as a .node is")
 TEST_CASE("mesh: writes every format asked for, the same for -j 1 and -j 2, and refuses bad options with nothing written") {
   const Scratch dir("mesh");
   const std::string pipe = "'" MADD_DATA_DIR "/pipe.poly'";
-  const Result one = run_madd(dir, "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 1 -o one --msh --vtu --split-mesh parts --report=r.json");
+  const Result one = run_madd(dir, "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 1 -o one --msh --vtu --neigh --edge --split-mesh parts --report=r.json");
   REQUIRE_MESSAGE(one.code == 0, one.err);
   CHECK(has(one.out, "4 subdomains"));
   for (const char* ext : {".node", ".ele", ".neigh", ".edge", ".msh", ".vtu"}) {

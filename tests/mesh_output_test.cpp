@@ -439,7 +439,7 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
 TEST_CASE("write_mesh writes the chosen formats; a missing directory fails and leaves nothing") {
   TempDir tmp;
   MeshFormats all;
-  all.msh = all.vtu = true;
+  all.msh = all.vtu = all.neigh = all.edge = true;
   all.first_index = 0;
   write_mesh(square_mesh(), (tmp.path / "sq").string(), all);
   CHECK(tmp.names(tmp.path) == std::set<std::string>{"sq.edge", "sq.ele", "sq.msh", "sq.neigh", "sq.node", "sq.vtu"});
@@ -454,6 +454,13 @@ TEST_CASE("write_mesh writes the chosen formats; a missing directory fails and l
   write_mesh(square_mesh(), (tmp.path / "g").string(), only_msh);
   CHECK(tmp.names(tmp.path).count("g.msh") == 1);
   CHECK(tmp.names(tmp.path).count("g.node") == 0);
+
+  // By default .node and .ele only, as Triangle writes without -n and -e.
+  write_mesh(square_mesh(), (tmp.path / "d").string());
+  CHECK(tmp.names(tmp.path).count("d.node") == 1);
+  CHECK(tmp.names(tmp.path).count("d.ele") == 1);
+  CHECK(tmp.names(tmp.path).count("d.neigh") == 0);
+  CHECK(tmp.names(tmp.path).count("d.edge") == 0);
 
   // One output into a directory that does not exist: the whole set fails,
   // the split directory that could have been written is not created either.

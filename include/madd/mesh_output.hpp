@@ -75,7 +75,9 @@ std::string split_mesh_file_name(std::string_view stem, std::uint32_t k, std::ui
 
 // Which files add_mesh writes.
 struct MeshFormats {
-  bool triangle = true;  // PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge
+  bool triangle = true;  // PREFIX.node, PREFIX.ele
+  bool neigh = false;    // PREFIX.neigh (Triangle's -n)
+  bool edge = false;     // PREFIX.edge (Triangle's -e)
   bool msh = false;      // PREFIX.msh
   bool vtu = false;      // PREFIX.vtu
   unsigned first_index = 1;  // of the Triangle files: 0 or 1

@@ -48,9 +48,9 @@ void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, c
   if (formats.triangle) {
     outputs.add_file(prefix + ".node", format_mesh_node(mesh, formats.first_index));
     outputs.add_file(prefix + ".ele", format_mesh_ele(mesh, formats.first_index));
-    outputs.add_file(prefix + ".neigh", format_mesh_neigh(mesh, formats.first_index));
-    outputs.add_file(prefix + ".edge", format_mesh_edge(mesh, formats.first_index));
   }
+  if (formats.neigh) outputs.add_file(prefix + ".neigh", format_mesh_neigh(mesh, formats.first_index));
+  if (formats.edge) outputs.add_file(prefix + ".edge", format_mesh_edge(mesh, formats.first_index));
   if (formats.msh) outputs.add_file(prefix + ".msh", format_mesh_msh(mesh));
   if (formats.vtu) outputs.add_file(prefix + ".vtu", format_mesh_vtu(mesh));
 }
