@@ -49,7 +49,7 @@ constexpr const char* decompose_help =
     "      --seed S           random seed (default 1)\n"
     "      --smoothing K      smoothing iterations, Sec. 5.1 (default 1; 0 = off)\n"
     "      --rebalance X      re-split subdomains above X x the mean area with their\n"
-    "                         neighbours (default 1.2; 0 = off; uniform runs only)\n"
+    "                         neighbours (default 1.2; 0 = off; uniform or --weights runs)\n"
     "  -a, --gradation A      grade by the boundary density weights (vertex attribute 1):\n"
     "                         a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
     "      --adaptive-refine L  graded by boundary weights: heavier edges get up to L times\n"

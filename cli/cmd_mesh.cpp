@@ -53,6 +53,7 @@ constexpr const char* mesh_help =
     "      --min-angle DEG    Phi0, the smallest angle a separator makes (default 60)\n"
     "  -j, --threads T        threads, 0 = all cores (default 0); the mesh is identical\n"
     "      --seed S           random seed of the decomposition (default 1)\n"
+    "      --rebalance X      repair subdomains above X x the mean work (default 1.1; 0 = off)\n"
     "      --time-limit S     give up (exit 6, nothing written) after S seconds (default none)\n"
     "      --max-memory MB    give up (exit 6, nothing written) above MB megabytes resident\n"
     "outputs:\n"
@@ -215,7 +216,7 @@ int mesh_body(void* context) {
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_size_fn, opt_sizes, opt_balance, opt_no_off_centres, opt_msh,
-                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory, opt_neigh, opt_edge };
+                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory, opt_neigh, opt_edge, opt_rebalance };
 
 std::string apply_option(int c, const char* arg, MeshArgs& args) {
   double x = 0;
@@ -261,6 +262,10 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     if (!parse_count(arg, ~0ull, k)) return "--seed needs a whole number";
     o.decomposition.seed = k;
     return {};
+  case opt_rebalance:
+    if (!parse_number(arg, x)) return "--rebalance needs a number";
+    o.decomposition.rebalance_above = x;
+    return {};
   case opt_time_limit:
     if (!parse_number(arg, x) || x < 0) return "--time-limit needs seconds >= 0";
     o.decomposition.time_limit_seconds = x;
@@ -297,6 +302,7 @@ int run_mesh(int argc, char** argv) {
       {"threads", required_argument, nullptr, 'j'},
       {"seed", required_argument, nullptr, opt_seed},
       {"time-limit", required_argument, nullptr, opt_time_limit},
+      {"rebalance", required_argument, nullptr, opt_rebalance},
       {"max-memory", required_argument, nullptr, opt_max_memory},
       {"output", required_argument, nullptr, 'o'},
       {"msh", no_argument, nullptr, opt_msh},

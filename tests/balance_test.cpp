@@ -153,3 +153,39 @@ TEST_CASE("the archipelago: within 1.25 at every N and Phi0 the sweep uses") {
 }
 
 } // TEST_SUITE
+
+TEST_CASE("rebalancing works on background weights too: the heaviest subdomain comes down, every rule kept") {
+  // Weights concentrated in one corner of the pipe (a dense coastline, say):
+  // the heaviest subdomain is well above the mean without the repair.
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/pipe.poly");
+  madd::DecomposeOptions o;
+  o.subdomains = 32;
+  o.threads = 1;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const madd::Decomposition plain = madd::decompose(domain, o);
+  for (const madd::Subdomain& s : plain.subdomains) {
+    // One sample per subdomain interior point, heavier to the left.
+    o.background_weights.push_back({s.interior_point, (s.interior_point.x < 0 ? 20.0 : 1.0) * (1.0 + u(rng))});
+  }
+  o.gradation = 1.0;
+  o.rebalance_above = 0.0;
+  const madd::Metrics off = madd::metrics(madd::decompose(domain, o));
+  REQUIRE(off.max_weight_over_mean > 1.2);
+  o.rebalance_above = 1.1;
+  const madd::Decomposition d = madd::decompose(domain, o);
+  const madd::Verification check = madd::verify_decomposition(d, domain, o.subdomains);
+  INFO((check.ok() ? std::string() : check.problems.front()));
+  CHECK(check.ok());
+  const madd::Metrics on = madd::metrics(d);
+  CHECK(on.max_weight_over_mean < off.max_weight_over_mean);
+  CHECK(on.angle_min >= 60.0 - 1e-9);
+  // The weights of the result are the samples inside each subdomain, found anew.
+  double total = 0;
+  for (const madd::Subdomain& s : d.subdomains) total += s.weight;
+  double expected = 0;
+  for (const madd::ValuedPoint& v : o.background_weights) expected += v.value;
+  CHECK(total == doctest::Approx(o.refine * madd::domain_area(domain) + expected).epsilon(1e-9));
+  o.threads = 2;
+  CHECK(madd::decompose(domain, o) == d);
+}

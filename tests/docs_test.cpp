@@ -392,7 +392,7 @@ const std::vector<QuotedRun> quoted_runs = {
     {"docs/grading.md",
      "madd data/pipe.poly -n 64 --weights docs/img/grading-pipe-weights.node -a 20 --svg "
      "docs/img/grading-background-weights.svg",
-     "— area max/mean 2.68, weight max/mean 1.22, min angle 65.9°",
+     "— area max/mean 2.68, weight max/mean 1.13, min angle 65.9°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
      "madd data/pipe.poly -n 1000 --areas docs/img/grading-pipe-areas.node --svg docs/img/grading-background-areas.svg",

@@ -42,7 +42,8 @@ struct DecomposeOptions {
   // once N is reached, a subdomain larger than rebalance_above x the mean
   // area is merged with one or two smaller neighbours and the union split
   // again, kept when every new part is smaller than it. 0 turns it off;
-  // otherwise >= 1. Uniform decompositions only (not graded, no required area).
+  // otherwise >= 1. Uniform decompositions and those graded by background
+  // weights (on the weights); not other graded runs, nor a required area.
   double rebalance_above = 1.2;
 
   // Graded decomposition (Sec. 5.2). A subdomain's density weight is

@@ -41,7 +41,13 @@ struct MeshOptions {
   // decomposition.threads is also the number of meshing threads (-j), and
   // its time and memory limits apply to meshing as well (checked every few
   // thousand new vertices of each subdomain; LimitError, nothing returned).
-  DecomposeOptions decomposition;
+  // Its balance repair starts at 1.1 x the mean here (1.2 for a bare
+  // decomposition): a thread's time is its subdomains' triangles.
+  DecomposeOptions decomposition = [] {
+    DecomposeOptions d;
+    d.rebalance_above = 1.1;
+    return d;
+  }();
   MeshSizeOptions size;
   // Balance by work (docs/mesh.md, "Balance by work"): decompose by the expected
   // triangle count of each subdomain rather than its area. Only when the

@@ -157,6 +157,16 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
     detail::Stopwatch clock;
     detail::rebalance(sub, split_options, guard, {.target = options.rebalance_above});
     rebalance_seconds = clock.lap();
+  } else if (options.rebalance_above > 0.0 && grading.can_rebalance()) {
+    // Background weights (madd mesh balances expected triangles this way):
+    // the same repair, on the graded weights.
+    detail::Stopwatch clock;
+    const detail::FaceMeasure measure{
+        [&](const detail::Subdivision& s, std::uint32_t f) { return grading.weight_from_scratch(s, f); },
+        [&](const detail::Subdivision& s, std::uint32_t f) { return grading.density_from_scratch(s, f); }};
+    detail::rebalance(sub, split_options, guard, {.target = options.rebalance_above}, measure);
+    grading.reassign(sub);
+    rebalance_seconds = clock.lap();
   }
   phases.push_back({"refine", split_times.refine});
   phases.push_back({"triangulate", split_times.triangulate});

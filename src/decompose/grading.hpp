@@ -89,8 +89,19 @@ public:
   // ... and once after the round's commits (case 1 weights of new points).
   void end_round(const Subdivision& sub);
 
+  // Background weights (case 2) only: the weight and split density of a face
+  // from the samples found inside it anew (no per-face lists), for the
+  // balance repair, which merges and renumbers faces.
+  bool can_rebalance() const { return mode_.weights == WeightSource::background && !mode_.area_driven; }
+  double weight_from_scratch(const Subdivision& sub, std::uint32_t face) const;
+  FaceDensity density_from_scratch(const Subdivision& sub, std::uint32_t face) const;
+  // After faces were merged and renumbered: every background sample back in
+  // the list of the face it lies in.
+  void reassign(const Subdivision& sub);
+
 private:
   FaceSamples samples(const Subdivision& sub, std::uint32_t face) const;
+  std::vector<ValuedPoint> weights_in(const Subdivision& sub, std::uint32_t face) const;
   const DecomposeOptions& options_;
   GradingMode mode_;
   std::vector<double> point_weights_;

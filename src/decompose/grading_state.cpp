@@ -3,6 +3,8 @@
 
 #include "decompose/grading.hpp"
 
+#include "kernel/box.hpp"
+
 namespace madd::detail {
 
 GradingState::GradingState(const DecomposeOptions& options, const Pslg& domain)
@@ -100,6 +102,56 @@ void GradingState::end_round(const Subdivision& sub) {
   if (mode_.weights != WeightSource::boundary) return;
   assign_new_weights(sub.points, std::move(ends_), point_weights_);
   ends_.clear();
+}
+
+// The samples inside a face, by its outer ring's bounding box first.
+std::vector<ValuedPoint> GradingState::weights_in(const Subdivision& sub, std::uint32_t face) const {
+  Box box;
+  for (const std::uint32_t v : sub.faces[face].rings[0]) box.add(sub.points[v]);
+  std::vector<ValuedPoint> out;
+  for (const ValuedPoint& p : options_.background_weights) {
+    if (p.at.x < box.lo.x || p.at.x > box.hi.x || p.at.y < box.lo.y || p.at.y > box.hi.y) continue;
+    if (point_in_face(sub, face, p.at)) out.push_back(p);
+  }
+  return out;
+}
+
+double GradingState::weight_from_scratch(const Subdivision& sub, std::uint32_t face) const {
+  double w = 0.0;
+  for (const ValuedPoint& p : weights_in(sub, face)) w += p.value;
+  return mode_.r * sub.face_area(face) + mode_.a * w;
+}
+
+FaceDensity GradingState::density_from_scratch(const Subdivision& sub, std::uint32_t face) const {
+  FaceDensity d;
+  d.graded = true;
+  d.r = mode_.r;
+  d.a = mode_.a;
+  d.samples = weights_in(sub, face);
+  return d;
+}
+
+void GradingState::reassign(const Subdivision& sub) {
+  std::vector<Box> boxes(sub.faces.size());
+  for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+    for (const std::uint32_t v : sub.faces[f].rings[0]) boxes[f].add(sub.points[v]);
+  }
+  for (auto* lists : {&weights_inside_, &areas_inside_}) {
+    const auto& pts = lists == &weights_inside_ ? options_.background_weights : options_.background_areas;
+    if (pts.empty()) continue;
+    lists->assign(sub.faces.size(), {});
+    for (std::uint32_t i = 0; i < pts.size(); ++i) {
+      const Point p = pts[i].at;
+      for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
+        const Box& b = boxes[f];
+        if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y) continue;
+        if (point_in_face(sub, f, p)) {
+          (*lists)[f].push_back(i);
+          break;
+        }
+      }
+    }
+  }
 }
 
 } // namespace madd::detail

@@ -37,13 +37,18 @@ std::vector<std::uint32_t> neighbours_by_area(const Subdivision& sub, std::uint3
 // Splits `face` into `plan` subdomains as the N-way driver would (one face
 // at a time); the new faces are appended. Throws DecompositionError.
 void split_into(Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& split_options,
-                const ResourceGuard& guard) {
+                const ResourceGuard& guard, const FaceMeasure& measure) {
   if (plan < 2) return;
-  const SplitResult r = compute_split(sub, face, plan, split_options, {}, &guard);
+  const FaceDensity density = measure.density ? measure.density(sub, face) : FaceDensity{};
+  const SplitResult r = compute_split(sub, face, plan, split_options, density, &guard);
   const std::uint32_t k0 = side0_plan(plan, r.weight[0], r.weight[1]);
   const std::uint32_t added = sub.commit(face, r);
-  split_into(sub, face, k0, split_options, guard);
-  split_into(sub, added, plan - k0, split_options, guard);
+  split_into(sub, face, k0, split_options, guard, measure);
+  split_into(sub, added, plan - k0, split_options, guard, measure);
+}
+
+double weight_of(const Subdivision& sub, std::uint32_t face, const FaceMeasure& measure) {
+  return measure.weight ? measure.weight(sub, face) : sub.face_area(face);
 }
 
 struct Repair {
@@ -66,7 +71,8 @@ double inner_separator_length(const Subdivision& sub, const std::vector<std::uin
 // In a copy of `sub`: merges `face` with `partners` and splits the union into
 // as many subdomains as it was made of.
 std::optional<Repair> try_repair(const Subdivision& sub, std::uint32_t face, std::span<const std::uint32_t> partners,
-                                 const SplitOptions& split_options, const ResourceGuard& guard) {
+                                 const SplitOptions& split_options, const ResourceGuard& guard,
+                                 const FaceMeasure& measure) {
   Repair out{sub, 0.0};
   const auto before = static_cast<std::uint32_t>(sub.faces.size());
   // Merged one at a time, each with a partner that touches the union so far.
@@ -91,15 +97,15 @@ std::optional<Repair> try_repair(const Subdivision& sub, std::uint32_t face, std
     if (!progress) return std::nullopt;
   }
   try {
-    split_into(out.sub, merged, static_cast<std::uint32_t>(partners.size() + 1), split_options, guard);
+    split_into(out.sub, merged, static_cast<std::uint32_t>(partners.size() + 1), split_options, guard, measure);
   } catch (const DecompositionError&) {
     return std::nullopt;  // no valid separator for the union: try other partners
   }
   std::vector<std::uint32_t> old_faces{face}, new_faces{merged};
   old_faces.insert(old_faces.end(), partners.begin(), partners.end());
-  out.largest = out.sub.face_area(merged);
+  out.largest = weight_of(out.sub, merged, measure);
   for (std::uint32_t f = before - static_cast<std::uint32_t>(partners.size()); f < before; ++f) {
-    out.largest = std::max(out.largest, out.sub.face_area(f));
+    out.largest = std::max(out.largest, weight_of(out.sub, f, measure));
     new_faces.push_back(f);
   }
   out.added_length = inner_separator_length(out.sub, new_faces) - inner_separator_length(sub, old_faces);
@@ -148,18 +154,22 @@ std::vector<std::vector<std::uint32_t>> candidate_unions(const Subdivision& sub,
 } // namespace
 
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, const ResourceGuard& guard,
-                        const RebalanceOptions& options) {
+                        const RebalanceOptions& options, const FaceMeasure& measure) {
   // One refinement round for the repair splits: on every run of the sweeps
   // (docs/performance.md) the result is the same as with four, in less time.
   SplitOptions split_options = split_options_in;
   split_options.max_refinement_rounds = std::min(split_options.max_refinement_rounds, 1);
   const auto n = static_cast<std::uint32_t>(sub.faces.size());
   if (n < 2) return 0;
+  // `area` holds what is balanced: the areas, or the measure's weights.
   std::vector<double> area(n);
-  double total = 0.0;
-  for (std::uint32_t f = 0; f < n; ++f) total += area[f] = sub.face_area(f);
+  double total = 0.0, total_area = 0.0;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    total += area[f] = weight_of(sub, f, measure);
+    total_area += sub.face_area(f);
+  }
   const double bound = options.target * total / n;
-  const double max_added_length = options.max_added_separator * std::sqrt(total / n);
+  const double max_added_length = options.max_added_separator * std::sqrt(total_area / n);
   // A face that could not be improved is not tried again until its rings change.
   std::vector<std::size_t> tried(n, 0);
   std::uint32_t repairs = 0;
@@ -179,7 +189,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
       if (attempts == max_attempts) break;
       ++attempts;
       guard.check(n);
-      auto repair = try_repair(sub, face, partners, split_options, guard);
+      auto repair = try_repair(sub, face, partners, split_options, guard, measure);
       if (!repair || repair->largest > improved || repair->added_length > max_added_length) continue;
       if (!best || repair->largest < best->largest) best = std::move(repair);
       if (best->largest <= bound) break;
@@ -189,7 +199,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
       continue;
     }
     sub = std::move(best->sub);
-    for (std::uint32_t f = 0; f < n; ++f) area[f] = sub.face_area(f);
+    for (std::uint32_t f = 0; f < n; ++f) area[f] = weight_of(sub, f, measure);
     std::fill(tried.begin(), tried.end(), 0);  // face ids moved
     ++repairs;
   }

@@ -9,6 +9,7 @@
 // started from and the separators are not much longer. The number of
 // subdomains never changes.
 #include <cstdint>
+#include <functional>
 
 #include "kernel/resource_limits.hpp"
 #include "split/split.hpp"
@@ -30,10 +31,19 @@ struct RebalanceOptions {
   double max_added_separator = 1.0;
 };
 
-// Repairs the largest subdomains of `sub` (areas, not graded weights) until
-// every one is within target x the mean or none can be improved. Returns the
-// number of repairs kept. Deterministic: one repair at a time, in a fixed order.
+// What rebalancing balances: each face's weight, and the density a split of
+// a face aims to halve. Unset: the face areas, and uniform splits.
+struct FaceMeasure {
+  std::function<double(const Subdivision&, std::uint32_t face)> weight;
+  std::function<FaceDensity(const Subdivision&, std::uint32_t face)> density;
+};
+
+// Repairs the largest subdomains of `sub` (by `measure`: areas by default,
+// graded weights of background samples for madd mesh's balance by work)
+// until every one is within target x the mean or none can be improved.
+// Returns the number of repairs kept. Deterministic: one repair at a time, in
+// a fixed order.
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, const ResourceGuard& guard,
-                        const RebalanceOptions& options = {});
+                        const RebalanceOptions& options = {}, const FaceMeasure& measure = {});
 
 } // namespace madd::detail

@@ -1,14 +1,15 @@
 // The expected triangle count of a subdomain (docs/mesh.md, "Balance by
-// work"): its area over the mean triangle area a size bound A gives, plus,
-// for every boundary piece shorter than the edge A allows, the triangles of
-// the graded layer that grows from the piece's length to that edge:
+// work"): its area over the mean triangle area a size bound A gives, plus a
+// layer of smaller, graded triangles along the domain boundary, whose count
+// grows with the boundary's length in units of the size:
 //
-//   T = area / (kappa A) + sum over pieces of (1 + nu ln(max(1, e_A / L))),
+//   T = area / (kappa A) + beta B / sqrt(A),
 //
-// e_A = sqrt(4 A / sqrt 3) the edge of an equilateral triangle of area A.
-// A layer whose triangles grow geometrically from L to e_A holds a number of
-// triangles proportional to ln(e_A / L) per unit of piece (Ruppert's
-// size-optimality: the count is the integral of 1 / lfs^2).
+// B the length of domain boundary in the subdomain. Separators add no such
+// layer: they are split to the size bound and the triangles on both sides
+// are of that size. Fitted on 320 subdomains of five real coastlines (N = 64,
+// A = area / 300000): mean error 2%, largest 22%, against 2.6% and 38% for
+// the area alone.
 #include "mesh/work.hpp"
 
 #include <algorithm>
@@ -16,24 +17,64 @@
 #include <limits>
 
 #include "madd/mesh.hpp"
+#include "madd/triangulation.hpp"
 
 namespace madd::detail {
 
 namespace {
 
-// docs/mesh.md, "Balance by work": the mean triangle area of a
-// mesh refined to an area bound A, over A; and the triangles one graded layer
-// adds per factor e of size change along one piece.
-constexpr double kappa = 0.64;
-constexpr double nu = 2.0;
-// Balance by work only when the boundary's triangles are at least this
-// share of the interior's (below it the area says as much).
-constexpr double boundary_share_for_work = 0.1;
+// docs/mesh.md, "Balance by work": the fitted constants.
+constexpr double kappa = 0.645;  // mean triangle area / A away from the boundary
+constexpr double beta = 0.98;    // triangles per sqrt(A) of domain boundary
+// Below this share of boundary work in the whole (the pipe: 0.9%, the
+// bundled archipelago 1.7%, five real coastlines 2.8-4.2%), balance by area.
+constexpr double min_boundary_share = 0.02;
+// Boundary work is placed in pieces this many sqrt(A) long (granularity of the samples).
+constexpr double piece_in_sizes = 4.0;
 
-double piece_work(Point a, Point b, double area_bound, double fallback_edge) {
-  const double length = distance(a, b);
-  const double edge = std::isfinite(area_bound) ? std::sqrt(4.0 * area_bound / std::sqrt(3.0)) : fallback_edge;
-  return 1.0 + nu * std::log(std::max(1.0, edge / std::max(length, std::numeric_limits<double>::min())));
+// The decomposition sums the samples inside each face by a point-in-face
+// test per sample, so 10^5 samples (one per boundary piece of a coastline)
+// cost seconds: samples are merged per cell of a 64 x 64 grid, each cell's
+// sum placed at its member nearest the cell's weighted centroid (a real
+// sample, so inside the domain). Faces of a decomposition span many cells,
+// so their sums barely change.
+std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples) {
+  if (samples.size() <= 4096) return samples;
+  Point lo = samples[0].at, hi = lo;
+  for (const ValuedPoint& s : samples) {
+    lo = {std::min(lo.x, s.at.x), std::min(lo.y, s.at.y)};
+    hi = {std::max(hi.x, s.at.x), std::max(hi.y, s.at.y)};
+  }
+  constexpr int cells = 64;
+  const double w = std::max((hi.x - lo.x) / cells, 1e-300), h = std::max((hi.y - lo.y) / cells, 1e-300);
+  const auto cell_of = [&](Point p) {
+    const int i = std::clamp(static_cast<int>((p.x - lo.x) / w), 0, cells - 1);
+    const int j = std::clamp(static_cast<int>((p.y - lo.y) / h), 0, cells - 1);
+    return static_cast<std::size_t>(j * cells + i);
+  };
+  std::vector<double> sum(cells * cells, 0.0), sx(cells * cells, 0.0), sy(cells * cells, 0.0);
+  for (const ValuedPoint& s : samples) {
+    const std::size_t c = cell_of(s.at);
+    sum[c] += s.value;
+    sx[c] += s.value * s.at.x;
+    sy[c] += s.value * s.at.y;
+  }
+  std::vector<std::size_t> best(cells * cells, samples.size());
+  std::vector<double> best_d(cells * cells, 0.0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const std::size_t c = cell_of(samples[i].at);
+    const Point centre = sum[c] > 0 ? Point{sx[c] / sum[c], sy[c] / sum[c]} : samples[i].at;
+    const double d = distance(samples[i].at, centre);
+    if (best[c] == samples.size() || d < best_d[c]) {
+      best[c] = i;
+      best_d[c] = d;
+    }
+  }
+  std::vector<ValuedPoint> out;
+  for (std::size_t c = 0; c < best.size(); ++c) {
+    if (best[c] != samples.size()) out.push_back({samples[best[c]].at, sum[c]});
+  }
+  return out;
 }
 
 } // namespace
@@ -44,11 +85,13 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
   for (const Subdomain& s : d.subdomains) {
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) : 0.0;
-    const double fallback = std::sqrt(s.area);
-    for (const auto& ring : s.rings) {
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        const Point a = d.points[ring[k]], b = d.points[ring[(k + 1) % ring.size()]];
-        t += piece_work(a, b, size.area_at(midpoint(a, b)), fallback);
+    for (std::size_t r = 0; r < s.rings.size(); ++r) {
+      for (std::size_t k = 0; k < s.rings[r].size(); ++k) {
+        if (d.is_separator(s.ring_segments[r][k])) continue;
+        const Point a = d.points[s.rings[r][k]], b = d.points[s.rings[r][(k + 1) % s.rings[r].size()]];
+        const double local = size.area_at(midpoint(a, b));
+        // Without a size bound every boundary piece is about one triangle.
+        t += std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0;
       }
     }
     out.push_back(t);
@@ -58,43 +101,48 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
 
 void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size) {
   if (options.weight_function || !options.background_weights.empty() || options.gradation > 0 ||
-      options.area_function || !options.background_areas.empty())
+      options.area_function || !options.background_areas.empty() || !size.bounded())
     return;
-  // The input boundary, discretised as the mesh will discretise it.
-  Decomposition boundary;
-  boundary.points = domain.points;
-  boundary.segments = domain.segments;
-  boundary.segment_origin.resize(domain.segments.size());
-  for (std::uint32_t j = 0; j < domain.segments.size(); ++j) boundary.segment_origin[j] = j;
-  const Decomposition pieces = discretise(boundary, size.options());
-  const double area = domain_area(domain);
-  const double fallback = std::sqrt(area / std::max<double>(1, options.subdomains));
-  // Each piece's work, at its midpoint, in units of area: kappa A per
-  // triangle where there is a size bound, so the decomposition's area term
-  // (refine x area, Sec. 5.2) counts the interior triangles; without one
-  // the boundary is the whole work, scaled to drown the area term.
+  // The boundary layer's work as background weights (Sec. 5.2, case 2), in
+  // units of area (kappa A per triangle), so that the decomposition's own
+  // area term (refine x area) counts the interior: beta kappa sqrt(A) per
+  // unit of boundary. Each input segment is cut into pieces a few sizes long,
+  // each piece's sample a hair inside the domain from its midpoint, towards
+  // the centroid of the domain's triangle on that segment (a point on the
+  // boundary would fall in no face or in two).
+  const Triangulation tri = triangulate(domain);
+  std::vector<Point> inside(domain.segments.size());
+  std::vector<std::uint8_t> found(domain.segments.size(), 0);
+  for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t j = tri.segment_of[t][i];
+      if (j == no_index || found[j]) continue;
+      const auto& v = tri.triangles[t];
+      inside[j] = triangle_centroid(tri.points[v[0]], tri.points[v[1]], tri.points[v[2]]);
+      found[j] = 1;
+    }
+  }
   std::vector<ValuedPoint> samples;
-  samples.reserve(pieces.segments.size());
-  double total = 0;
-  for (const Segment& s : pieces.segments) {
-    const Point a = pieces.points[s.a], b = pieces.points[s.b], m = midpoint(a, b);
-    const double bound = size.area_at(m);
-    const double w = piece_work(a, b, bound, fallback);
-    samples.push_back({m, std::isfinite(bound) ? w * kappa * bound : w});
-    total += w;
+  for (std::uint32_t j = 0; j < domain.segments.size(); ++j) {
+    if (!found[j]) continue;
+    const Point a = domain.points[domain.segments[j].a], b = domain.points[domain.segments[j].b];
+    const double length = distance(a, b);
+    const double size_at = std::sqrt(size.area_at(midpoint(a, b)));
+    if (!std::isfinite(size_at) || !(size_at > 0)) continue;
+    const auto pieces = static_cast<std::size_t>(std::clamp(std::ceil(length / (piece_in_sizes * size_at)), 1.0, 1e6));
+    for (std::size_t k = 0; k < pieces; ++k) {
+      const Point m = lerp(a, b, (static_cast<double>(k) + 0.5) / static_cast<double>(pieces));
+      const double piece = length / static_cast<double>(pieces);
+      samples.push_back({lerp(m, inside[j], 1e-3), beta * kappa * piece * std::sqrt(size.area_at(m))});
+    }
   }
-  // Where the boundary adds little to the interior's triangles, the area is
-  // as good a measure of work, and an area-balanced decomposition is
-  // rebalanced (DecomposeOptions::rebalance_above) where a graded one is
-  // not: keep the areas then.
-  const double interior = size.bounded() && std::isfinite(size.area_at(samples.empty() ? Point{} : samples[0].at))
-                              ? area / (kappa * size.area_at(samples[0].at))
-                              : 0.0;
-  if (size.bounded() && total < boundary_share_for_work * interior) return;
-  if (!size.bounded()) {
-    for (ValuedPoint& v : samples) v.value *= 100.0 * area / std::max(total, 1.0);
-  }
-  options.background_weights = std::move(samples);
+  // Where the boundary layer is a small share of the work, the areas say as
+  // much, and the area-balanced decomposition is the more even one (its
+  // splits are exact; graded ones follow samples): keep the areas then.
+  double boundary = 0;
+  for (const ValuedPoint& v : samples) boundary += v.value;
+  if (boundary < min_boundary_share * domain_area(domain)) return;
+  options.background_weights = cluster_samples(samples);
   options.gradation = options.refine;
 }
 
