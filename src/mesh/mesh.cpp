@@ -75,6 +75,7 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
         detail::RefineSettings mine = settings;
         mine.meshed = &done;
         mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
+        mine.expected_triangles = work[k];
         out[k] = detail::refine_subdomain(local.pslg, local.splittable, mine);
         const double s = clock.lap();
         report.subdomain_seconds[k] += s;

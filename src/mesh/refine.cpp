@@ -101,6 +101,7 @@ private:
   std::size_t steiner_ = 0;
   bool out_of_budget_ = false;
   std::size_t next_check_ = 8192;  // steiner_ at the next resource check
+  std::vector<std::uint32_t> encroached_;  // scratch of try_triangle
 };
 
 void Refiner::find_sharp_corners() {
@@ -275,7 +276,8 @@ void Refiner::try_triangle(std::uint32_t t) {
     return;
   }
   const RefinementMesh::Walk w = m_.walk(t, p);
-  std::vector<std::uint32_t> encroached;
+  std::vector<std::uint32_t>& encroached = encroached_;
+  encroached.clear();
   if (w.blocked_by != no_index) {
     encroached.push_back(w.blocked_by);  // beyond a segment: its diametral circle holds p (or p is outside)
   } else if (w.triangle == no_index) {
@@ -427,6 +429,8 @@ std::vector<RefinementSegment> refinement_segments(const Pslg& pslg, const std::
 
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings) {
   RefinementMesh m(triangulate(pslg), refinement_segments(pslg, splittable));
+  // 10% over the estimate: most meshes fit without a copy, few waste much.
+  m.reserve(static_cast<std::size_t>(std::min(1.1 * settings.expected_triangles, 4e8)));
   Refiner refiner(m, settings);
   refiner.run();
   SubdomainMesh out;

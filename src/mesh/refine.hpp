@@ -22,6 +22,7 @@ struct RefineSettings {
   const SizeField* size = nullptr;  // the area bound (nullptr = none)
   bool off_centres = true;
   std::size_t max_steiner_points = 0;  // 0 = no budget
+  double expected_triangles = 0;       // to reserve room (docs/mesh.md, "Balance by work")
   // Checked every few thousand new vertices: throws LimitError past the
   // run's time or memory limit (nullptr = none).
   const ResourceGuard* guard = nullptr;

@@ -43,6 +43,18 @@ RefinementMesh::RefinementMesh(const Triangulation& tri, std::vector<RefinementS
   }
 }
 
+void RefinementMesh::reserve(std::size_t triangles) {
+  tv_.reserve(3 * triangles);
+  tn_.reserve(3 * triangles);
+  seg_.reserve(3 * triangles);
+  alive_.reserve(triangles);
+  const std::size_t vertices = triangles / 2 + 16;
+  points_.reserve(vertices);
+  vertex_segment_.reserve(vertices);
+  vertex_parameter_.reserve(vertices);
+  vertex_triangle_.reserve(vertices);
+}
+
 void RefinementMesh::set_corner_home(std::uint32_t t) {
   for (std::uint32_t i = 0; i < 3; ++i) vertex_triangle_[tv_[3 * t + i]] = t;
 }

@@ -36,6 +36,10 @@ public:
   // i is segments[i] (tri.segment_of indexes it).
   RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments);
 
+  // Room for this many triangles (and about half as many vertices), so
+  // that growing does not copy the arrays again and again.
+  void reserve(std::size_t triangles);
+
   std::span<const Point> points() const noexcept { return points_; }
   Point point(std::uint32_t v) const noexcept { return points_[v]; }
   std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
