@@ -180,9 +180,12 @@ int mesh_body(void* context) {
   const auto start = std::chrono::steady_clock::now();
   Progress progress(!args.quiet);
   MeshOptions options = args.options;
-  if (progress.enabled()) options.progress = [&progress](std::uint32_t done, std::uint32_t total) {
-    progress.count(done, total);
-  };
+  if (progress.enabled()) {
+    options.decomposition.progress = [&progress](std::uint32_t done, std::uint32_t target) {
+      progress.count(done, target);
+    };
+    options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
+  }
   progress.say("reading " + args.input);
   if (!args.sizes_file.empty()) options.size.background_areas = read_background(args.sizes_file, true);
   const Pslg domain = read_domain(args.input);

@@ -6,9 +6,9 @@
 
 namespace madd::cli {
 
-std::string count_text(std::uint32_t done, std::uint32_t target, double seconds) {
+std::string count_text(std::uint32_t done, std::uint32_t target, double seconds, const char* doing) {
   char text[96];
-  std::snprintf(text, sizeof text, "decomposing: %u/%u subdomains, %.1f s", done, target, seconds);
+  std::snprintf(text, sizeof text, "%s: %u/%u subdomains, %.1f s", doing, done, target, seconds);
   return text;
 }
 
@@ -20,12 +20,12 @@ void Progress::say(const std::string& text) {
   show(text);
 }
 
-void Progress::count(std::uint32_t done, std::uint32_t target) {
+void Progress::count(std::uint32_t done, std::uint32_t target, const char* doing) {
   const auto now = std::chrono::steady_clock::now();
   if (counted_ && now - last_count_ < std::chrono::milliseconds(250)) return;
   counted_ = true;
   last_count_ = now;
-  show(count_text(done, target, std::chrono::duration<double>(now - phase_start_).count()));
+  show(count_text(done, target, std::chrono::duration<double>(now - phase_start_).count(), doing));
 }
 
 void Progress::done() {

@@ -7,8 +7,8 @@
 
 namespace madd::cli {
 
-// "decomposing: 312/1000 subdomains, 1.4 s".
-std::string count_text(std::uint32_t done, std::uint32_t target, double seconds);
+// "decomposing: 312/1000 subdomains, 1.4 s" (or "meshing: ...").
+std::string count_text(std::uint32_t done, std::uint32_t target, double seconds, const char* doing = "decomposing");
 
 // The phase, and while decomposing the subdomains done of N and the time since
 // the phase began, rewritten in place (\r) at most a few times a second.
@@ -23,7 +23,7 @@ public:
   bool enabled() const { return enabled_; }
   void say(const std::string& text);
   // DecomposeOptions::progress: the first count at once, then every 0.25 s.
-  void count(std::uint32_t done, std::uint32_t target);
+  void count(std::uint32_t done, std::uint32_t target, const char* doing = "decomposing");
   void done();
 
 private:
