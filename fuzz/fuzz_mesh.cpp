@@ -17,9 +17,12 @@
 //
 // Each run stays small: at most 300 vertices, and the triangle count a
 // domain asks for at most ~20k, estimated as the larger of area / max area
-// and perimeter^2 / area (a channel of width w and length L needs ~L / w
-// triangles across its length; perimeter^2 / area = 4 L / w). The
-// decomposition has a 2 s time limit. Only madd::Error other than
+// and 4 x the boundary pieces the decoupling will cut (each segment split to
+// half its local feature size, or 1.18 sqrt(max area): src/mesh/discretise.cpp,
+// here from 17 samples per segment). A sliver 1e-7 wide and 0.05 long in a
+// unit domain needs ~1e6 pieces however round the domain is (perimeter^2 /
+// area misses it: the first campaign's only slow input). The decomposition
+// has a 2 s time limit; the mesher has no time limit of its own. Only madd::Error other than
 // InternalError may escape: OptionError, DecompositionError and LimitError
 // are expected outcomes for hostile inputs; an InternalError (the self-check
 // failed), a failed property here, a crash or a hang is a finding and aborts.
@@ -34,9 +37,28 @@
 #include "madd/mesh.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
+#include "mesh/feature_distance.hpp"
 #include "quality/mesh_angle.hpp"
 
 namespace {
+
+// About how many pieces discretise() cuts the input boundary into: the
+// integral of 1 / h along every segment, h = min(0.5 lfs, 1.18 sqrt(max_area)).
+double boundary_pieces(const madd::Pslg& p, double max_area) {
+  const madd::detail::FeatureDistance features(p.points, p.segments);
+  double pieces = 0.0;
+  for (std::uint32_t j = 0; j < p.segments.size(); ++j) {
+    const madd::Point a = p.points[p.segments[j].a], b = p.points[p.segments[j].b];
+    double sum = 0.0;
+    for (int i = 0; i <= 16; ++i) {
+      double h = 0.5 * features.to_nonincident(madd::lerp(a, b, i / 16.0), j);
+      if (max_area > 0) h = std::min(h, 1.18 * std::sqrt(max_area));
+      sum += h > 0 ? 1.0 / h : 0.0;
+    }
+    pieces += madd::distance(a, b) * sum / 17.0;
+  }
+  return pieces;
+}
 
 [[noreturn]] void fail(const madd::MeshOptions& o, const char* what) {
   std::fprintf(stderr,
@@ -83,13 +105,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (file.pslg.points.size() > 300) return 0;
     madd::validate(file.pslg, file.source);
     const double area = madd::domain_area(file.pslg);
-    double perimeter = 0.0;
-    for (const madd::Segment& seg : file.pslg.segments)
-      perimeter += madd::distance(file.pslg.points[seg.a], file.pslg.points[seg.b]);
     options.size.max_area = area * area_fractions[k2 % 4];
     if (!std::isfinite(options.size.max_area)) return 0;
     const double wanted = std::max(options.size.max_area > 0 ? area / options.size.max_area : 0.0,
-                                   perimeter * perimeter / area);
+                                   4.0 * boundary_pieces(file.pslg, options.size.max_area));
     if (!(wanted <= 2e4)) return 0;
     const madd::Mesh m = madd::mesh(file.pslg, options);
     check_properties(m, options);
