@@ -19,10 +19,13 @@
 // domain asks for at most ~20k, estimated as the larger of area / max area
 // and 4 x the boundary pieces the decoupling will cut (each segment split to
 // half its local feature size, or 1.18 sqrt(max area): src/mesh/discretise.cpp,
-// here from 17 samples per segment). A sliver 1e-7 wide and 0.05 long in a
-// unit domain needs ~1e6 pieces however round the domain is (perimeter^2 /
-// area misses it: the first campaign's only slow input). The decomposition
-// has a 2 s time limit; the mesher has no time limit of its own. Only madd::Error other than
+// here from 17 samples per segment), plus 20 / alpha for every two segments
+// meeting at an angle alpha < 60 degrees (radians; the refined layers along
+// a sharp wedge, whose width there sets the triangle size: a 0.02 degree
+// spike 5 long in a unit square gets 30k to 140k triangles with or without an
+// area bound). A sliver 1e-7 wide and 0.05 long in a unit domain needs ~1e6
+// pieces however round the domain is (perimeter^2 / area misses it). The
+// decomposition has a 2 s time limit; the mesher has no time limit of its own. Only madd::Error other than
 // InternalError may escape: OptionError, DecompositionError and LimitError
 // are expected outcomes for hostile inputs; an InternalError (the self-check
 // failed), a failed property here, a crash or a hang is a finding and aborts.
@@ -31,7 +34,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <string_view>
+#include <vector>
 
 #include "madd/error.hpp"
 #include "madd/mesh.hpp"
@@ -58,6 +63,25 @@ double boundary_pieces(const madd::Pslg& p, double max_area) {
     pieces += madd::distance(a, b) * sum / 17.0;
   }
   return pieces;
+}
+
+// About how many triangles the sharp corners add: 20 / alpha for every two
+// segments meeting at an angle alpha below 60 degrees (either side of them
+// may be the domain's; a sharp notch is counted too).
+double sharp_corner_triangles(const madd::Pslg& p) {
+  std::vector<std::vector<std::uint32_t>> around(p.points.size());
+  for (const madd::Segment& s : p.segments) {
+    around[s.a].push_back(s.b);
+    around[s.b].push_back(s.a);
+  }
+  double triangles = 0.0;
+  for (std::size_t v = 0; v < around.size(); ++v)
+    for (std::size_t i = 0; i < around[v].size(); ++i)
+      for (std::size_t j = i + 1; j < around[v].size(); ++j) {
+        const double alpha = madd::angle_at(p.points[v], p.points[around[v][i]], p.points[around[v][j]]);
+        if (alpha < std::numbers::pi / 3) triangles += 20.0 / std::max(alpha, 1e-300);
+      }
+  return triangles;
 }
 
 [[noreturn]] void fail(const madd::MeshOptions& o, const char* what) {
@@ -108,7 +132,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.size.max_area = area * area_fractions[k2 % 4];
     if (!std::isfinite(options.size.max_area)) return 0;
     const double wanted = std::max(options.size.max_area > 0 ? area / options.size.max_area : 0.0,
-                                   4.0 * boundary_pieces(file.pslg, options.size.max_area));
+                                   4.0 * boundary_pieces(file.pslg, options.size.max_area) +
+                                       sharp_corner_triangles(file.pslg));
     if (!(wanted <= 2e4)) return 0;
     const madd::Mesh m = madd::mesh(file.pslg, options);
     check_properties(m, options);
