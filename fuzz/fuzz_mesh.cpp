@@ -17,16 +17,17 @@
 //
 // Each run stays small: at most 300 vertices, and the triangle count a
 // domain asks for at most ~20k, estimated as the larger of area / max area
-// and 4 x the boundary pieces the decoupling will cut (each segment split to
-// half its local feature size, or 1.18 sqrt(max area): src/mesh/discretise.cpp,
-// here from 17 samples per segment), plus 20 / alpha for every two segments
-// meeting at an angle alpha < 60 degrees (radians; the refined layers along
-// a sharp wedge, whose width there sets the triangle size: a 0.02 degree
-// spike 5 long in a unit square gets 30k to 140k triangles with or without an
-// area bound). A sliver 1e-7 wide and 0.05 long in a unit domain needs ~1e6
-// pieces however round the domain is (perimeter^2 / area misses it). The
-// decomposition has a 2 s time limit; the mesher has no time limit of its own. Only madd::Error other than
-// InternalError may escape: OptionError, DecompositionError and LimitError
+// and (4 x the boundary pieces the decoupling will cut, each segment split
+// to half its local feature size or 1.18 sqrt(max area), src/mesh/discretise.cpp,
+// here from 17 samples per segment; plus 20 / alpha for every two segments
+// meeting at an angle alpha < 60 degrees, in radians: the refined layers
+// along a sharp wedge, whose width there sets the triangle size). Both terms
+// come from the first campaign's slow inputs (docs/hostile.md, Issue 14): a
+// sliver 1e-7 wide and 0.05 long in a unit domain needs ~1e6 pieces however
+// round the domain is, and a 0.02 degree spike 5 long on a unit square gets
+// 30k to 140k triangles with or without an area bound. The decomposition
+// has a 2 s time limit; the mesher has no time limit of its own. Only
+// madd::Error other than InternalError may escape: OptionError, DecompositionError and LimitError
 // are expected outcomes for hostile inputs; an InternalError (the self-check
 // failed), a failed property here, a crash or a hang is a finding and aborts.
 #include <algorithm>
