@@ -57,7 +57,7 @@ double boundary_pieces(const madd::Pslg& p, double max_area) {
     const madd::Point a = p.points[p.segments[j].a], b = p.points[p.segments[j].b];
     double sum = 0.0;
     for (int i = 0; i <= 16; ++i) {
-      double h = 0.5 * features.to_nonincident(madd::lerp(a, b, i / 16.0), j);
+      double h = 0.5 * features.to_nonincident(madd::lerp(a, b, i / 16.0), p.segments[j].a, p.segments[j].b);
       if (max_area > 0) h = std::min(h, 1.18 * std::sqrt(max_area));
       sum += h > 0 ? 1.0 / h : 0.0;
     }
