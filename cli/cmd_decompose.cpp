@@ -17,6 +17,7 @@
 
 #include "background_mesh.hpp"
 #include "commands.hpp"
+#include "option_values.hpp"
 #include "option_names.hpp"
 #include "progress.hpp"
 #include "madd/atomic_write.hpp"
@@ -250,20 +251,6 @@ int decompose_body(void* context) {
   const bool report_on_stdout = args.report && args.report_out.empty();
   if (!args.quiet) print_summary(report_on_stdout ? stderr : stdout, args, d, m);
   return exit_ok;
-}
-
-bool parse_number(const char* text, double& value) {
-  char* end = nullptr;
-  value = std::strtod(text, &end);
-  return end != text && *end == '\0' && std::isfinite(value);
-}
-
-bool parse_count(const char* text, unsigned long long limit, unsigned long long& value) {
-  if (text[0] < '0' || text[0] > '9') return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoull(text, &end, 10);
-  return *end == '\0' && errno == 0 && value <= limit;
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_smoothing, opt_split, opt_subdomains_file, opt_svg, opt_svg_numbers,

@@ -16,6 +16,7 @@
 
 #include "background_mesh.hpp"
 #include "commands.hpp"
+#include "option_values.hpp"
 #include "progress.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
@@ -76,20 +77,6 @@ struct MeshArgs {
   bool report = false;
   bool quiet = false;
 };
-
-bool parse_number(const char* text, double& value) {
-  char* end = nullptr;
-  value = std::strtod(text, &end);
-  return end != text && *end == '\0' && std::isfinite(value);
-}
-
-bool parse_count(const char* text, unsigned long long limit, unsigned long long& value) {
-  if (text[0] < '0' || text[0] > '9') return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoull(text, &end, 10);
-  return *end == '\0' && errno == 0 && value <= limit;
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
