@@ -210,3 +210,29 @@ TEST_CASE("mesh: a time or memory limit reached while refining throws LimitError
   o.decomposition.max_memory_bytes = 1;
   CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o, report), madd::LimitError);
 }
+
+TEST_CASE("mesh: under a size function, balance by work evens the triangle counts that balance by area leaves uneven") {
+  // Triangles 26 times smaller at the left edge of the pipe than at the right.
+  const madd::Pslg domain = pipe();
+  madd::MeshOptions o = options_for(8, 30, 0.0);
+  o.size.area_function = [](double x, double) { return 0.0004 + 0.01 * (x + 10) * (x + 10) / 100; };
+  const auto largest_over_mean = [](const Mesh& m) {
+    std::size_t largest = 0;
+    for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
+      largest = std::max<std::size_t>(largest, m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k]);
+    return static_cast<double>(largest) * m.subdomain_count() / static_cast<double>(m.triangles.size());
+  };
+  o.balance_by_work = false;
+  const Mesh by_area = madd::mesh(domain, o);
+  o.balance_by_work = true;
+  const Mesh by_work = madd::mesh(domain, o);
+  CHECK(largest_over_mean(by_area) > 2.0);
+  CHECK(largest_over_mean(by_work) < 1.25);
+  check_mesh(by_work, domain, 0);
+  // Every triangle within the function's bound at its centroid.
+  for (const auto& t : by_work.triangles) {
+    const Point a = by_work.points[t[0]], b = by_work.points[t[1]], c = by_work.points[t[2]];
+    const Point g = madd::triangle_centroid(a, b, c);
+    REQUIRE(madd::triangle_area(a, b, c) <= o.size.area_function(g.x, g.y) * (1 + 1e-12));
+  }
+}

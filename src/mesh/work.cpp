@@ -17,7 +17,9 @@
 #include <limits>
 
 #include "madd/mesh.hpp"
+#include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
+#include "mesh/merge.hpp"
 
 namespace madd::detail {
 
@@ -77,14 +79,35 @@ std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples
   return out;
 }
 
+// The interior's triangles under a varying size bound: the subdomain's
+// triangulation (its ring vertices only), each triangle's area over kappa
+// times the smallest bound at its centroid and edge midpoints (these
+// triangles are large, so the smallest of several samples, to err high: the
+// estimate also sets the subdomain's Steiner point budget).
+double varying_interior(const Decomposition& d, std::uint32_t k, const SizeField& size) {
+  const LocalDomain local = local_domain(d, k);
+  const Triangulation tri = triangulate(local.pslg);
+  double t = 0;
+  for (const auto& v : tri.triangles) {
+    const Point a = tri.points[v[0]], b = tri.points[v[1]], c = tri.points[v[2]];
+    const double bound = std::min({size.area_at(triangle_centroid(a, b, c)), size.area_at(midpoint(a, b)),
+                                   size.area_at(midpoint(b, c)), size.area_at(midpoint(c, a))});
+    if (std::isfinite(bound) && bound > 0) t += triangle_area(a, b, c) / (kappa * bound);
+  }
+  return t;
+}
+
 } // namespace
 
 std::vector<double> expected_triangles(const Decomposition& d, const SizeField& size) {
   std::vector<double> out;
   out.reserve(d.subdomains.size());
-  for (const Subdomain& s : d.subdomains) {
+  const bool uniform = !size.options().area_function && size.options().background_areas.empty();
+  for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
+    const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) : 0.0;
+    if (!uniform) t = varying_interior(d, sub, size);
     for (std::size_t r = 0; r < s.rings.size(); ++r) {
       for (std::size_t k = 0; k < s.rings[r].size(); ++k) {
         if (d.is_separator(s.ring_segments[r][k])) continue;
@@ -99,20 +122,14 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
   return out;
 }
 
-void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size) {
-  if (options.weight_function || !options.background_weights.empty() || options.gradation > 0 ||
-      options.area_function || !options.background_areas.empty() || !size.bounded())
-    return;
-  // The boundary layer's work as background weights (Sec. 5.2, case 2), in
-  // units of area (kappa A per triangle), so that the decomposition's own
-  // area term (refine x area) counts the interior: beta kappa sqrt(A) per
-  // unit of boundary. Each input segment is cut into pieces a few sizes long,
-  // each piece's sample a hair inside the domain from its midpoint, towards
-  // the centroid of the domain's triangle on that segment (a point on the
-  // boundary would fall in no face or in two).
-  const Triangulation tri = triangulate(domain);
-  std::vector<Point> inside(domain.segments.size());
-  std::vector<std::uint8_t> found(domain.segments.size(), 0);
+namespace {
+
+// Per input segment: a point strictly inside the domain next to it, the
+// centroid of the domain's triangle on it (found[j] false when none).
+void points_inside_next_to_segments(const Triangulation& tri, std::size_t segments, std::vector<Point>& inside,
+                                    std::vector<std::uint8_t>& found) {
+  inside.assign(segments, Point{});
+  found.assign(segments, 0);
   for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t j = tri.segment_of[t][i];
@@ -122,7 +139,61 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeFiel
       found[j] = 1;
     }
   }
+}
+
+// The interior's work under a varying size bound: the integral of
+// 1 / (kappa A), as one sample per cell of a grid over the domain, at each
+// cell centre inside it (found by the cells each triangle of the domain's
+// triangulation covers, exact orientation tests).
+void add_interior_samples(const Triangulation& tri, const SizeField& size, std::vector<ValuedPoint>& samples) {
+  Point lo = tri.points[0], hi = lo;
+  for (const Point& p : tri.points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  constexpr int cells = 128;
+  const double w = (hi.x - lo.x) / cells, h = (hi.y - lo.y) / cells;
+  if (!(w > 0) || !(h > 0)) return;
+  for (const auto& t : tri.triangles) {
+    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
+    const int i0 = std::max(0, static_cast<int>(std::floor((std::min({a.x, b.x, c.x}) - lo.x) / w - 0.5)));
+    const int i1 = std::min(cells - 1, static_cast<int>(std::ceil((std::max({a.x, b.x, c.x}) - lo.x) / w - 0.5)));
+    const int j0 = std::max(0, static_cast<int>(std::floor((std::min({a.y, b.y, c.y}) - lo.y) / h - 0.5)));
+    const int j1 = std::min(cells - 1, static_cast<int>(std::ceil((std::max({a.y, b.y, c.y}) - lo.y) / h - 0.5)));
+    for (int i = i0; i <= i1; ++i) {
+      for (int j = j0; j <= j1; ++j) {
+        const Point q{lo.x + (i + 0.5) * w, lo.y + (j + 0.5) * h};
+        // Half-open ownership: a centre on an edge belongs to one triangle only.
+        if (!(orient2d(a, b, q) > 0 && orient2d(b, c, q) > 0 && orient2d(c, a, q) > 0)) continue;
+        const double bound = size.area_at(q);
+        if (std::isfinite(bound) && bound > 0) samples.push_back({q, w * h / (kappa * bound)});
+      }
+    }
+  }
+}
+
+} // namespace
+
+void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size) {
+  if (options.weight_function || !options.background_weights.empty() || options.gradation > 0 ||
+      options.area_function || !options.background_areas.empty() || !size.bounded())
+    return;
+  // The boundary layer's work as background weights (Sec. 5.2, case 2),
+  // beta / sqrt(A) triangles per unit of boundary: each input segment cut
+  // into pieces a few sizes long, each piece's sample a hair inside the
+  // domain from its midpoint, towards the centroid of the domain's triangle
+  // on that segment (a point on the boundary would fall in no face or in two).
+  const Triangulation tri = triangulate(domain);
+  std::vector<Point> inside;
+  std::vector<std::uint8_t> found;
+  points_inside_next_to_segments(tri, domain.segments.size(), inside, found);
+  // With one area bound everywhere, the decomposition's own area term
+  // (refine x area) counts the interior exactly, and the samples are put in
+  // its units (kappa A per triangle). With a varying bound the interior is
+  // sampled too, and everything is scaled to drown the area term.
+  const bool uniform = !size.options().area_function && size.options().background_areas.empty();
   std::vector<ValuedPoint> samples;
+  double boundary = 0;
   for (std::uint32_t j = 0; j < domain.segments.size(); ++j) {
     if (!found[j]) continue;
     const Point a = domain.points[domain.segments[j].a], b = domain.points[domain.segments[j].b];
@@ -132,16 +203,26 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeFiel
     const auto pieces = static_cast<std::size_t>(std::clamp(std::ceil(length / (piece_in_sizes * size_at)), 1.0, 1e6));
     for (std::size_t k = 0; k < pieces; ++k) {
       const Point m = lerp(a, b, (static_cast<double>(k) + 0.5) / static_cast<double>(pieces));
-      const double piece = length / static_cast<double>(pieces);
-      samples.push_back({lerp(m, inside[j], 1e-3), beta * kappa * piece * std::sqrt(size.area_at(m))});
+      const double bound = size.area_at(m);
+      if (!std::isfinite(bound) || !(bound > 0)) continue;
+      const double triangles = beta * (length / static_cast<double>(pieces)) / std::sqrt(bound);
+      samples.push_back({lerp(m, inside[j], 1e-3), uniform ? triangles * kappa * bound : triangles});
+      boundary += uniform ? triangles * kappa * bound : 0.0;
     }
   }
-  // Where the boundary layer is a small share of the work, the areas say as
-  // much, and the area-balanced decomposition is the more even one (its
-  // splits are exact; graded ones follow samples): keep the areas then.
-  double boundary = 0;
-  for (const ValuedPoint& v : samples) boundary += v.value;
-  if (boundary < min_boundary_share * domain_area(domain)) return;
+  const double area = domain_area(domain);
+  if (uniform) {
+    // Where the boundary layer is a small share of the work, the areas say
+    // as much, and the area-balanced decomposition is the more even one (its
+    // splits are exact; graded ones follow samples): keep the areas then.
+    if (boundary < min_boundary_share * area) return;
+  } else {
+    add_interior_samples(tri, size, samples);
+    double total = 0;
+    for (const ValuedPoint& v : samples) total += v.value;
+    if (!(total > 0)) return;
+    for (ValuedPoint& v : samples) v.value *= 100.0 * area / total;
+  }
   options.background_weights = cluster_samples(samples);
   options.gradation = options.refine;
 }
