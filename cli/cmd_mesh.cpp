@@ -49,6 +49,7 @@ constexpr const char* mesh_help =
     "      --balance area|work  what the decomposition balances: the expected triangle\n"
     "                         count of each subdomain (work, default) or its area\n"
     "      --no-off-centres   insert circumcentres only (more triangles)\n"
+    "      --no-verify        skip the self-check (verify_mesh) before writing\n"
     "decomposition:\n"
     "  -n, --subdomains N     number of subdomains (default: the thread count x 4)\n"
     "      --min-angle DEG    Phi0, the smallest angle a separator makes (default 60)\n"
@@ -206,7 +207,7 @@ int mesh_body(void* context) {
 }
 
 enum LongOnly : int { opt_min_angle = 256, opt_seed, opt_size_fn, opt_sizes, opt_balance, opt_no_off_centres, opt_msh,
-                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory, opt_neigh, opt_edge, opt_rebalance };
+                      opt_vtu, opt_split_mesh, opt_report, opt_quiet, opt_time_limit, opt_max_memory, opt_neigh, opt_edge, opt_rebalance, opt_no_verify };
 
 std::string apply_option(int c, const char* arg, MeshArgs& args) {
   double x = 0;
@@ -235,6 +236,7 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     else return "--balance takes 'work' or 'area'";
     return {};
   case opt_no_off_centres: o.off_centres = false; return {};
+  case opt_no_verify: o.verify = false; return {};
   case 'n':
     if (!parse_count(arg, 0xFFFFFFFFull, k) || k == 0) return "-n needs a whole number >= 1";
     o.decomposition.subdomains = static_cast<std::uint32_t>(k);
@@ -287,6 +289,7 @@ int run_mesh(int argc, char** argv) {
       {"sizes", required_argument, nullptr, opt_sizes},
       {"balance", required_argument, nullptr, opt_balance},
       {"no-off-centres", no_argument, nullptr, opt_no_off_centres},
+      {"no-verify", no_argument, nullptr, opt_no_verify},
       {"subdomains", required_argument, nullptr, 'n'},
       {"min-angle", required_argument, nullptr, opt_min_angle},
       {"threads", required_argument, nullptr, 'j'},

@@ -56,6 +56,9 @@ struct MeshOptions {
   // Insert Ungor's off-centre instead of a far circumcentre (fewer triangles,
   // the same guarantee).
   bool off_centres = true;
+  // Run verify_mesh before returning (a quarter of the time or more; off
+  // only when the caller checks the mesh itself).
+  bool verify = true;
   // Progress: called on the calling thread with the number of subdomains
   // meshed so far and N. Like DecomposeOptions::progress it cannot change
   // the result; if it throws, mesh() stops and rethrows.

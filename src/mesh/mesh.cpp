@@ -142,7 +142,7 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   report.phases.push_back({"refine", clock.lap()});
   Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
-  const Verification v = verify_mesh(m, domain, options.size);
+  const Verification v = options.verify ? verify_mesh(m, domain, options.size) : Verification{};
   report.phases.push_back({"verify", clock.lap()});
   if (!v.ok()) {
     std::string text = "mesh self-check failed (a bug in madd): " + v.problems.front();
