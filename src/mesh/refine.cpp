@@ -187,11 +187,12 @@ Point Refiner::insertion_point(std::uint32_t t, const TriangleShape& s) const {
   return mid + (h / d) * (centre - mid);
 }
 
+// The subsegment has an end at a sharp corner (an end of its segment where
+// two pieces meet below 60 degrees).
 bool Refiner::at_sharp_corner(std::uint32_t h) const {
   const RefinementSegment& s = m_.segment(m_.segment_of(h));
-  const std::uint32_t o = m_.origin(h), d = m_.dest(h);
-  return (o == s.a || o == s.b || d == s.a || d == s.b) &&
-         ((s.a < sharp_.size() && sharp_[s.a]) || (s.b < sharp_.size() && sharp_[s.b]));
+  const auto sharp_end = [&](std::uint32_t v) { return (v == s.a || v == s.b) && v < sharp_.size() && sharp_[v]; };
+  return sharp_end(m_.origin(h)) || sharp_end(m_.dest(h));
 }
 
 // The midpoint parameter, or, with one end at a sharp corner, the power of
