@@ -53,9 +53,12 @@
 #include <unistd.h>
 #include <vector>
 
+#include "scratch_files.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+using madd::test::TempDir;
 
 const fs::path source_root = MADD_SOURCE_DIR;
 
@@ -330,19 +333,6 @@ double report_value(const std::string& json, const std::string& key) {
 }
 
 #ifdef MADD_CLI_PATH
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / ("madd-docs-test-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
 // Runs the CLI with `arguments` (shell syntax) in `dir`; its standard output
 // goes to `log`, its standard error to `log` + ".err".
 int run_cli(const fs::path& dir, const std::string& arguments, const fs::path& log) {

@@ -23,6 +23,7 @@
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "mesh_fixtures.hpp"
+#include "scratch_files.hpp"
 #include "mesh_output_test_support.hpp"
 
 namespace {
@@ -94,32 +95,6 @@ std::uint32_t index_of(const std::string& word, unsigned first_index) {
   REQUIRE(v >= 0);
   return static_cast<std::uint32_t>(v);
 }
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A fresh empty directory under the system temp dir, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("madd-mesh-output-test-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  std::set<std::string> names(const fs::path& dir) const {
-    std::set<std::string> out;
-    for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
-    return out;
-  }
-};
 
 // The .node and .ele of a whole mesh or of one piece, read back.
 struct TriangleMesh {
@@ -361,7 +336,7 @@ TEST_CASE("split mesh: the pieces' local-to-global maps give back the mesh, sepa
   for (const Mesh* mesh : meshes()) {
     for (const unsigned first_index : {0u, 1u}) {
       CAPTURE(first_index);
-      TempDir tmp;
+      TempDir tmp("mesh-output");
       const std::uint32_t n = mesh->subdomain_count();
       write_split_mesh(*mesh, (tmp.path / "parts").string(), "m", first_index);
       std::set<std::string> expected_names;
@@ -423,7 +398,7 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
   CHECK(split_mesh_file_name("m", 0, 1, ".node") == "m-0.node");
   CHECK(split_mesh_file_name("m", 7, 11, ".ele") == "m-07.ele");
   CHECK(split_mesh_file_name("pipe", 42, 1000, ".node") == "pipe-042.node");
-  TempDir tmp;
+  TempDir tmp("mesh-output");
   const fs::path dir = tmp.path / "parts";
   write_split_mesh(pipe_mesh(), dir.string(), "m");
   CHECK(tmp.names(dir).size() == 12);
@@ -437,7 +412,7 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
 }
 
 TEST_CASE("write_mesh writes the chosen formats; a missing directory fails and leaves nothing") {
-  TempDir tmp;
+  TempDir tmp("mesh-output");
   MeshFormats all;
   all.msh = all.vtu = all.neigh = all.edge = true;
   all.first_index = 0;
@@ -492,7 +467,7 @@ TEST_CASE("gmsh reads the .msh back with the same groups (skipped without gmsh)"
     MESSAGE("skipped: gmsh is not installed (apt-get install gmsh to run this check)");
     return;
   }
-  TempDir tmp;
+  TempDir tmp("mesh-output");
   for (const Mesh* mesh : meshes()) {
     const fs::path in = tmp.path / "in.msh", out = tmp.path / "out.msh";
     std::ofstream(in) << format_mesh_msh(*mesh);

@@ -17,10 +17,13 @@
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "metrics_fixtures.hpp"
+#include "scratch_files.hpp"
 
 namespace {
 
 using namespace madd;
+using madd::test::read_text;
+using madd::test::TempDir;
 namespace fs = std::filesystem;
 
 std::size_t count_of(const std::string& text, const std::string& what) {
@@ -28,27 +31,6 @@ std::size_t count_of(const std::string& text, const std::string& what) {
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
   return n;
 }
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A fresh empty directory under the system temp dir, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("madd-output-test-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 // Parses the subdomain file (docs/formats.md, output 3) back into a Decomposition
 // (points, segments, rings' segments, areas, weights, hole points).
@@ -158,7 +140,7 @@ TEST_CASE("output 2 of a real decomposition: every separator in two files, every
   options.subdomains = 8;
   const Decomposition d = decompose(domain, options);
   REQUIRE(verify_decomposition(d, domain, 8).ok());
-  TempDir tmp;
+  TempDir tmp("output");
   write_split(d, (tmp.path / "parts").string(), "key");
   std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, std::pair<int, int>> seen;  // count, marker
   std::size_t files = 0;
@@ -189,7 +171,7 @@ TEST_CASE("output 2: names are zero-padded to the width of N-1") {
 }
 
 TEST_CASE("write_split writes exactly N files, replacing an earlier run's") {
-  TempDir tmp;
+  TempDir tmp("output");
   const fs::path dir = tmp.path / "split";
   const test::Fixture quad = test::square_quadrants();
   write_split(quad.decomposition, dir.string(), "sq");
@@ -210,7 +192,7 @@ TEST_CASE("write_split writes exactly N files, replacing an earlier run's") {
 }
 
 TEST_CASE("write_split into a path that is a file fails and leaves nothing") {
-  TempDir tmp;
+  TempDir tmp("output");
   const fs::path file = tmp.path / "plain";
   std::ofstream(file) << "x";
   CHECK_THROWS_AS(write_split(test::square_halves().decomposition, file.string(), "sq"), Error);

@@ -14,25 +14,14 @@
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/script.hpp"
+#include "scratch_files.hpp"
 
 namespace {
 
 using namespace madd;
+using madd::test::read_text;
+using madd::test::TempDir;
 namespace fs = std::filesystem;
-
-// A fresh empty directory under the system temp dir, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& tag) {
-    path = fs::temp_directory_path() / ("madd-script-test-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 // Runs the test body with `dir` as the current directory, restoring it after.
 struct ChangeDirectory {
@@ -43,13 +32,6 @@ struct ChangeDirectory {
     fs::current_path(saved, ignored);
   }
 };
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void write_text(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary);
