@@ -66,7 +66,7 @@ struct MeshOptions {
 };
 
 // One mesh edge on a segment of the discretised decomposition: a boundary
-// edge (in one triangle; marker from the input, >= 1) or a separator edge
+// edge (in one triangle; the input's marker, never 0) or a separator edge
 // (in one triangle of each of its two subdomains; marker 0).
 struct MeshSegment {
   std::uint32_t a = 0;
