@@ -23,6 +23,7 @@
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "mesh_fixtures.hpp"
+#include "output_formats_test_support.hpp"
 #include "scratch_files.hpp"
 #include "mesh_output_test_support.hpp"
 
@@ -45,12 +46,7 @@ const Mesh& pipe_mesh() {
 // marker (the hole's negative, which gmsh cannot use as a tag).
 const Mesh& square_mesh() {
   static const Mesh m = [] {
-    Pslg p;
-    p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1.5, 1.5}, {2.5, 1.5}, {2.5, 2.5}, {1.5, 2.5}};
-    p.segments = {{0, 1, 1}, {1, 2, 2}, {2, 3, 3}, {3, 0, 4}, {4, 5, -7}, {5, 6, -7}, {6, 7, -7}, {7, 4, -7}};
-    p.has_segment_markers = true;
-    p.holes = {{2, 2}};
-    validate(p);
+    const Pslg p = marked_square_domain();
     DecomposeOptions o;
     o.subdomains = 4;
     return mesh_without_steiner_points(decompose(p, o));

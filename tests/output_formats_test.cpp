@@ -34,16 +34,10 @@ const Decomposition& key7() {
   return d;
 }
 
-// A square with a square hole; the four outer sides and the hole carry
-// different markers (one negative, which gmsh cannot use as a tag).
+// madd::test::marked_square_domain in 4 subdomains.
 const Decomposition& marked_square() {
   static const Decomposition d = [] {
-    Pslg p;
-    p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1.5, 1.5}, {2.5, 1.5}, {2.5, 2.5}, {1.5, 2.5}};
-    p.segments = {{0, 1, 1}, {1, 2, 2}, {2, 3, 3}, {3, 0, 4}, {4, 5, -7}, {5, 6, -7}, {6, 7, -7}, {7, 4, -7}};
-    p.has_segment_markers = true;
-    p.holes = {{2, 2}};
-    validate(p);
+    const Pslg p = marked_square_domain();
     DecomposeOptions o;
     o.subdomains = 4;
     return decompose(p, o);

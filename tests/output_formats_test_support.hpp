@@ -1,7 +1,8 @@
 #pragma once
 // Readers for output_formats_test.cpp: just enough of gmsh's .geo and .msh
 // 2.2, legacy VTK and JSON to read madd's own outputs back, strictly (any
-// surprise throws), plus the conformity check of a gmsh mesh.
+// surprise throws), plus the conformity check of a gmsh mesh, and the marked
+// square domain the output tests (decomposition and mesh) share.
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -15,8 +16,21 @@
 #include <vector>
 
 #include "madd/decomposition.hpp"
+#include "madd/pslg.hpp"
 
 namespace madd::test {
+
+// A square with a square hole; the four outer sides and the hole carry
+// different markers (one negative, which gmsh cannot use as a tag).
+inline Pslg marked_square_domain() {
+  Pslg p;
+  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1.5, 1.5}, {2.5, 1.5}, {2.5, 2.5}, {1.5, 2.5}};
+  p.segments = {{0, 1, 1}, {1, 2, 2}, {2, 3, 3}, {3, 0, 4}, {4, 5, -7}, {5, 6, -7}, {6, 7, -7}, {7, 4, -7}};
+  p.has_segment_markers = true;
+  p.holes = {{2, 2}};
+  validate(p);
+  return p;
+}
 
 inline std::size_t count_of(const std::string& text, const std::string& what) {
   std::size_t n = 0;
