@@ -42,6 +42,12 @@ public:
   bool empty() const noexcept { return files_.empty() && directories_.empty(); }
   // Stages and publishes everything; throws OutputError. The set is empty afterwards.
   void write();
+  // The same for one of several processes writing one set together
+  // (madd-mpi): once staging has ended here, all_staged(staged_here) is called
+  // exactly once, whether or not staging succeeded, and must return whether
+  // every process staged everything (an MPI_Allreduce). Only then is anything
+  // moved into place; otherwise every temporary is removed and OutputError thrown.
+  void write(const std::function<bool(bool staged_here)>& all_staged);
 
 private:
   struct File {

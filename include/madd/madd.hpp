@@ -10,6 +10,8 @@
 #include "madd/medial.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_output.hpp"
+#include "madd/mesh_part_output.hpp"
+#include "madd/mesh_share.hpp"
 #include "madd/metis_io.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"

@@ -166,10 +166,13 @@ void OutputSet::add_directory(std::string dir, std::vector<std::pair<std::string
   directories_.push_back({std::move(dir), std::move(files), std::move(is_stale)});
 }
 
-void OutputSet::write() {
+void OutputSet::write() { write({}); }
+
+void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
   const InFlight in_flight;
   std::vector<Staged> staged;
   std::string current;  // the output being staged, for messages
+  std::string failure;  // why staging failed here, when it did
   try {
     for (std::size_t k = 0; k < files_.size(); ++k) {
       current = files_[k].path;
@@ -189,11 +192,17 @@ void OutputSet::write() {
     }
     throw_if_interrupted(current);
   } catch (const fs::filesystem_error& e) {
-    remove_staged(staged);
-    throw OutputError(current + ": cannot write: " + e.code().message() + " (no output was written)");
+    failure = current + ": cannot write: " + e.code().message() + " (no output was written)";
   } catch (const OutputError& e) {
+    failure = std::string(e.what()) + " (no output was written)";
+  } catch (const std::exception& e) {  // out of memory, say: the others must still hear of it
+    failure = current + ": cannot write: " + e.what() + " (no output was written)";
+  }
+  // With several writers, every one answers once, whatever happened here.
+  const bool everyone = all_staged ? all_staged(failure.empty()) : failure.empty();
+  if (!failure.empty() || !everyone) {
     remove_staged(staged);
-    throw OutputError(std::string(e.what()) + " (no output was written)");
+    throw OutputError(failure.empty() ? "another process could not write its outputs (no output was written)" : failure);
   }
   // Everything is staged: move it into place.
   std::vector<std::string> published;

@@ -97,7 +97,9 @@ void link_across_separators(Mesh& m) {
 
 } // namespace
 
-Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_angle_deg) {
+Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_angle_deg,
+           const std::vector<bool>* kept) {
+  const auto is_kept = [kept](std::uint32_t k) { return kept == nullptr || (*kept)[k]; };
   Mesh m;
   m.decomposition = d;
   m.min_angle_deg = min_angle_deg;
@@ -116,7 +118,14 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   m.triangle_subdomain.reserve(triangles);
   m.subdomain_first_triangle.push_back(0);
   std::vector<std::vector<MeshSegment>> boundary(d.segments.size());
+  std::vector<bool> kept_separator(d.segments.size(), kept == nullptr);
   for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+    if (!is_kept(k)) {
+      m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
+      continue;
+    }
+    for (const auto& ring : d.subdomains[k].ring_segments)
+      for (const std::uint32_t j : ring) kept_separator[j] = true;
     SubdomainMesh& p = pieces[k];
     const LocalDomain local = local_domain(d, k);
     const auto first_steiner = static_cast<std::uint32_t>(m.points.size());
@@ -149,7 +158,7 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   }
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     if (d.is_separator(j)) {
-      m.segments.push_back({d.segments[j].a, d.segments[j].b, 0, j});
+      if (kept_separator[j]) m.segments.push_back({d.segments[j].a, d.segments[j].b, 0, j});
     } else {
       m.segments.insert(m.segments.end(), boundary[j].begin(), boundary[j].end());
     }

@@ -15,9 +15,11 @@
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_share.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/refine.hpp"
+#include "mesh/rounds.hpp"
 #include "mesh/size_field.hpp"
 #include "mesh/work.hpp"
 
@@ -115,6 +117,34 @@ std::vector<std::uint32_t> blocking_separators(const Decomposition& d, const std
 
 } // namespace
 
+namespace detail {
+
+void throw_failed_check(const Verification& v) {
+  std::string text = "mesh self-check failed (a bug in madd): " + v.problems.front();
+  if (v.problems.size() > 1) text += " (and " + std::to_string(v.problems.size() - 1) + " more)";
+  throw InternalError(text);
+}
+
+void refine_in_rounds(Decomposition& d, const MeshOptions& options, const SizeField& field,
+                      const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
+                      const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces) {
+  pieces.assign(d.subdomains.size(), SubdomainMesh{});
+  std::vector<std::uint32_t> todo;
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
+    if (mine[k]) todo.push_back(k);
+  for (int round = 0;; ++round) {
+    refine_some(d, options, field, work, guard, report, todo, pieces);
+    if (round == max_separator_rounds) break;
+    const std::vector<std::uint32_t> blocking = union_of(blocking_separators(d, todo, pieces));
+    if (blocking.empty()) break;
+    todo.clear();
+    for (const std::uint32_t k : split_separator_pieces(d, blocking))
+      if (mine[k]) todo.push_back(k);
+  }
+}
+
+} // namespace detail
+
 Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                         MeshReport& report) {
   check_options(options);
@@ -125,41 +155,31 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   report.phases.push_back({"discretise", clock.lap()});
   const detail::SizeField field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
-  // Rounds: mesh, then split every separator piece that stopped a fix, once
-  // for both its sides, and mesh those sides again (docs/mesh.md,
-  // "Decoupling"). Which pieces are split depends on the meshes only, never
-  // on the threads, so the result stays the same for any thread count.
-  std::vector<detail::SubdomainMesh> pieces(d.subdomains.size());
-  std::vector<std::uint32_t> todo(d.subdomains.size());
-  for (std::uint32_t k = 0; k < todo.size(); ++k) todo[k] = k;
-  for (int round = 0;; ++round) {
-    refine_some(d, options, field, report.expected_triangles, guard, report, todo, pieces);
-    if (round == detail::max_separator_rounds) break;
-    const std::vector<std::uint32_t> blocking = blocking_separators(d, todo, pieces);
-    if (blocking.empty()) break;
-    todo = detail::split_separator_pieces(d, blocking);
-  }
+  std::vector<detail::SubdomainMesh> pieces;
+  const std::vector<bool> all(d.subdomains.size(), true);
+  const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
+  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces);
   report.phases.push_back({"refine", clock.lap()});
   Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
   const Verification v = options.verify ? verify_mesh(m, domain, options.size) : Verification{};
   report.phases.push_back({"verify", clock.lap()});
-  if (!v.ok()) {
-    std::string text = "mesh self-check failed (a bug in madd): " + v.problems.front();
-    if (v.problems.size() > 1) text += " (and " + std::to_string(v.problems.size() - 1) + " more)";
-    throw InternalError(text);
-  }
+  if (!v.ok()) detail::throw_failed_check(v);
   return m;
 }
 
-Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report) {
+Decomposition decompose_for_mesh(const Pslg& domain, const MeshOptions& options, std::vector<PhaseTime>& phases) {
   check_options(options);
-  detail::Stopwatch clock;
   DecomposeOptions dopt = options.decomposition;
   const detail::SizeField field(options.size);
   if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
+  return decompose(domain, dopt, phases);
+}
+
+Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report) {
+  detail::Stopwatch clock;
   std::vector<PhaseTime> phases;
-  const Decomposition d = decompose(domain, dopt, phases);
+  const Decomposition d = decompose_for_mesh(domain, options, phases);
   report.phases.push_back({"decompose", clock.lap()});
   return mesh_decomposition(d, domain, options, report);
 }

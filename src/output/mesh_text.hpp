@@ -6,6 +6,7 @@
 #include <string>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "madd/mesh.hpp"
 #include "kernel/number_format.hpp"
@@ -41,5 +42,16 @@ std::unordered_map<std::uint64_t, int> segment_markers(const Mesh& mesh);
 // The marker written for the domain-boundary edge {a, b}: its segment's, or 1
 // (Triangle's marker of an unmarked boundary) should no segment cover it.
 int boundary_marker(const std::unordered_map<std::uint64_t, int>& markers, std::uint32_t a, std::uint32_t b);
+
+// A part's global numbering (include/madd/mesh_part_output.hpp), for the VTU writer.
+struct VtuGlobalIds {
+  const std::vector<std::uint64_t>* point_ids = nullptr;
+  const std::vector<std::uint32_t>* point_owner = nullptr;
+  const std::vector<std::uint64_t>* triangle_ids = nullptr;
+  std::uint32_t rank = 0;
+};
+
+// format_mesh_vtu, with a part's global ids when `global` is set.
+std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global);
 
 } // namespace madd::detail

@@ -27,25 +27,56 @@ void open_array(std::string& out, const char* type, const char* name, int compon
 
 void close_array(std::string& out) { out += "        </DataArray>\n"; }
 
+// The points' and cells' data arrays: a part's global ids first (they are
+// the GlobalIds attribute ParaView joins the pieces of a .pvtu by).
+void append_point_data(std::string& out, const Mesh& mesh, const detail::VtuGlobalIds* global) {
+  const std::size_t n = mesh.points.size();
+  out += global ? "      <PointData Scalars=\"marker\" GlobalIds=\"global_id\">\n" : "      <PointData Scalars=\"marker\">\n";
+  if (global) {
+    open_array(out, "Int64", "global_id\" IdType=\"1");
+    for (const std::uint64_t id : *global->point_ids) line(out, id);
+    close_array(out);
+    open_array(out, "Int32", "owner");
+    for (const std::uint32_t r : *global->point_owner) line(out, r);
+    close_array(out);
+  }
+  open_array(out, "Int32", "marker");
+  for (std::size_t v = 0; v < n; ++v) line(out, v < mesh.point_markers.size() ? mesh.point_markers[v] : 0);
+  close_array(out);
+  out += "      </PointData>\n";
+}
+
+void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGlobalIds* global) {
+  out += global ? "      <CellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n" : "      <CellData Scalars=\"subdomain\">\n";
+  if (global) {
+    open_array(out, "Int64", "global_id\" IdType=\"1");
+    for (const std::uint64_t id : *global->triangle_ids) line(out, id);
+    close_array(out);
+    open_array(out, "Int32", "rank");
+    for (std::size_t c = 0; c < mesh.triangles.size(); ++c) line(out, global->rank);
+    close_array(out);
+  }
+  open_array(out, "Int32", "subdomain");
+  for (const std::uint32_t k : mesh.triangle_subdomain) line(out, k);
+  close_array(out);
+  out += "      </CellData>\n";
+}
+
 } // namespace
 
-std::string format_mesh_vtu(const Mesh& mesh) {
+namespace detail {
+
+std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global) {
   const std::size_t n = mesh.points.size(), t = mesh.triangles.size();
   std::string out;
-  out.reserve(48 * n + 40 * t + 1024);
+  out.reserve((global ? 72 : 48) * n + (global ? 64 : 40) * t + 1024);
   out += "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
          "  <UnstructuredGrid>\n";
   out += "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" + std::to_string(t) + "\">\n";
-  out += "      <PointData Scalars=\"marker\">\n";
-  open_array(out, "Int32", "marker");
-  for (std::size_t v = 0; v < n; ++v) line(out, v < mesh.point_markers.size() ? mesh.point_markers[v] : 0);
-  close_array(out);
-  out += "      </PointData>\n      <CellData Scalars=\"subdomain\">\n";
-  open_array(out, "Int32", "subdomain");
-  for (const std::uint32_t k : mesh.triangle_subdomain) line(out, k);
-  close_array(out);
-  out += "      </CellData>\n      <Points>\n";
+  append_point_data(out, mesh, global);
+  append_cell_data(out, mesh, global);
+  out += "      <Points>\n";
   open_array(out, "Float64", nullptr, 3);
   for (const Point& p : mesh.points) line(out, p.x, p.y, 0.0);
   close_array(out);
@@ -62,5 +93,9 @@ std::string format_mesh_vtu(const Mesh& mesh) {
   out += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return out;
 }
+
+} // namespace detail
+
+std::string format_mesh_vtu(const Mesh& mesh) { return detail::format_vtu(mesh, nullptr); }
 
 } // namespace madd

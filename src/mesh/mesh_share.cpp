@@ -1,0 +1,236 @@
+// mesh_share(): one process's share of mesh() (include/madd/mesh_share.hpp,
+// docs/mpi.md). The same steps as mesh_decomposition(), on the subdomains of
+// this share only; the vertex and triangle numbers are those mesh() gives,
+// from the per-subdomain counts every share contributes once at the end.
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <numeric>
+#include <string>
+#include <thread>
+
+#include "kernel/resource_limits.hpp"
+#include "kernel/stopwatch.hpp"
+#include "madd/mesh_share.hpp"
+#include "mesh/discretise.hpp"
+#include "mesh/merge.hpp"
+#include "mesh/rounds.hpp"
+#include "mesh/size_field.hpp"
+#include "mesh/work.hpp"
+
+namespace madd {
+
+std::vector<std::uint32_t> assign_shares(const std::vector<double>& expected_triangles, std::uint32_t shares) {
+  const auto n = static_cast<std::uint32_t>(expected_triangles.size());
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return expected_triangles[a] > expected_triangles[b];
+  });
+  std::vector<double> load(std::max(shares, 1u), 0.0);
+  std::vector<std::uint32_t> owner(n, 0);
+  for (const std::uint32_t k : order) {
+    const auto least = static_cast<std::uint32_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    owner[k] = least;
+    load[least] += expected_triangles[k];
+  }
+  return owner;
+}
+
+namespace {
+
+// Runs body(k) for every k in `items` on `threads` threads (0 = all cores);
+// the first exception is rethrown once all have stopped.
+template <typename Body>
+void for_each_on_threads(const std::vector<std::uint32_t>& items, unsigned threads, const Body& body) {
+  unsigned n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+  n = static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(items.size(), 1)));
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < items.size() && !failed.load();) {
+      try {
+        body(items[i]);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+// Subdomain k of `d` as a domain of its own, every ring segment a boundary
+// piece (a separator's marker 0 becomes 1, as an unmarked boundary), so that
+// verify_mesh can check its mesh alone.
+struct SubdomainAlone {
+  Pslg domain;
+  Decomposition decomposition;
+};
+
+SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k) {
+  const detail::LocalDomain local = detail::local_domain(d, k);
+  SubdomainAlone out;
+  out.domain = local.pslg;
+  for (Segment& s : out.domain.segments)
+    if (s.marker == 0) s.marker = 1;
+  Decomposition& dk = out.decomposition;
+  dk.points = out.domain.points;
+  dk.segments = out.domain.segments;
+  dk.segment_origin.resize(dk.segments.size());
+  std::iota(dk.segment_origin.begin(), dk.segment_origin.end(), 0u);
+  dk.holes = out.domain.holes;
+  dk.min_angle_deg = d.min_angle_deg;
+  Subdomain s = d.subdomains[k];
+  std::uint32_t next = 0;
+  for (std::size_t r = 0; r < s.rings.size(); ++r)
+    for (std::size_t i = 0; i < s.rings[r].size(); ++i, ++next) {
+      s.rings[r][i] = next;
+      s.ring_segments[r][i] = next;
+    }
+  dk.subdomains.push_back(std::move(s));
+  return out;
+}
+
+void verify_subdomain(const Decomposition& d, std::uint32_t k, const detail::SubdomainMesh& piece,
+                      const MeshOptions& options) {
+  const SubdomainAlone alone = subdomain_alone(d, k);
+  std::vector<detail::SubdomainMesh> one{piece};
+  const Mesh m = detail::merge(alone.decomposition, one, options.size.min_angle_deg);
+  const Verification v = verify_mesh(m, alone.domain, options.size);
+  if (v.ok()) return;
+  Verification named;
+  for (const std::string& p : v.problems) named.problems.push_back("subdomain " + std::to_string(k) + ": " + p);
+  detail::throw_failed_check(named);
+}
+
+std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& counts, std::size_t first,
+                                          std::size_t n, std::uint64_t& total) {
+  std::vector<std::uint64_t> out(n);
+  total = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    out[k] = total;
+    total += counts[first + k];
+  }
+  return out;
+}
+
+// The part's mesh keeps only the vertices its triangles and segments use.
+void keep_used_points(MeshPart& part, std::vector<std::uint64_t>& ids) {
+  Mesh& m = part.mesh;
+  std::vector<std::uint32_t> renumber(m.points.size(), no_index);
+  for (const auto& tri : m.triangles)
+    for (const std::uint32_t v : tri) renumber[v] = 0;
+  for (const MeshSegment& s : m.segments) renumber[s.a] = renumber[s.b] = 0;
+  std::uint32_t next = 0;
+  for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+    if (renumber[v] == no_index) continue;
+    renumber[v] = next;
+    m.points[next] = m.points[v];
+    m.point_markers[next] = m.point_markers[v];
+    ids[next] = ids[v];
+    ++next;
+  }
+  m.points.resize(next);
+  m.point_markers.resize(next);
+  ids.resize(next);
+  for (auto& tri : m.triangles)
+    for (std::uint32_t& v : tri) v = renumber[v];
+  for (MeshSegment& s : m.segments) {
+    s.a = renumber[s.a];
+    s.b = renumber[s.b];
+  }
+}
+
+// Per vertex of the decomposition: the lowest share whose subdomains have it
+// on a ring (every decomposition vertex a subdomain mesh uses is on its rings).
+std::vector<std::uint32_t> decomposition_point_owner(const Decomposition& d, const std::vector<std::uint32_t>& owner) {
+  std::vector<std::uint32_t> out(d.points.size(), no_index);
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
+    for (const auto& ring : d.subdomains[k].rings)
+      for (const std::uint32_t v : ring) out[v] = std::min(out[v], owner[k]);
+  return out;
+}
+
+} // namespace
+
+MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                    std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange, MeshReport& report) {
+  (void)domain;  // each subdomain is checked against its own boundary (the union is mesh()'s, checked there)
+  check_options(options);
+  if (shares == 0 || share >= shares) throw OptionError("share", "must be < shares (and shares >= 1)");
+  detail::Stopwatch clock;
+  const auto n = static_cast<std::uint32_t>(decomposition.subdomains.size());
+  const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
+  Decomposition d = detail::discretise(decomposition, options.size, false);
+  report.phases.push_back({"discretise", clock.lap()});
+  const detail::SizeField field(options.size);
+  report.expected_triangles = detail::expected_triangles(d, field);
+
+  MeshPart part;
+  part.share = share;
+  part.shares = shares;
+  part.owner = assign_shares(report.expected_triangles, shares);
+  std::vector<bool> mine(n, false);
+  for (std::uint32_t k = 0; k < n; ++k)
+    if (part.owner[k] == share) {
+      mine[k] = true;
+      part.subdomains.push_back(k);
+    }
+  std::vector<detail::SubdomainMesh> pieces;
+  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces);
+  report.phases.push_back({"refine", clock.lap()});
+  if (options.verify) {
+    for_each_on_threads(part.subdomains, options.decomposition.threads,
+                        [&](std::uint32_t k) { verify_subdomain(d, k, pieces[k], options); });
+  }
+  report.phases.push_back({"verify", clock.lap()});
+
+  // Steiner points and triangles of every subdomain, from every share: the
+  // offsets mesh()'s merge numbers them with.
+  std::vector<std::uint64_t> counts(2 * std::size_t{n}, 0);
+  for (const std::uint32_t k : part.subdomains) {
+    std::size_t ring_vertices = 0;
+    for (const auto& ring : d.subdomains[k].rings) ring_vertices += ring.size();
+    counts[k] = pieces[k].points.size() - ring_vertices;
+    counts[n + k] = pieces[k].triangles.size();
+  }
+  counts = exchange.sum_of(counts);
+  std::uint64_t steiner_total = 0;
+  const std::vector<std::uint64_t> first_steiner = exclusive_sums(counts, 0, n, steiner_total);
+  const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
+  part.total_points = d.points.size() + steiner_total;
+
+  part.mesh = detail::merge(d, pieces, options.size.min_angle_deg, &mine);
+  const std::size_t p = d.points.size();
+  std::vector<std::uint64_t> ids(part.mesh.points.size());
+  std::iota(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(p), std::uint64_t{0});
+  std::size_t at = p;
+  for (const std::uint32_t k : part.subdomains)
+    for (std::uint64_t j = 0; j < counts[k]; ++j) ids[at++] = p + first_steiner[k] + j;
+  const std::vector<std::uint32_t> point_owner = decomposition_point_owner(d, part.owner);
+  std::vector<std::uint32_t> owners(part.mesh.points.size(), share);
+  for (std::size_t v = 0; v < p; ++v) owners[v] = point_owner[v];
+  // keep_used_points moves ids along; the owners follow the same ids.
+  keep_used_points(part, ids);
+  part.point_ids = std::move(ids);
+  part.point_owner.resize(part.point_ids.size());
+  for (std::size_t v = 0; v < part.point_ids.size(); ++v)
+    part.point_owner[v] = part.point_ids[v] < p ? owners[part.point_ids[v]] : share;
+  part.triangle_ids.reserve(part.mesh.triangles.size());
+  for (const std::uint32_t k : part.subdomains)
+    for (std::uint32_t t = part.mesh.subdomain_first_triangle[k]; t < part.mesh.subdomain_first_triangle[k + 1]; ++t)
+      part.triangle_ids.push_back(first_triangle[k] + (t - part.mesh.subdomain_first_triangle[k]));
+  report.phases.push_back({"merge", clock.lap()});
+  return part;
+}
+
+} // namespace madd

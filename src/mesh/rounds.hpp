@@ -1,0 +1,35 @@
+#pragma once
+// The refinement rounds of a mesh run (docs/mesh.md, "Decoupling"), shared
+// by mesh() (every subdomain, on threads) and mesh_share() (one share's
+// subdomains, on one process of several).
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "madd/decomposition.hpp"
+#include "madd/mesh.hpp"
+#include "kernel/resource_limits.hpp"
+#include "mesh/refine.hpp"
+#include "mesh/size_field.hpp"
+
+namespace madd::detail {
+
+// This process's separator ids -> the union over every process meshing the
+// same decomposition (the identity for a single process).
+using SeparatorUnion = std::function<std::vector<std::uint32_t>(const std::vector<std::uint32_t>&)>;
+
+// Meshes the subdomains k with mine[k] of the discretised decomposition `d`,
+// then, round after round, splits every separator piece that stopped a fix
+// (the union over all processes, once for both its sides, in `d`) and meshes
+// again those of its subdomains that are `mine`, until no piece blocks or
+// max_separator_rounds is reached. `work`: expected triangles per subdomain.
+// The meshes land in pieces[k]; the others stay empty. Which pieces are split
+// depends on the meshes only, never on threads or processes.
+void refine_in_rounds(Decomposition& d, const MeshOptions& options, const SizeField& field,
+                      const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
+                      const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces);
+
+// Throws InternalError with the first of v's problems (v failed).
+[[noreturn]] void throw_failed_check(const Verification& v);
+
+} // namespace madd::detail

@@ -1,0 +1,107 @@
+// One share's part of a mesh as files (include/madd/mesh_part_output.hpp):
+// Triangle's .node/.ele with global ids as attributes, a .vtu piece, and the
+// .pvtu that joins the pieces.
+#include <string>
+#include <vector>
+
+#include "madd/mesh_output.hpp"
+#include "madd/mesh_part_output.hpp"
+#include "madd/output.hpp"
+#include "output/mesh_text.hpp"
+
+namespace madd {
+
+using detail::line;
+
+std::string format_part_node(const MeshPart& part, unsigned first_index) {
+  detail::check_first_index(first_index);
+  const Mesh& m = part.mesh;
+  std::string out;
+  out.reserve(64 * m.points.size() + 32);
+  line(out, m.points.size(), 2, 2, 1);
+  for (std::size_t v = 0; v < m.points.size(); ++v)
+    line(out, v + first_index, m.points[v].x, m.points[v].y, part.point_ids[v] + first_index, part.point_owner[v],
+         m.point_markers[v]);
+  return out;
+}
+
+std::string format_part_ele(const MeshPart& part, unsigned first_index) {
+  detail::check_first_index(first_index);
+  const Mesh& m = part.mesh;
+  std::string out;
+  out.reserve(56 * m.triangles.size() + 32);
+  line(out, m.triangles.size(), 3, 2);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& tri = m.triangles[t];
+    line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
+         m.triangle_subdomain[t], part.triangle_ids[t] + first_index);
+  }
+  return out;
+}
+
+std::string format_part_vtu(const MeshPart& part) {
+  const detail::VtuGlobalIds global{&part.point_ids, &part.point_owner, &part.triangle_ids, part.share};
+  return detail::format_vtu(part.mesh, &global);
+}
+
+std::string format_parts_pvtu(const std::vector<std::string>& pieces) {
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <PUnstructuredGrid GhostLevel=\"0\">\n"
+      "    <PPointData Scalars=\"marker\" GlobalIds=\"global_id\">\n"
+      "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
+      "      <PDataArray type=\"Int32\" Name=\"owner\"/>\n"
+      "      <PDataArray type=\"Int32\" Name=\"marker\"/>\n"
+      "    </PPointData>\n"
+      "    <PCellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n"
+      "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
+      "      <PDataArray type=\"Int32\" Name=\"rank\"/>\n"
+      "      <PDataArray type=\"Int32\" Name=\"subdomain\"/>\n"
+      "    </PCellData>\n"
+      "    <PPoints>\n"
+      "      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
+      "    </PPoints>\n";
+  for (const std::string& piece : pieces) out += "    <Piece Source=\"" + piece + "\"/>\n";
+  out += "  </PUnstructuredGrid>\n</VTKFile>\n";
+  return out;
+}
+
+std::string part_file_name(std::string_view stem, std::uint32_t share, std::uint32_t shares,
+                           std::string_view extension) {
+  return split_mesh_file_name(stem, share, shares, extension);
+}
+
+namespace {
+
+// "dir/stem" -> ("dir/", "stem").
+std::pair<std::string, std::string> split_prefix(const std::string& prefix) {
+  const std::size_t slash = prefix.find_last_of('/');
+  if (slash == std::string::npos) return {"", prefix};
+  return {prefix.substr(0, slash + 1), prefix.substr(slash + 1)};
+}
+
+} // namespace
+
+void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
+                   const MeshPartFormats& formats) {
+  detail::check_first_index(formats.first_index);
+  const auto [dir, stem] = split_prefix(prefix);
+  const auto name = [&](std::uint32_t share, const char* extension) {
+    return part_file_name(stem, share, part.shares, extension);
+  };
+  if (formats.triangle) {
+    outputs.add_file(dir + name(part.share, ".node"), format_part_node(part, formats.first_index));
+    outputs.add_file(dir + name(part.share, ".ele"), format_part_ele(part, formats.first_index));
+  }
+  if (formats.vtu) {
+    outputs.add_file(dir + name(part.share, ".vtu"), format_part_vtu(part));
+    if (part.share == 0) {
+      std::vector<std::string> pieces;
+      for (std::uint32_t r = 0; r < part.shares; ++r) pieces.push_back(name(r, ".vtu"));
+      outputs.add_file(prefix + ".pvtu", format_parts_pvtu(pieces));
+    }
+  }
+}
+
+} // namespace madd
