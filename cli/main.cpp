@@ -152,18 +152,6 @@ int usage_error(const char* command, const std::string& message) {
   return exit_usage;
 }
 
-int exit_code_of(ErrorKind kind) noexcept {
-  switch (kind) {
-  case ErrorKind::bad_option: return exit_usage;
-  case ErrorKind::bad_input: return exit_bad_input;
-  case ErrorKind::decomposition: return exit_decompose_failed;
-  case ErrorKind::output: return exit_io;
-  case ErrorKind::limit: return exit_limit;
-  case ErrorKind::internal: return exit_internal;
-  }
-  return exit_internal;
-}
-
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);

@@ -176,6 +176,8 @@ void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
   try {
     for (std::size_t k = 0; k < files_.size(); ++k) {
       current = files_[k].path;
+      // Found now, not when moving into place: the others must not be moved either.
+      if (fs::is_directory(files_[k].path)) throw OutputError(files_[k].path + ": is a directory");
       Staged s;
       s.target = files_[k].path;
       s.staged = temporary_name(files_[k].path, k);

@@ -1,0 +1,351 @@
+// madd-mpi: `mpirun -np P madd-mpi mesh DOMAIN.poly -n N [options] -o OUT`
+// (docs/mpi.md). A thin front end: every rank decomposes the domain itself
+// (deterministic, so all get the same decomposition), meshes its share of
+// the subdomains on its own threads (madd::mesh_share), and writes its part
+// with global ids; the ranks meet only to agree on the separator pieces split
+// between rounds, on the per-subdomain counts that number the vertices, on
+// whether every part was written, and for the final figures. The union of
+// the parts is `madd mesh`'s mesh for the same options, for any P.
+//
+// Failure is all or nothing, as in the single-process tool: an error every
+// rank sees alike (bad input, bad options) makes every rank exit with its
+// code; an error one rank meets while meshing (a limit, a bug) aborts the
+// job (MPI_Abort) before anything is written; a part that cannot be written
+// makes every rank remove what it staged.
+#include <mpi.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "../background_mesh.hpp"
+#include "../commands.hpp"
+#include "../mesh_arguments.hpp"
+#include "../mesh_figures.hpp"
+#include "madd/atomic_write.hpp"
+#include "madd/error.hpp"
+#include "madd/mesh_part_output.hpp"
+#include "madd/mesh_share.hpp"
+#include "madd/poly_io.hpp"
+
+namespace madd::mpi {
+namespace {
+
+using cli::ExitCode;
+
+constexpr const char* help_text =
+    "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
+    "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
+    "the subdomains (balanced by expected triangles) on its own threads with no\n"
+    "communication, and writes its part with global ids. The union of the parts is\n"
+    "the mesh `madd mesh` makes with the same options, for any P.\n\n"
+    "Options are madd mesh's (see madd mesh --help): -q, -a, --size-fn, --sizes,\n"
+    "--balance, --no-off-centres, --no-verify, -n (required), --min-angle, -j (threads\n"
+    "per rank), --seed, --rebalance, --time-limit, --max-memory, -o PREFIX, --vtu,\n"
+    "--report[=FILE], --quiet. Not here: --neigh, --edge, --msh, --split-mesh.\n\n"
+    "outputs, for every rank R:\n"
+    "  PREFIX-R.node        \"id x y global owner marker\": global = the vertex's id in\n"
+    "                       madd mesh's PREFIX.node, owner = the lowest rank that has it\n"
+    "  PREFIX-R.ele         \"id a b c subdomain global\", local vertex ids\n"
+    "  PREFIX-R.vtu         with --vtu, and PREFIX.pvtu that opens all of them in ParaView\n\n"
+    "exit codes: as madd's (0 ok, 2 usage, 3 bad input, 4 no decomposition, 5 output\n"
+    "not written, 6 limit, 70 internal error); nothing is written unless all is.\n";
+
+struct World {
+  int rank = 0, size = 1;
+};
+
+// SIGINT/SIGTERM (mpirun forwards them): nothing partial may stay on disk.
+volatile std::sig_atomic_t writing = 0;
+
+void on_interrupt(int signal_number) {
+  if (interrupt_output_writes() || writing != 0) return;  // let the write unwind and remove its staging
+  ::_exit(128 + signal_number);
+}
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// The error a rank met, as the single-process tool would say it.
+struct Failure {
+  int code = cli::exit_ok;
+  std::string message;
+};
+
+template <typename Body>
+Failure attempt(const Body& body) {
+  try {
+    body();
+    return {};
+  } catch (const Error& e) {
+    const int code = cli::exit_code_of(e.kind());
+    return {code, std::string(code == cli::exit_internal ? "internal error: " : "error: ") + e.what()};
+  } catch (const std::bad_alloc&) {
+    return {cli::exit_limit, "error: out of memory"};
+  } catch (const std::exception& e) {
+    return {cli::exit_internal, std::string("internal error: ") + e.what()};
+  }
+}
+
+// A step every rank takes alike: when it fails anywhere, the lowest failing
+// rank says why (the others would mostly say the same) and everyone returns
+// the same code.
+int agree(const World& world, const Failure& mine) {
+  const int failing = mine.code == cli::exit_ok ? world.size : world.rank;
+  int first = world.size;
+  MPI_Allreduce(&failing, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (first == world.size) return cli::exit_ok;
+  int code = mine.code;
+  MPI_Bcast(&code, 1, MPI_INT, first, MPI_COMM_WORLD);
+  if (world.rank == first) std::fprintf(stderr, "madd-mpi mesh: %s\n", mine.message.c_str());
+  return code;
+}
+
+// A step only this rank takes (meshing): the others cannot be asked to stop
+// at a collective they may never reach, so the job is aborted. Nothing has
+// been written yet.
+void abort_on(const World& world, const Failure& mine) {
+  if (mine.code == cli::exit_ok) return;
+  std::fprintf(stderr, "madd-mpi mesh: rank %d: %s (no output written)\n", world.rank, mine.message.c_str());
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, mine.code);
+}
+
+ShareExchange mpi_exchange() {
+  ShareExchange x;
+  x.union_of = [](const std::vector<std::uint32_t>& mine) {
+    int size = 0;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    const int count = static_cast<int>(mine.size());
+    std::vector<int> counts(static_cast<std::size_t>(size)), starts(static_cast<std::size_t>(size), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (std::size_t r = 1; r < counts.size(); ++r) starts[r] = starts[r - 1] + counts[r - 1];
+    std::vector<std::uint32_t> all(static_cast<std::size_t>(starts.back() + counts.back()));
+    MPI_Allgatherv(mine.data(), count, MPI_UINT32_T, all.data(), counts.data(), starts.data(), MPI_UINT32_T,
+                   MPI_COMM_WORLD);
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+  };
+  x.sum_of = [](const std::vector<std::uint64_t>& mine) {
+    std::vector<std::uint64_t> sum(mine.size());
+    MPI_Allreduce(mine.data(), sum.data(), static_cast<int>(mine.size()), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+    return sum;
+  };
+  return x;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double phase_seconds(const MeshReport& report, const char* name) {
+  double s = 0;
+  for (const PhaseTime& p : report.phases)
+    if (p.name == name) s += p.seconds;
+  return s;
+}
+
+// The global figures, on rank 0: sums, minima and every rank's times.
+struct Figures {
+  std::uint64_t triangles = 0, vertices = 0;
+  double min_angle_deg = 180;
+  std::uint64_t below = 0, below_input_angle = 0, below_separator = 0;
+  std::vector<double> decompose_seconds, mesh_seconds, write_seconds;
+};
+
+Figures gather_figures(const World& world, const MeshPart& part, const MeshReport& report, double decompose_s,
+                       double write_s) {
+  Figures f;
+  f.triangles = part.total_triangles;
+  f.vertices = part.total_points;
+  const cli::AngleFigures a = cli::angle_figures(part.mesh);
+  MPI_Reduce(&a.min_deg, &f.min_angle_deg, 1, MPI_DOUBLE, MPI_MIN, 0, MPI_COMM_WORLD);
+  const std::uint64_t mine[3] = {a.below, part.mesh.shortfall.input_angle, part.mesh.shortfall.separator};
+  std::uint64_t sum[3] = {};
+  MPI_Reduce(mine, sum, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+  f.below = sum[0];
+  f.below_input_angle = sum[1];
+  f.below_separator = sum[2];
+  const double times[3] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify"), write_s};
+  std::vector<double> all(3 * static_cast<std::size_t>(world.size));
+  MPI_Gather(times, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  for (int r = 0; r < world.size; ++r) {
+    f.decompose_seconds.push_back(all[3 * r]);
+    f.mesh_seconds.push_back(all[3 * r + 1]);
+    f.write_seconds.push_back(all[3 * r + 2]);
+  }
+  return f;
+}
+
+// Slowest rank over the mean (1 = perfectly balanced).
+double imbalance(const std::vector<double>& seconds) {
+  double sum = 0, most = 0;
+  for (const double s : seconds) {
+    sum += s;
+    most = std::max(most, s);
+  }
+  return sum > 0 ? most * static_cast<double>(seconds.size()) / sum : 1.0;
+}
+
+std::string list(const std::vector<double>& values) {
+  std::string out;
+  char buf[32];
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%s%.6g", i ? ", " : "", values[i]);
+    out += buf;
+  }
+  return out;
+}
+
+std::string report_json(const cli::MeshArgs& args, const World& world, const Figures& f, double seconds) {
+  char buf[256];
+  std::string out = "{\n";
+  const auto add = [&](const char* key, double v) {
+    std::snprintf(buf, sizeof buf, "  \"%s\": %.17g,\n", key, v);
+    out += buf;
+  };
+  add("ranks", world.size);
+  add("subdomains", args.options.decomposition.subdomains);
+  add("triangles", static_cast<double>(f.triangles));
+  add("vertices", static_cast<double>(f.vertices));
+  add("min_angle_bound_deg", args.options.size.min_angle_deg);
+  add("max_area_bound", args.options.size.max_area);
+  add("min_angle_deg", f.min_angle_deg);
+  add("below_bound", static_cast<double>(f.below));
+  add("below_bound_input_angle", static_cast<double>(f.below_input_angle));
+  add("below_bound_separator", static_cast<double>(f.below_separator));
+  add("rank_imbalance", imbalance(f.mesh_seconds));
+  out += "  \"decompose_seconds\": [" + list(f.decompose_seconds) + "],\n";
+  out += "  \"mesh_seconds\": [" + list(f.mesh_seconds) + "],\n";
+  out += "  \"write_seconds\": [" + list(f.write_seconds) + "],\n";
+  std::snprintf(buf, sizeof buf, "  \"seconds\": %.6g\n}\n", seconds);
+  return out + buf;
+}
+
+int run(const World& world, const cli::MeshArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshOptions options = args.options;
+  Pslg domain;
+  Decomposition decomposition;
+  std::vector<PhaseTime> phases;
+  // Read and decompose: every rank alike.
+  int code = agree(world, attempt([&] {
+    if (!args.sizes_file.empty()) options.size.background_areas = cli::read_background(args.sizes_file, true);
+    domain = read_domain(args.input);
+    decomposition = decompose_for_mesh(domain, options, phases);
+  }));
+  if (code != cli::exit_ok) return code;
+  const double decompose_s = seconds_since(start);
+  // Mesh this rank's share.
+  MeshReport report;
+  MeshPart part;
+  abort_on(world, attempt([&] {
+    part = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
+                      static_cast<std::uint32_t>(world.size), mpi_exchange(), report);
+  }));
+  // Write every part, or none.
+  const auto write_start = std::chrono::steady_clock::now();
+  OutputSet outputs;
+  MeshPartFormats formats;
+  formats.vtu = args.formats.vtu;
+  formats.first_index = args.formats.first_index;
+  bool agreed = false;  // every rank must take part in the agreement exactly once
+  const auto all_staged = [&agreed](bool staged_here) {
+    agreed = true;
+    int mine = staged_here ? 1 : 0, all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+    return all == 1;
+  };
+  const Failure written = attempt([&] {
+    add_mesh_part(outputs, part, args.prefix, formats);
+    writing = 1;
+    outputs.write(all_staged);
+  });
+  writing = 0;
+  if (!agreed) all_staged(false);
+  // Only the ranks that failed themselves say why; all exit alike.
+  int failed = written.code != cli::exit_ok ? 1 : 0, any = 0;
+  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+  if (any) {
+    if (failed && written.message.find("another process") == std::string::npos)
+      std::fprintf(stderr, "madd-mpi mesh: rank %d: %s\n", world.rank, written.message.c_str());
+    return cli::exit_io;
+  }
+  const Figures f = gather_figures(world, part, report, decompose_s, seconds_since(write_start));
+  if (world.rank != 0) return cli::exit_ok;
+  const double seconds = seconds_since(start);
+  if (args.report) {
+    const std::string json = report_json(args, world, f, seconds);
+    if (!args.report_out.empty()) {
+      if (const Failure e = attempt([&] { write_file_atomically(args.report_out, json); }); e.code != cli::exit_ok) {
+        std::fprintf(stderr, "madd-mpi mesh: %s\n", e.message.c_str());
+        return e.code;
+      }
+    } else {
+      std::fputs(json.c_str(), stdout);
+    }
+  }
+  if (!args.quiet) {
+    std::fprintf(args.report && args.report_out.empty() ? stderr : stdout,
+                 "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
+                 "%.4g), meshing %.2f s on the slowest rank (imbalance %.3f), %.2f s -> %s-*.{node,ele}%s\n",
+                 args.input.c_str(), world.size, options.decomposition.subdomains,
+                 static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
+                 f.min_angle_deg, static_cast<unsigned long long>(f.below), options.size.min_angle_deg,
+                 *std::max_element(f.mesh_seconds.begin(), f.mesh_seconds.end()), imbalance(f.mesh_seconds), seconds,
+                 args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
+  }
+  return cli::exit_ok;
+}
+
+int main_on(const World& world, int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    if (world.rank == 0) std::fputs(help_text, argc < 2 ? stderr : stdout);
+    return argc < 2 ? cli::exit_usage : cli::exit_ok;
+  }
+  if (std::strcmp(argv[1], "mesh") != 0) {
+    if (world.rank == 0) std::fprintf(stderr, "madd-mpi: unknown command '%s' (the one command is 'mesh')\n", argv[1]);
+    return cli::exit_usage;
+  }
+  cli::MeshArgs args;
+  const std::string problem = cli::parse_mesh_arguments(argc - 1, argv + 1, args, true, false);
+  if (problem == "help") {
+    if (world.rank == 0) std::fputs(help_text, stdout);
+    return cli::exit_ok;
+  }
+  if (!problem.empty()) {
+    if (world.rank == 0) std::fprintf(stderr, "madd-mpi mesh: %s\n(try 'madd-mpi mesh --help')\n", problem.c_str());
+    return cli::exit_usage;
+  }
+  return run(world, args);
+}
+
+} // namespace
+} // namespace madd::mpi
+
+int main(int argc, char** argv) {
+  // Threads mesh inside a rank; only the main thread calls MPI.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  madd::mpi::World world;
+  MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &world.size);
+  madd::mpi::install_interrupt_handlers();
+  const int code = madd::mpi::main_on(world, argc, argv);
+  MPI_Finalize();
+  return code;
+}
