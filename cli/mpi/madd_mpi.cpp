@@ -14,6 +14,7 @@
 // makes every rank remove what it staged.
 #include <mpi.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -164,8 +165,15 @@ struct Figures {
   std::uint64_t triangles = 0, vertices = 0;
   double min_angle_deg = 180;
   std::uint64_t below = 0, below_input_angle = 0, below_separator = 0;
-  std::vector<double> decompose_seconds, mesh_seconds, write_seconds;
+  std::vector<double> decompose_seconds, mesh_seconds, write_seconds, peak_megabytes;
 };
+
+// This process's peak resident memory.
+double peak_megabytes() {
+  rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
 
 Figures gather_figures(const World& world, const MeshPart& part, const MeshReport& report, double decompose_s,
                        double write_s) {
@@ -180,13 +188,15 @@ Figures gather_figures(const World& world, const MeshPart& part, const MeshRepor
   f.below = sum[0];
   f.below_input_angle = sum[1];
   f.below_separator = sum[2];
-  const double times[3] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify"), write_s};
-  std::vector<double> all(3 * static_cast<std::size_t>(world.size));
-  MPI_Gather(times, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify"), write_s,
+                           peak_megabytes()};
+  std::vector<double> all(4 * static_cast<std::size_t>(world.size));
+  MPI_Gather(times, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   for (int r = 0; r < world.size; ++r) {
-    f.decompose_seconds.push_back(all[3 * r]);
-    f.mesh_seconds.push_back(all[3 * r + 1]);
-    f.write_seconds.push_back(all[3 * r + 2]);
+    f.decompose_seconds.push_back(all[4 * r]);
+    f.mesh_seconds.push_back(all[4 * r + 1]);
+    f.write_seconds.push_back(all[4 * r + 2]);
+    f.peak_megabytes.push_back(all[4 * r + 3]);
   }
   return f;
 }
@@ -232,6 +242,7 @@ std::string report_json(const cli::MeshArgs& args, const World& world, const Fig
   out += "  \"decompose_seconds\": [" + list(f.decompose_seconds) + "],\n";
   out += "  \"mesh_seconds\": [" + list(f.mesh_seconds) + "],\n";
   out += "  \"write_seconds\": [" + list(f.write_seconds) + "],\n";
+  out += "  \"peak_resident_megabytes\": [" + list(f.peak_megabytes) + "],\n";
   std::snprintf(buf, sizeof buf, "  \"seconds\": %.6g\n}\n", seconds);
   return out + buf;
 }
