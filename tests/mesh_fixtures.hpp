@@ -1,6 +1,7 @@
 #pragma once
-// A madd::Mesh made without the mesher, for testing what reads meshes
-// (outputs, verify_mesh) independently of refinement: each subdomain of a
+// Mesh options for tests, and a madd::Mesh made without the mesher, for
+// testing what reads meshes (outputs, verify_mesh) independently of
+// refinement: each subdomain of a
 // decomposition triangulated on its own by madd::triangulate (its ring
 // vertices only, no Steiner points), the pieces merged by global point index.
 #include <doctest/doctest.h>
@@ -16,6 +17,17 @@
 #include "madd/triangulation.hpp"
 
 namespace madd::test {
+
+// Mesh options for N subdomains, angle bound q and area bound `area` (0 =
+// none), on one thread.
+inline MeshOptions options_for(std::uint32_t n, double q, double area) {
+  MeshOptions o;
+  o.decomposition.subdomains = n;
+  o.decomposition.threads = 1;
+  o.size.min_angle_deg = q;
+  o.size.max_area = area;
+  return o;
+}
 
 // The subdomain's rings as a standalone Pslg; local_to_global[i] is the
 // decomposition point of local point i.

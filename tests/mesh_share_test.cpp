@@ -15,6 +15,7 @@
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
+#include "mesh_fixtures.hpp"
 
 namespace {
 
@@ -125,20 +126,11 @@ void check_owners(const std::vector<madd::MeshPart>& parts) {
     }
 }
 
-madd::MeshOptions options(std::uint32_t n, double q, double area) {
-  madd::MeshOptions o;
-  o.decomposition.subdomains = n;
-  o.decomposition.threads = 1;
-  o.size.min_angle_deg = q;
-  o.size.max_area = area;
-  return o;
-}
-
 } // namespace
 
 TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids included, and own their vertices once") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
-  const madd::MeshOptions o = options(8, 30, madd::domain_area(domain) / 3000);
+  const madd::MeshOptions o = madd::test::options_for(8, 30, madd::domain_area(domain) / 3000);
   const madd::Mesh whole = madd::mesh(domain, o);
   for (std::uint32_t shares = 1; shares <= 3; ++shares) {
     CAPTURE(shares);
@@ -154,7 +146,7 @@ TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids incl
 
 TEST_CASE("mesh_share: separator pieces split between rounds are agreed on by every share (the archipelago at q 33)") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/archipelago.poly");
-  const madd::MeshOptions o = options(12, 33, madd::domain_area(domain) / 20000);
+  const madd::MeshOptions o = madd::test::options_for(12, 33, madd::domain_area(domain) / 20000);
   const madd::Mesh whole = madd::mesh(domain, o);
   int rounds = 0;
   const std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, 3, rounds);

@@ -15,6 +15,7 @@
 #include "madd/mesh.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
+#include "mesh_fixtures.hpp"
 
 namespace {
 
@@ -43,14 +44,7 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> ed
   return uses;
 }
 
-madd::MeshOptions options_for(std::uint32_t n, double q, double area) {
-  madd::MeshOptions o;
-  o.decomposition.subdomains = n;
-  o.decomposition.threads = 1;
-  o.size.min_angle_deg = q;
-  o.size.max_area = area;
-  return o;
-}
+using madd::test::options_for;
 
 // The properties every mesh must have, checked here without verify_mesh.
 void check_mesh(const Mesh& m, const madd::Pslg& domain, double max_area) {
