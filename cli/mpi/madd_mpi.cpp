@@ -165,7 +165,7 @@ struct Figures {
   std::uint64_t triangles = 0, vertices = 0;
   double min_angle_deg = 180;
   std::uint64_t below = 0, below_input_angle = 0, below_separator = 0;
-  std::vector<double> decompose_seconds, mesh_seconds, write_seconds, peak_megabytes;
+  std::vector<double> decompose_seconds, mesh_seconds, format_seconds, peak_megabytes;
 };
 
 // This process's peak resident memory.
@@ -176,7 +176,7 @@ double peak_megabytes() {
 }
 
 Figures gather_figures(const World& world, const MeshPart& part, const MeshReport& report, double decompose_s,
-                       double write_s) {
+                       double format_s) {
   Figures f;
   f.triangles = part.total_triangles;
   f.vertices = part.total_points;
@@ -188,14 +188,15 @@ Figures gather_figures(const World& world, const MeshPart& part, const MeshRepor
   f.below = sum[0];
   f.below_input_angle = sum[1];
   f.below_separator = sum[2];
-  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify"), write_s,
+  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
+                           format_s,
                            peak_megabytes()};
   std::vector<double> all(4 * static_cast<std::size_t>(world.size));
   MPI_Gather(times, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   for (int r = 0; r < world.size; ++r) {
     f.decompose_seconds.push_back(all[4 * r]);
     f.mesh_seconds.push_back(all[4 * r + 1]);
-    f.write_seconds.push_back(all[4 * r + 2]);
+    f.format_seconds.push_back(all[4 * r + 2]);
     f.peak_megabytes.push_back(all[4 * r + 3]);
   }
   return f;
@@ -241,9 +242,9 @@ std::string report_json(const cli::MeshArgs& args, const World& world, const Fig
   add("rank_imbalance", imbalance(f.mesh_seconds));
   out += "  \"decompose_seconds\": [" + list(f.decompose_seconds) + "],\n";
   out += "  \"mesh_seconds\": [" + list(f.mesh_seconds) + "],\n";
-  out += "  \"write_seconds\": [" + list(f.write_seconds) + "],\n";
+  out += "  \"format_seconds\": [" + list(f.format_seconds) + "],\n";
   out += "  \"peak_resident_megabytes\": [" + list(f.peak_megabytes) + "],\n";
-  std::snprintf(buf, sizeof buf, "  \"seconds\": %.6g\n}\n", seconds);
+  std::snprintf(buf, sizeof buf, "  \"seconds_before_writing\": %.6g\n}\n", seconds);
   return out + buf;
 }
 
@@ -268,26 +269,31 @@ int run(const World& world, const cli::MeshArgs& args) {
     part = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
                       static_cast<std::uint32_t>(world.size), mpi_exchange(), report);
   }));
-  // Write every part, or none.
-  const auto write_start = std::chrono::steady_clock::now();
+  // Format this rank's files (the report too, on rank 0), gather the
+  // figures, then write every part or none.
+  const auto format_start = std::chrono::steady_clock::now();
   OutputSet outputs;
   MeshPartFormats formats;
   formats.vtu = args.formats.vtu;
   formats.first_index = args.formats.first_index;
-  bool agreed = false;  // every rank must take part in the agreement exactly once
-  const auto all_staged = [&agreed](bool staged_here) {
-    agreed = true;
+  Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats); });
+  const Figures f = gather_figures(world, part, report, decompose_s, seconds_since(format_start));
+  const std::string json = world.rank == 0 && args.report ? report_json(args, world, f, seconds_since(start)) : "";
+  if (staged.code == cli::exit_ok && !json.empty() && !args.report_out.empty())
+    staged = attempt([&] { outputs.add_file(args.report_out, json); });
+  const auto all_staged = [](bool staged_here) {
     int mine = staged_here ? 1 : 0, all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
     return all == 1;
   };
-  const Failure written = attempt([&] {
-    add_mesh_part(outputs, part, args.prefix, formats);
+  Failure written = staged;
+  if (staged.code == cli::exit_ok) {
     writing = 1;
-    outputs.write(all_staged);
-  });
-  writing = 0;
-  if (!agreed) all_staged(false);
+    written = attempt([&] { outputs.write(all_staged); });  // calls all_staged exactly once
+    writing = 0;
+  } else {
+    all_staged(false);  // every rank must take part in the agreement
+  }
   // Only the ranks that failed themselves say why; all exit alike.
   int failed = written.code != cli::exit_ok ? 1 : 0, any = 0;
   MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
@@ -296,20 +302,9 @@ int run(const World& world, const cli::MeshArgs& args) {
       std::fprintf(stderr, "madd-mpi mesh: rank %d: %s\n", world.rank, written.message.c_str());
     return cli::exit_io;
   }
-  const Figures f = gather_figures(world, part, report, decompose_s, seconds_since(write_start));
   if (world.rank != 0) return cli::exit_ok;
   const double seconds = seconds_since(start);
-  if (args.report) {
-    const std::string json = report_json(args, world, f, seconds);
-    if (!args.report_out.empty()) {
-      if (const Failure e = attempt([&] { write_file_atomically(args.report_out, json); }); e.code != cli::exit_ok) {
-        std::fprintf(stderr, "madd-mpi mesh: %s\n", e.message.c_str());
-        return e.code;
-      }
-    } else {
-      std::fputs(json.c_str(), stdout);
-    }
-  }
+  if (!json.empty() && args.report_out.empty()) std::fputs(json.c_str(), stdout);
   if (!args.quiet) {
     std::fprintf(args.report && args.report_out.empty() ? stderr : stdout,
                  "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "

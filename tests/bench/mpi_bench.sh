@@ -2,8 +2,9 @@
 # madd-mpi's scaling on one machine (docs/mpi.md, "Measured"): the same mesh
 # at 1 rank and at P ranks (default 2), REPEAT times each, alternating, one
 # thread per rank. Prints the median wall time of the whole mpirun (start-up,
-# decomposition, meshing, writing), the speed-up, the median load imbalance
-# (slowest rank's meshing time over the mean), the slowest rank's phases and the
+# decomposition, meshing, formatting and writing the files), the speed-up,
+# the median load imbalance (slowest rank's meshing time over the mean), the
+# slowest rank's decomposition, meshing and formatting seconds and the
 # largest peak resident memory of a rank.
 #   tests/bench/mpi_bench.sh BUILD_DIR DOMAIN.poly [-r REPEAT] [-p P] -- MESH_OPTIONS...
 # for example
@@ -36,16 +37,16 @@ for i in $(seq 1 "$repeat"); do
     field rank_imbalance "$work/r$np-$i.json" >> "$work/imbalance$np"
     field mesh_seconds "$work/r$np-$i.json" | tr ',' '\n' | sort -g | tail -1 >> "$work/slowest$np"
     field decompose_seconds "$work/r$np-$i.json" | tr ',' '\n' | sort -g | tail -1 >> "$work/decompose$np"
-    field write_seconds "$work/r$np-$i.json" | tr ',' '\n' | sort -g | tail -1 >> "$work/write$np"
+    field format_seconds "$work/r$np-$i.json" | tr ',' '\n' | sort -g | tail -1 >> "$work/format$np"
     field peak_resident_megabytes "$work/r$np-$i.json" | tr ',' '\n' | sort -g | tail -1 >> "$work/memory$np"
   done
 done
 triangles=$(field triangles "$work/r1-1.json")
 printf '%s, %s triangles, %s runs each (medians; seconds)\n' "$(basename "$domain")" "$triangles" "$repeat"
-printf '%-6s %8s %10s %14s %8s %10s %14s\n' ranks wall decompose "mesh(slowest)" write imbalance "MB(largest)"
+printf '%-6s %8s %10s %14s %8s %10s %14s\n' ranks wall decompose "mesh(slowest)" format imbalance "MB(largest)"
 for np in 1 "$ranks"; do
   printf '%-6s %8.2f %10.2f %14.2f %8.2f %10.3f %14.0f\n' "$np" "$(median < "$work/wall$np")" \
-    "$(median < "$work/decompose$np")" "$(median < "$work/slowest$np")" "$(median < "$work/write$np")" \
+    "$(median < "$work/decompose$np")" "$(median < "$work/slowest$np")" "$(median < "$work/format$np")" \
     "$(median < "$work/imbalance$np")" "$(median < "$work/memory$np")"
 done
 awk -v a="$(median < "$work/wall1")" -v b="$(median < "$work/wall$ranks")" -v p="$ranks" \
