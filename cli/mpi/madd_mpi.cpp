@@ -306,14 +306,23 @@ int run(const World& world, const cli::MeshArgs& args) {
   const double seconds = seconds_since(start);
   if (!json.empty() && args.report_out.empty()) std::fputs(json.c_str(), stdout);
   if (!args.quiet) {
-    std::fprintf(args.report && args.report_out.empty() ? stderr : stdout,
+    std::FILE* out = args.report && args.report_out.empty() ? stderr : stdout;
+    std::fprintf(out,
                  "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
-                 "%.4g), meshing %.2f s on the slowest rank (imbalance %.3f), %.2f s -> %s-*.{node,ele}%s\n",
+                 "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
                  args.input.c_str(), world.size, options.decomposition.subdomains,
                  static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
-                 f.min_angle_deg, static_cast<unsigned long long>(f.below), options.size.min_angle_deg,
-                 *std::max_element(f.mesh_seconds.begin(), f.mesh_seconds.end()), imbalance(f.mesh_seconds), seconds,
+                 f.min_angle_deg, static_cast<unsigned long long>(f.below), options.size.min_angle_deg, seconds,
                  args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
+    // Every rank's meshing time while they fit on a line, else the spread.
+    std::vector<double> sorted = f.mesh_seconds;
+    std::sort(sorted.begin(), sorted.end());
+    if (world.size <= 16)
+      std::fprintf(out, "  meshing seconds per rank: %s; load imbalance (slowest / mean) %.3f\n",
+                   list(f.mesh_seconds).c_str(), imbalance(f.mesh_seconds));
+    else
+      std::fprintf(out, "  meshing seconds per rank: fastest %.3g, median %.3g, slowest %.3g; load imbalance %.3f\n",
+                   sorted.front(), sorted[sorted.size() / 2], sorted.back(), imbalance(f.mesh_seconds));
   }
   return cli::exit_ok;
 }
