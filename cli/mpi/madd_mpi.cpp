@@ -248,16 +248,62 @@ std::string report_json(const cli::MeshArgs& args, const World& world, const Fig
   return out + buf;
 }
 
+// Writes this rank's files (and rank 0's report file) all or nothing across
+// ranks; returns exit_ok or, on every rank alike, exit_io.
+int write_everywhere(const World& world, OutputSet& outputs, Failure staged) {
+  const auto all_staged = [](bool staged_here) {
+    int mine = staged_here ? 1 : 0, all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+    return all == 1;
+  };
+  Failure written = staged;
+  if (staged.code == cli::exit_ok) {
+    writing = 1;
+    written = attempt([&] { outputs.write(all_staged); });  // calls all_staged exactly once
+    writing = 0;
+  } else {
+    all_staged(false);  // every rank must take part in the agreement
+  }
+  // Only the ranks that failed themselves say why; all exit alike.
+  int failed = written.code != cli::exit_ok ? 1 : 0, any = 0;
+  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+  if (!any) return cli::exit_ok;
+  if (failed && written.message.find("another process") == std::string::npos)
+    std::fprintf(stderr, "madd-mpi mesh: rank %d: %s\n", world.rank, written.message.c_str());
+  return cli::exit_io;
+}
+
+// Rank 0's summary: one line of global figures, then the meshing time of
+// every rank while they fit on a line, else their spread.
+void print_summary(const World& world, const cli::MeshArgs& args, const Figures& f, double seconds) {
+  std::FILE* out = args.report && args.report_out.empty() ? stderr : stdout;
+  std::fprintf(out,
+               "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
+               "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
+               args.input.c_str(), world.size, args.options.decomposition.subdomains,
+               static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
+               f.min_angle_deg, static_cast<unsigned long long>(f.below), args.options.size.min_angle_deg, seconds,
+               args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
+  std::vector<double> sorted = f.mesh_seconds;
+  std::sort(sorted.begin(), sorted.end());
+  if (world.size <= 16)
+    std::fprintf(out, "  meshing seconds per rank: %s; load imbalance (slowest / mean) %.3f\n",
+                 list(f.mesh_seconds).c_str(), imbalance(f.mesh_seconds));
+  else
+    std::fprintf(out, "  meshing seconds per rank: fastest %.3g, median %.3g, slowest %.3g; load imbalance %.3f\n",
+                 sorted.front(), sorted[sorted.size() / 2], sorted.back(), imbalance(f.mesh_seconds));
+}
+
 int run(const World& world, const cli::MeshArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   MeshOptions options = args.options;
   Pslg domain;
   Decomposition decomposition;
-  std::vector<PhaseTime> phases;
   // Read and decompose: every rank alike.
-  int code = agree(world, attempt([&] {
+  const int code = agree(world, attempt([&] {
     if (!args.sizes_file.empty()) options.size.background_areas = cli::read_background(args.sizes_file, true);
     domain = read_domain(args.input);
+    std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
   }));
   if (code != cli::exit_ok) return code;
@@ -281,49 +327,10 @@ int run(const World& world, const cli::MeshArgs& args) {
   const std::string json = world.rank == 0 && args.report ? report_json(args, world, f, seconds_since(start)) : "";
   if (staged.code == cli::exit_ok && !json.empty() && !args.report_out.empty())
     staged = attempt([&] { outputs.add_file(args.report_out, json); });
-  const auto all_staged = [](bool staged_here) {
-    int mine = staged_here ? 1 : 0, all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
-    return all == 1;
-  };
-  Failure written = staged;
-  if (staged.code == cli::exit_ok) {
-    writing = 1;
-    written = attempt([&] { outputs.write(all_staged); });  // calls all_staged exactly once
-    writing = 0;
-  } else {
-    all_staged(false);  // every rank must take part in the agreement
-  }
-  // Only the ranks that failed themselves say why; all exit alike.
-  int failed = written.code != cli::exit_ok ? 1 : 0, any = 0;
-  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
-  if (any) {
-    if (failed && written.message.find("another process") == std::string::npos)
-      std::fprintf(stderr, "madd-mpi mesh: rank %d: %s\n", world.rank, written.message.c_str());
-    return cli::exit_io;
-  }
+  if (const int written = write_everywhere(world, outputs, staged); written != cli::exit_ok) return written;
   if (world.rank != 0) return cli::exit_ok;
-  const double seconds = seconds_since(start);
   if (!json.empty() && args.report_out.empty()) std::fputs(json.c_str(), stdout);
-  if (!args.quiet) {
-    std::FILE* out = args.report && args.report_out.empty() ? stderr : stdout;
-    std::fprintf(out,
-                 "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
-                 "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
-                 args.input.c_str(), world.size, options.decomposition.subdomains,
-                 static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
-                 f.min_angle_deg, static_cast<unsigned long long>(f.below), options.size.min_angle_deg, seconds,
-                 args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
-    // Every rank's meshing time while they fit on a line, else the spread.
-    std::vector<double> sorted = f.mesh_seconds;
-    std::sort(sorted.begin(), sorted.end());
-    if (world.size <= 16)
-      std::fprintf(out, "  meshing seconds per rank: %s; load imbalance (slowest / mean) %.3f\n",
-                   list(f.mesh_seconds).c_str(), imbalance(f.mesh_seconds));
-    else
-      std::fprintf(out, "  meshing seconds per rank: fastest %.3g, median %.3g, slowest %.3g; load imbalance %.3f\n",
-                   sorted.front(), sorted[sorted.size() / 2], sorted.back(), imbalance(f.mesh_seconds));
-  }
+  if (!args.quiet) print_summary(world, args, f, seconds_since(start));
   return cli::exit_ok;
 }
 
