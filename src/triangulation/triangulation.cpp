@@ -97,18 +97,20 @@ void flood(const Mesh& mesh, std::vector<std::uint32_t>& dead, std::vector<std::
   }
 }
 
-std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg) {
+// Triangle's classification: with `convex_hull` off, flood from every ghost
+// (the outside of the hull) up to the first segments; then from every hole
+// point. Without segments there is nothing to stop a flood: the hull is kept.
+std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg, const TriangulateOptions& options) {
   std::vector<std::uint32_t> dead = ghost_flags(mesh);
-  if (pslg.segments.empty()) return dead;  // no boundary: keep the convex hull
+  if (pslg.segments.empty()) return dead;
   std::vector<std::uint32_t> stack;
   std::uint32_t some_live = no_index;
+  for (std::uint32_t t = 0; t < dead.size() && some_live == no_index; ++t)
+    if (!mesh.is_ghost(t)) some_live = t;
   // One ghost at a time: the stack then holds at most the region being
   // flooded, not every hull edge at once (half the mesh for a convex polygon).
-  for (std::uint32_t t = 0; t < dead.size(); ++t) {
-    if (!mesh.is_ghost(t)) {
-      if (some_live == no_index) some_live = t;
-      continue;
-    }
+  for (std::uint32_t t = 0; t < dead.size() && !options.convex_hull; ++t) {
+    if (!mesh.is_ghost(t)) continue;
     stack.push_back(t);
     flood(mesh, dead, stack);
   }
@@ -136,7 +138,7 @@ Triangulation delaunay(std::span<const Point> points) {
   return export_mesh(mesh, dead, points);
 }
 
-Triangulation triangulate(const Pslg& pslg) {
+Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options) {
   Mesh mesh;
   if (!detail::build_delaunay(mesh, pslg.points)) {
     Triangulation out;
@@ -144,7 +146,7 @@ Triangulation triangulate(const Pslg& pslg) {
     return out;
   }
   detail::insert_segments(mesh, pslg);
-  std::vector<std::uint32_t> dead = classify(mesh, pslg);
+  std::vector<std::uint32_t> dead = classify(mesh, pslg, options);
   return export_mesh(mesh, dead, pslg.points);
 }
 
