@@ -4,7 +4,6 @@
 #include <algorithm>
 
 #include "kernel/segment_grid.hpp"
-#include "madd/intersections.hpp"
 #include "madd/predicates.hpp"
 #include "pslg/validate_detail.hpp"
 
@@ -30,8 +29,6 @@ ExactSum domain_twice_area_exact(const Pslg& pslg) {
   return twice;
 }
 
-namespace {
-
 // Andrew's monotone chain, every turn decided by orient2d: the hull's
 // vertices counter-clockwise, without collinear ones.
 std::vector<Point> convex_hull(std::vector<Point> pts) {
@@ -50,46 +47,10 @@ std::vector<Point> convex_hull(std::vector<Point> pts) {
   return hull.size() >= 3 ? hull : std::vector<Point>{};
 }
 
-bool in_closed_hull(const std::vector<Point>& hull, Point q) {
-  if (hull.empty()) return false;
-  for (std::size_t i = 0; i < hull.size(); ++i)
-    if (orient2d(hull[i], hull[(i + 1) % hull.size()], q) < 0) return false;
-  return true;
-}
-
-} // namespace
-
 ExactSum hull_twice_area_exact(const std::vector<Point>& points) {
   ExactSum twice;
   const std::vector<Point> hull = convex_hull(points);
   for (std::size_t i = 0; i < hull.size(); ++i) twice.add_cross(hull[i], hull[(i + 1) % hull.size()]);
-  return twice;
-}
-
-std::optional<ExactSum> kept_twice_area_exact(const Pslg& input, bool with_hull) {
-  if (input.segments.empty()) return hull_twice_area_exact(input.points);
-  const Pslg pslg = resolve_intersections(input).pslg;
-  const SegmentGrid grid(pslg.points, pslg.segments);
-  const FaceMap fm = build_face_map(pslg, grid);
-  const std::vector<bool> kept = kept_faces(fm);
-  bool outside_kept = false;
-  ExactSum twice;
-  if (with_hull) {
-    const std::vector<Point> hull = convex_hull(pslg.points);
-    for (std::size_t h = 0; h < pslg.holes.size(); ++h)
-      if (fm.hole_face[h] == no_index && in_closed_hull(hull, pslg.holes[h])) return std::nullopt;
-    outside_kept = true;
-    twice = hull_twice_area_exact(pslg.points);
-  }
-  // The unbounded face's rings run clockwise around what they enclose:
-  // adding them takes the bounded faces out of the hull.
-  for (std::uint32_t h = 0; h < fm.ring_of.size(); ++h) {
-    const std::uint32_t face = fm.face_of_half_edge(h);
-    if (face == no_index ? !outside_kept : !kept[face]) continue;
-    const Segment& s = pslg.segments[h >> 1];
-    const bool backward = (h & 1U) != 0;
-    twice.add_cross(pslg.points[backward ? s.b : s.a], pslg.points[backward ? s.a : s.b]);
-  }
   return twice;
 }
 

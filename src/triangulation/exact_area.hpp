@@ -3,8 +3,6 @@
 // (the faces Triangle keeps after flooding from the outside and the hole
 // points), and a triangulation's. Each is twice the area, as an exact sum
 // (kernel/exact_sum.hpp), so two of them can be compared without rounding.
-#include <optional>
-
 #include "kernel/exact_sum.hpp"
 #include "madd/pslg.hpp"
 #include "madd/triangulation.hpp"
@@ -15,13 +13,10 @@ namespace madd::detail {
 // every half-edge of the rings of the kept faces (validate's face map).
 ExactSum domain_twice_area_exact(const Pslg& pslg);
 
-// Twice the area triangulate(pslg, options) keeps, exactly: the kept faces
-// of the segment graph (split first at every vertex lying inside a segment),
-// plus, with the convex hull, the part of the hull outside every bounded
-// face. Nothing when that part holds a hole point: it can then fall apart
-// into pieces the hole points remove one by one, which the faces alone do
-// not tell. Precondition: validate_pslg() passed, intersections not allowed.
-std::optional<ExactSum> kept_twice_area_exact(const Pslg& pslg, bool convex_hull);
+// The vertices of the convex hull of the points, counter-clockwise, without
+// collinear ones (Andrew's monotone chain, every turn decided by orient2d);
+// empty when they are all on one line.
+std::vector<Point> convex_hull(std::vector<Point> points);
 
 // Twice the area of the convex hull of the points, exactly (0 when they
 // are all on one line).
