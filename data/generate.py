@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Generates madd's bundled test domains (data/*.poly) and the malformed
 inputs of data/bad/ (one per failure class of FORMATS.md "Bad input", each with
-a <name>.expected file: "<kind> <line>", kind = parse or an InputProblem name).
+a <name>.expected file: "<kind> <line>", kind = parse or an InputProblem name,
+the error validate() gives for a domain; then "pslg <kind> <line>", or
+"pslg ok", what validate_pslg() says: what madd triangulate takes).
 
 Run from anywhere: python3 data/generate.py. Output is deterministic."""
 import math
@@ -192,6 +194,24 @@ BAD = {
     "no_segments": (SQUARE + "0 0\n0\n", "empty_domain", 0),
     "disconnected": ("8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 0\n6 3 0\n7 3 1\n8 2 1\n"
                      "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n0\n", "disconnected_domain", 16),
+    "duplicate_segment": (SQUARE + "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 2 1\n0\n", "segments_intersect", 12),
+    "hole_no_segments": (SQUARE + "0 0\n1\n1 0.5 0.5\n", "empty_domain", 0),
+    "region_out_of_range": (SQUARE + SQUARE_SEGS + "0\n1\n1 1e80 0.5 3 0.1\n", "other", 14),
+}
+
+# What validate_pslg() says where it differs from validate(): "ok" (madd
+# triangulate takes it), or (kind, line).
+PSLG = {
+    "t_touching": "ok",
+    "open_boundary": "ok",
+    "isolated_vertex": "ok",
+    "interior_segment": "ok",
+    "hole_outside": "ok",
+    "hole_ring_outside": "ok",
+    "empty_domain": "ok",
+    "no_segments": "ok",
+    "disconnected": "ok",
+    "hole_no_segments": ("empty_domain", 9),
 }
 
 
@@ -201,8 +221,9 @@ def bad():
     for name, (text, kind, line) in BAD.items():
         with open(os.path.join(d, name + ".poly"), "w") as f:
             f.write(f"# bad/{name}.poly: malformed input, expected error: {kind} at line {line}\n" + text)
+        pslg = PSLG.get(name, (kind, line))
         with open(os.path.join(d, name + ".expected"), "w") as f:
-            f.write(f"{kind} {line}\n")
+            f.write(f"{kind} {line}\n" + ("pslg ok\n" if pslg == "ok" else f"pslg {pslg[0]} {pslg[1]}\n"))
 
 
 def fractal(rng, a, b, depth, rough):
