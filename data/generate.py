@@ -196,7 +196,7 @@ BAD = {
                      "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n0\n", "disconnected_domain", 16),
     "duplicate_segment": (SQUARE + "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 2 1\n0\n", "segments_intersect", 12),
     "hole_no_segments": (SQUARE + "0 0\n1\n1 0.5 0.5\n", "empty_domain", 0),
-    "region_out_of_range": (SQUARE + SQUARE_SEGS + "0\n1\n1 1e80 0.5 3 0.1\n", "other", 14),
+    "region_out_of_range": (SQUARE + SQUARE_SEGS + "0\n1\n1 1e80 0.5 3 0.1\n", "invalid_input", 14),
 }
 
 # What validate_pslg() says where it differs from validate(): "ok" (madd
