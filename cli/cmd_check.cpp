@@ -171,7 +171,7 @@ int run_check(int argc, char** argv) {
   return run_guarded("check", check_body, &args);
 }
 
-const CommandRegistration registration({"check", "validate a domain and print a summary", run_check});
+const CommandRegistration registration({"check", "validate a domain, a PSLG or a point set and print a summary", run_check});
 
 } // namespace
 } // namespace madd::cli
