@@ -28,7 +28,7 @@ struct ResolvedPslg {
 // a rounding error; the search is repeated on the pieces until no two meet
 // other than at a shared endpoint. Precondition: validate_pslg() passed
 // with allow_intersections. Deterministic. Throws InvalidInputError when
-// more than 2^22 pairs intersect, or the pieces do not settle.
+// more than 2^20 pairs intersect, or the pieces do not settle.
 ResolvedPslg resolve_intersections(const Pslg& pslg);
 
 } // namespace madd

@@ -27,7 +27,7 @@ namespace {
 using detail::Contact;
 using detail::SegmentConflict;
 
-constexpr std::size_t max_contacts = std::size_t{1} << 22;
+constexpr std::size_t max_contacts = std::size_t{1} << 20;  // about 60 MB of contacts at most
 constexpr int max_passes = 32;
 
 // The vertices splitting one segment, and where along it (for sorting).

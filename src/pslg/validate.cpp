@@ -264,15 +264,13 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
 // Crossings and overlaps, the first in file order; a vertex lying inside a
 // segment (a touch) is allowed: triangulate() splits the segment there.
 void check_pslg_intersections(const Pslg& p, const detail::SegmentGrid& grid, const Reporter& r) {
-  constexpr std::size_t limit = std::size_t{1} << 22;
-  for (const detail::SegmentConflict& c : detail::all_segment_contacts(p, grid, limit)) {
-    if (c.contact.kind == Contact::touch) continue;
-    const char* verb = c.contact.kind == Contact::cross ? " crosses " : " overlaps ";
-    r.fail(InputProblem::segments_intersect,
-           r.segment(c.later) + verb + r.segment(c.earlier) + " at " + at(c.contact.at) +
-               " (madd triangulate --resolve-crossings inserts the intersection vertices)",
-           {r.id(c.later), r.id(c.earlier)}, {c.contact.at}, Item::segment, c.later);
-  }
+  const auto conflict = detail::find_segment_conflict(p, grid, false);
+  if (!conflict) return;
+  const char* verb = conflict->contact.kind == Contact::cross ? " crosses " : " overlaps ";
+  r.fail(InputProblem::segments_intersect,
+         r.segment(conflict->later) + verb + r.segment(conflict->earlier) + " at " + at(conflict->contact.at) +
+             " (madd triangulate --resolve-crossings inserts the intersection vertices)",
+         {r.id(conflict->later), r.id(conflict->earlier)}, {conflict->contact.at}, Item::segment, conflict->later);
 }
 
 } // namespace

@@ -29,7 +29,9 @@ struct SegmentConflict {
   std::uint32_t earlier = 0;
   ContactResult contact;
 };
-std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid);
+// With `touches` off, a segment ending inside another (Contact::touch) is
+// not a conflict: what validate_pslg() allows.
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid, bool touches = true);
 
 // Every pair of segments that meets other than at a shared endpoint (crossing,
 // touching or overlapping), each pair once, ascending by (later, earlier).

@@ -77,6 +77,7 @@ struct BestConflict {
   std::optional<SegmentConflict> best;
   std::size_t budget = 0;
   bool done = false;
+  bool touches = true;
   bool worth_testing(std::uint32_t i, std::uint32_t j) const noexcept {
     const std::uint32_t later = std::max(i, j), earlier = std::min(i, j);
     return !best || later < best->later || (later == best->later && earlier < best->earlier);
@@ -85,7 +86,8 @@ struct BestConflict {
     if (best && --budget == 0) done = true;
     if (!worth_testing(i, j)) return;
     const ContactResult c = classify_contact(p.points, p.segments[i], p.segments[j]);
-    if (c.kind != Contact::none) best = SegmentConflict{std::max(i, j), std::min(i, j), c};
+    if (c.kind != Contact::none && (touches || c.kind != Contact::touch))
+      best = SegmentConflict{std::max(i, j), std::min(i, j), c};
   }
 };
 
@@ -108,8 +110,9 @@ void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& fo
 
 } // namespace
 
-std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid) {
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid, bool touches) {
   BestConflict found;
+  found.touches = touches;
   found.budget = 8 * pslg.segments.size() + 4096;
   std::vector<std::uint32_t> cell;
   for (std::uint32_t r = 0; r < grid.rows() && !found.done; ++r) {
