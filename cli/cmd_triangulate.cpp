@@ -37,6 +37,9 @@ constexpr const char* triangulate_help =
     "else take a marker of a segment through them, else 1 on the boundary.\n\n"
     "options:\n"
     "  -c, --convex-hull    keep the whole convex hull but the holes (Triangle -pc)\n"
+    "  -A, --region-attributes\n"
+    "                       give each triangle the attribute of its region (a column\n"
+    "                       of PREFIX.ele; 0 outside every region), as Triangle -A\n"
     "  -r, --resolve-crossings\n"
     "                       split crossing and overlapping segments at new\n"
     "                       intersection vertices (default: such segments are bad input)\n"
@@ -114,10 +117,15 @@ std::string node_text(const Pslg& pslg, const Triangulation& tri) {
 std::string ele_text(const Pslg& pslg, const Triangulation& tri) {
   const unsigned base = pslg.first_index;
   std::string out;
-  line(out, tri.triangle_count(), 3, 0);
+  const bool attributes = !tri.attributes.empty();
+  line(out, tri.triangle_count(), 3, attributes ? 1 : 0);
   for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
     const auto& c = tri.triangles[t];
-    line(out, t + base, c[0] + base, c[1] + base, c[2] + base);
+    if (attributes) {
+      line(out, t + base, c[0] + base, c[1] + base, c[2] + base, tri.attributes[t]);
+    } else {
+      line(out, t + base, c[0] + base, c[1] + base, c[2] + base);
+    }
   }
   return out;
 }
@@ -175,6 +183,7 @@ Triangulated triangulate_input(const Args& args) {
   if (file.pslg.segments.empty()) {
     validate_pslg(file.pslg, file.source);
     out.tri = triangulate_points(file.pslg, args.input);
+    if (args.options.region_attributes) out.tri = triangulate(file.pslg, args.options);  // the same triangles
     out.pslg = std::move(file.pslg);
     return out;
   }
@@ -215,6 +224,7 @@ int triangulate_body(void* context) {
 
 int run_triangulate(int argc, char** argv) {
   static const option long_options[] = {{"convex-hull", no_argument, nullptr, 'c'},
+                                        {"region-attributes", no_argument, nullptr, 'A'},
                                         {"resolve-crossings", no_argument, nullptr, 'r'},
                                         {"output", required_argument, nullptr, 'o'},
                                         {"quiet", no_argument, nullptr, 'q'},
@@ -223,9 +233,10 @@ int run_triangulate(int argc, char** argv) {
   Args args;
   optind = 0;
   int c;
-  while ((c = getopt_long(argc, argv, "cro:qh", long_options, nullptr)) != -1) {
+  while ((c = getopt_long(argc, argv, "cAro:qh", long_options, nullptr)) != -1) {
     switch (c) {
     case 'c': args.options.convex_hull = true; break;
+    case 'A': args.options.region_attributes = true; break;
     case 'r': args.resolve = true; break;
     case 'o': args.prefix = optarg; break;
     case 'q': args.quiet = true; break;

@@ -346,6 +346,14 @@ TEST_CASE("triangulate takes any PSLG: -c keeps the hull, -r resolves crossings,
   REQUIRE_MESSAGE(resolved.code == 0, resolved.err);
   CHECK(has(resolved.out, "20 vertices, 34 triangles (resolved 6 crossing(s), 1 overlap(s): 4 new vertices)"));
   CHECK(slurp(dir / "x.node").rfind("20 2 0 1\n", 0) == 0);
+  // -A: the region's attribute as a column of the .ele (one triangle in the estuary's loop).
+  const Result regions = run_madd(dir, "triangulate -A -o a '" + pslg_dir + "estuary.poly'");
+  REQUIRE_MESSAGE(regions.code == 0, regions.err);
+  const std::string ele = slurp(dir / "a.ele");
+  CHECK(ele.rfind("40 3 1\n", 0) == 0);
+  std::size_t twos = 0;
+  for (std::size_t at = ele.find(" 2\n"); at != std::string::npos; at = ele.find(" 2\n", at + 1)) ++twos;
+  CHECK(twos == 1);
 }
 
 TEST_CASE("check describes a PSLG; decompose and mesh refuse it with a located error and write nothing") {

@@ -250,4 +250,45 @@ TEST_CASE("the data/pslg inputs triangulate and verify; the crossing lanes once 
   CHECK(madd::triangulate(lanes.pslg).triangle_count() == 34);
 }
 
+TEST_CASE("regional attributes follow the triangles up to the segments; a later region point in the same region wins") {
+  // The estuary's loop (6, 2), (8, 2), (7, 3.5) holds no vertex: one
+  // triangle, with the region's attribute 2; every other kept triangle 0.
+  madd::Pslg p = madd::read_poly_file(std::string(MADD_DATA_DIR) + "/pslg/estuary.poly").pslg;
+  madd::TriangulateOptions o;
+  o.region_attributes = true;
+  for (const bool hull : {false, true}) {
+    o.convex_hull = hull;
+    const madd::Triangulation tri = madd::triangulate(p, o);
+    check_verified(tri, p, o);
+    REQUIRE(tri.attributes.size() == tri.triangle_count());
+    CHECK(std::count(tri.attributes.begin(), tri.attributes.end(), 2.0) == 1);
+    CHECK(std::count(tri.attributes.begin(), tri.attributes.end(), 0.0) == 39);
+    for (std::uint32_t t = 0; t < tri.triangle_count(); ++t)
+      if (tri.attributes[t] == 2.0) {
+        const Point c = (1.0 / 3.0) * (tri.points[tri.triangles[t][0]] + tri.points[tri.triangles[t][1]] +
+                                       tri.points[tri.triangles[t][2]]);
+        CHECK(inside_convex({{6, 2}, {8, 2}, {7, 3.5}}, c));
+      }
+  }
+  // Two more region points in the water: the last one's attribute covers it;
+  // one in the hole and one outside the shore change nothing.
+  p.regions.push_back({{5, 1}, 7.0, -1.0});
+  p.regions.push_back({{9, 4}, 9.0, -1.0});
+  p.regions.push_back({{1.5, 1.2}, 11.0, -1.0});
+  p.regions.push_back({{20, 20}, 13.0, -1.0});
+  o.convex_hull = false;
+  const madd::Triangulation tri = madd::triangulate(p, o);
+  check_verified(tri, p, o);
+  CHECK(std::count(tri.attributes.begin(), tri.attributes.end(), 2.0) == 1);
+  CHECK(std::count(tri.attributes.begin(), tri.attributes.end(), 9.0) == 39);
+  // Without the option there are none, and the triangles are the same.
+  const madd::Triangulation plain = madd::triangulate(p);
+  CHECK(plain.attributes.empty());
+  CHECK(plain.triangles == tri.triangles);
+  // verify_triangulation catches an attribute that changes across an unconstrained edge.
+  madd::Triangulation broken = tri;
+  broken.attributes[0] += 1;
+  CHECK(!madd::verify_triangulation(broken, &p, o).ok());
+}
+
 } // TEST_SUITE

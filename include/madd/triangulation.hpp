@@ -21,6 +21,9 @@ struct Triangulation {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 3>> neighbours;
   std::vector<std::array<std::uint32_t, 3>> segment_of;
+  // Per triangle, its regional attribute (TriangulateOptions::region_attributes);
+  // empty otherwise.
+  std::vector<double> attributes;
 
   std::size_t triangle_count() const noexcept { return triangles.size(); }
   bool is_constrained(std::uint32_t t, int edge) const noexcept { return segment_of[t][edge] != no_index; }
@@ -41,6 +44,11 @@ struct TriangulateOptions {
   // points remove. Off: triangles are removed from the hull inwards up to the
   // first segments (Triangle's -p), and from every hole point outwards.
   bool convex_hull = false;
+  // Give every triangle the attribute of the region point whose region (up to
+  // the segments) holds it, 0 where there is none; of two region points in
+  // one region the later wins (Triangle's -A). A region point on a segment
+  // falls on one side of it.
+  bool region_attributes = false;
   friend bool operator==(const TriangulateOptions&, const TriangulateOptions&) = default;
 };
 
@@ -58,7 +66,8 @@ Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options = 
 // Independent check of the invariants: orientation, symmetric adjacency, the
 // empty-circle property of every unconstrained interior edge (exact incircle),
 // and, when `pslg` is given, every segment present as a chain of edges and the
-// total area exactly that of the region triangulate(*pslg, options) keeps
+// total area exactly that of the region triangulate(*pslg, options) keeps;
+// with attributes, one per triangle, equal across every unconstrained edge;
 // (summed in exact expansion arithmetic; with `convex_hull` and a hole point
 // outside every bounded face, the area is not checked).
 Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg = nullptr,

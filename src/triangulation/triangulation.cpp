@@ -56,8 +56,15 @@ Triples to_triples(std::vector<std::uint32_t>& flat) {
 // no_index. Peak memory: the working arrays are compacted in place and `dead`
 // released before any output array exists, then each working array is
 // released as soon as its exact-size copy is made, and the points come last.
-Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points) {
+Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points,
+                          const std::vector<double>& attribute = {}) {
   const std::uint32_t live = renumber(dead);
+  std::vector<double> attributes;
+  if (!attribute.empty()) {
+    attributes.resize(live);
+    for (std::uint32_t t = 0; t < dead.size(); ++t)
+      if (dead[t] != no_index) attributes[dead[t]] = attribute[t];
+  }
   compact(mesh.tv, dead, live);
   compact_neighbours(mesh.tn, dead, live);
   const bool constrained = !mesh.seg.empty();
@@ -72,6 +79,7 @@ Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::spa
     out.segment_of.assign(live, {no_index, no_index, no_index});
   }
   out.points.assign(points.begin(), points.end());
+  out.attributes = std::move(attributes);
   return out;
 }
 
@@ -125,6 +133,36 @@ std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg, const Tr
   return dead;
 }
 
+// Regional attributes, as Triangle's -A: each region point's attribute spreads
+// over the kept triangles around it, up to the segments; a later region in
+// the same place wins; the rest get 0.
+std::vector<double> region_attributes(const Mesh& mesh, const Pslg& pslg, const std::vector<std::uint32_t>& dead) {
+  std::vector<double> attribute(dead.size(), 0.0);
+  std::vector<std::uint32_t> seen(dead.size(), 0), stack;
+  std::uint32_t some_live = 0;
+  while (some_live < dead.size() && dead[some_live]) ++some_live;
+  if (some_live == dead.size()) return attribute;
+  for (std::uint32_t r = 0; r < pslg.regions.size(); ++r) {
+    const std::uint32_t t0 = detail::walk_to(mesh, pslg.points, pslg.regions[r].at, some_live);
+    if (t0 == no_index || dead[t0]) continue;
+    const std::uint32_t stamp = r + 1;
+    seen[t0] = stamp;
+    stack.push_back(t0);
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      attribute[t] = pslg.regions[r].attribute;
+      for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
+        const std::uint32_t u = mesh.tn[h] / 3;
+        if ((!mesh.seg.empty() && mesh.seg[h] != no_index) || dead[u] || seen[u] == stamp) continue;
+        seen[u] = stamp;
+        stack.push_back(u);
+      }
+    }
+  }
+  return attribute;
+}
+
 } // namespace
 
 Triangulation delaunay(std::span<const Point> points) {
@@ -147,7 +185,9 @@ Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options) {
   }
   detail::insert_segments(mesh, pslg);
   std::vector<std::uint32_t> dead = classify(mesh, pslg, options);
-  return export_mesh(mesh, dead, pslg.points);
+  if (!options.region_attributes) return export_mesh(mesh, dead, pslg.points);
+  const std::vector<double> attribute = region_attributes(mesh, pslg, dead);
+  return export_mesh(mesh, dead, pslg.points, attribute);
 }
 
 } // namespace madd

@@ -37,8 +37,9 @@ std::string tri_name(std::size_t t) { return "triangle " + std::to_string(t); }
 
 bool check_shapes(const Triangulation& tri, Verification& v) {
   const std::size_t nt = tri.triangles.size();
-  if (tri.neighbours.size() != nt || tri.segment_of.size() != nt) {
-    v.add("triangles, neighbours and segment_of differ in size");
+  if (tri.neighbours.size() != nt || tri.segment_of.size() != nt ||
+      (!tri.attributes.empty() && tri.attributes.size() != nt)) {
+    v.add("triangles, neighbours, segment_of and attributes differ in size");
     return false;
   }
   bool ok = true;
@@ -108,6 +109,18 @@ void check_adjacency(const Triangulation& tri, Verification& v) {
   }
 }
 
+// A region ends only at segments: across an unconstrained edge the regional
+// attribute is the same.
+void check_attributes(const Triangulation& tri, Verification& v) {
+  if (tri.attributes.empty()) return;
+  for (std::size_t t = 0; t < tri.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = tri.neighbours[t][i];
+      if (u != no_index && tri.segment_of[t][i] == no_index && !(tri.attributes[u] == tri.attributes[t]))
+        report(v, tri_name(t) + " and " + tri_name(u) + " share an unconstrained edge but not their regional attribute");
+    }
+}
+
 // Empty circle: across every unconstrained interior edge the opposite vertex
 // is not strictly inside the circumcircle.
 void check_delaunay(const Triangulation& tri, Verification& v) {
@@ -163,6 +176,7 @@ Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg, co
   check_orientation(tri, v);
   check_adjacency(tri, v);
   check_delaunay(tri, v);
+  check_attributes(tri, v);
   if (pslg != nullptr) {
     if (pslg->points != tri.points) v.add("the triangulation's points differ from the PSLG's");
     const detail::KeptRegion region = detail::kept_region(*pslg, options);
