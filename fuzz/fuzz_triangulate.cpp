@@ -2,7 +2,8 @@
 // crossings) -> triangulate, then the independent verifier. The options come
 // from the input's first byte, so the corpus exercises every combination: bit
 // 0 keeps the convex hull (-c), bit 1 resolves crossings (-r), bit 2 asks for
-// the strict domain validation that decompose uses. Only madd::Error may
+// the strict domain validation that decompose uses, bit 3 regional attributes
+// (-A). Only madd::Error may
 // escape the library; a result that fails verify_triangulation is a bug and
 // aborts, and so does a domain that validate() accepts but validate_pslg()
 // refuses (every domain is a PSLG).
@@ -32,11 +33,12 @@ void must(const char* what, Check&& check) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::uint8_t mode = size > 0 && data[0] < 8 ? data[0] : 0;
-  const std::size_t skip = size > 0 && data[0] < 8 ? 1 : 0;  // a text input (the seeds) runs with mode 0
+  const std::uint8_t mode = size > 0 && data[0] < 16 ? data[0] : 0;
+  const std::size_t skip = size > 0 && data[0] < 16 ? 1 : 0;  // a text input (the seeds) runs with mode 0
   const std::string_view text(reinterpret_cast<const char*>(data) + skip, size - skip);
   madd::TriangulateOptions options;
   options.convex_hull = (mode & 1) != 0;
+  options.region_attributes = (mode & 8) != 0;
   const bool resolve = (mode & 2) != 0;
   try {
     madd::PolyFile file = madd::parse_poly(text, "fuzz.poly");
