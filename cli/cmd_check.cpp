@@ -1,5 +1,5 @@
-// `madd check FILE.poly|FILE.node`: read and validate a domain or a point set,
-// print a summary.
+// `madd check FILE.poly|FILE.node`: read and validate a domain, a PSLG or a
+// point set, print a summary.
 #include <getopt.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "point_set.hpp"
+#include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/pslg.hpp"
 #include "madd/triangulation.hpp"
@@ -22,6 +23,10 @@ constexpr const char* check_help =
     "usage: madd check [options] FILE.poly|FILE.node\n\n"
     "Reads and validates a domain (Triangle .poly) and prints a summary: vertices,\n"
     "segments, holes, regions, area, bounding box and shortest segment.\n"
+    "A PSLG that is not a domain (interior or dangling segments, isolated\n"
+    "vertices, vertices on segments, open polylines: what madd triangulate takes)\n"
+    "is accepted too; its summary counts each kind, and says why madd decompose\n"
+    "and madd mesh refuse it.\n"
     "A point set (a .node, or a .poly without segments and holes: what madd\n"
     "triangulate takes) is checked for coordinates, duplicates and at least one\n"
     "triangle; the summary gives points, bounding box, convex hull and closest pair.\n\n"
@@ -105,15 +110,46 @@ void print_point_set_summary(const std::string& path, const Pslg& pslg, const Tr
   std::printf("  no segments: madd triangulate takes it; madd decompose needs a domain\n");
 }
 
+// A PSLG that validate() refuses as a domain: what it holds, and the
+// domain error (located) that decompose and mesh give for it.
+void print_pslg_summary(const std::string& path, const Pslg& pslg, const InvalidInputError& not_a_domain) {
+  const PslgSummary s = summarize_pslg(pslg);
+  const auto [xmin, ymin, xmax, ymax] = bounding_box(pslg);
+  std::printf("%s: valid PSLG, not a domain\n", path.c_str());
+  std::printf("  vertices          %zu\n", pslg.points.size());
+  std::printf("  segments          %zu (%zu boundary, %zu interior, %zu outside)\n", pslg.segments.size(),
+              s.boundary_segments, s.interior_segments, s.outside_segments);
+  std::printf("  isolated vertices %zu (%zu inside)\n", s.isolated_vertices, s.isolated_inside);
+  std::printf("  vertices on segments %zu\n", s.vertices_inside_segments);
+  std::printf("  dangling ends     %zu\n", s.dangling_ends);
+  std::printf("  holes             %zu\n", pslg.holes.size());
+  std::printf("  regions           %zu\n", pslg.regions.size());
+  std::printf("  parts             %zu\n", s.parts);
+  std::printf("  area              %.17g\n", s.area);
+  std::printf("  bounding box      [%.17g, %.17g] x [%.17g, %.17g]\n", xmin, xmax, ymin, ymax);
+  std::printf("  madd triangulate takes it; madd decompose and madd mesh refuse it:\n  %s\n",
+              not_a_domain.what());
+}
+
 int check_body(void* context) {
   const auto& args = *static_cast<CheckArgs*>(context);
-  const Pslg pslg = read_domain_or_points(args.path);
-  if (pslg.segments.empty()) {
-    const Triangulation tri = triangulate_points(pslg, args.path);
-    if (!args.quiet) print_point_set_summary(args.path, pslg, tri);
+  PolyFile file = read_poly_file(args.path);
+  if (file.pslg.segments.empty() && file.pslg.holes.empty()) {
+    ValidateOptions options;
+    options.allow_point_set = true;
+    validate(file.pslg, file.source, options);
+    const Triangulation tri = triangulate_points(file.pslg, args.path);
+    if (!args.quiet) print_point_set_summary(args.path, file.pslg, tri);
     return exit_ok;
   }
-  if (!args.quiet) print_summary(args.path, pslg);
+  try {
+    validate(file.pslg, file.source);
+  } catch (const InvalidInputError& not_a_domain) {
+    validate_pslg(file.pslg, file.source);  // not even a PSLG: that error is the one to report
+    if (!args.quiet) print_pslg_summary(args.path, file.pslg, not_a_domain);
+    return exit_ok;
+  }
+  if (!args.quiet) print_summary(args.path, file.pslg);
   return exit_ok;
 }
 
@@ -135,7 +171,7 @@ int run_check(int argc, char** argv) {
   return run_guarded("check", check_body, &args);
 }
 
-const CommandRegistration registration({"check", "validate a domain and print a summary", run_check});
+const CommandRegistration registration({"check", "validate a domain, a PSLG or a point set and print a summary", run_check});
 
 } // namespace
 } // namespace madd::cli

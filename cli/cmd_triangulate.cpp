@@ -1,6 +1,7 @@
-// `madd triangulate [-o PREFIX] FILE.poly`: constrained Delaunay triangulation
-// of a domain, written as Triangle writes it (.node, .ele, .neigh, .edge).
-// A FILE.node (points only) gives the Delaunay triangulation of its points.
+// `madd triangulate [-c] [-r] [-o PREFIX] FILE.poly`: constrained Delaunay
+// triangulation of any PSLG, written as Triangle writes it (.node, .ele,
+// .neigh, .edge). A FILE.node (points only) gives the Delaunay triangulation
+// of its points.
 #include <getopt.h>
 
 #include <charconv>
@@ -13,6 +14,7 @@
 #include "point_set.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
+#include "madd/intersections.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"
 
@@ -21,16 +23,26 @@ namespace {
 
 constexpr const char* triangulate_help =
     "usage: madd triangulate [options] FILE.poly|FILE.node\n\n"
-    "Constrained Delaunay triangulation of the domain in FILE.poly (holes and the\n"
-    "outside removed, as Triangle -p does), or the Delaunay triangulation of the\n"
-    "points of FILE.node or of a FILE.poly without segments (covering their convex\n"
-    "hull, as Triangle does), checked by verify_triangulation, then written in\n"
-    "Triangle's formats: PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge.\n"
+    "Constrained Delaunay triangulation of the planar straight line graph in\n"
+    "FILE.poly: every vertex (isolated ones too) is a vertex of it, every segment\n"
+    "(interior, dangling, split where a vertex lies on it) a chain of edges; the\n"
+    "triangles are removed from the convex hull inwards up to the first segments\n"
+    "and around every hole point, as Triangle -p does. Or the Delaunay\n"
+    "triangulation of the points of FILE.node or of a FILE.poly without segments\n"
+    "(covering their convex hull). Checked by verify_triangulation, then written\n"
+    "in Triangle's formats: PREFIX.node, PREFIX.ele, PREFIX.neigh, PREFIX.edge.\n"
     "Ids start at the input file's first index.\n"
     "Markers follow Triangle: constrained edges carry their segment's marker, other\n"
     "edges 0 (hull edges 1 for points); vertices keep a nonzero input marker,\n"
     "else take a marker of a segment through them, else 1 on the boundary.\n\n"
     "options:\n"
+    "  -c, --convex-hull    keep the whole convex hull but the holes (Triangle -pc)\n"
+    "  -A, --region-attributes\n"
+    "                       give each triangle the attribute of its region (a column\n"
+    "                       of PREFIX.ele; 0 outside every region), as Triangle -A\n"
+    "  -r, --resolve-crossings\n"
+    "                       split crossing and overlapping segments at new\n"
+    "                       intersection vertices (default: such segments are bad input)\n"
     "  -o, --output PREFIX  output prefix (default: FILE without .poly or .node, plus \".1\")\n"
     "  -q, --quiet          print nothing on success\n"
     "  -h, --help           this text\n\n"
@@ -40,6 +52,8 @@ struct Args {
   std::string input;
   std::string prefix;
   bool quiet = false;
+  bool resolve = false;
+  TriangulateOptions options;
 };
 
 // One output line: the values separated by spaces. Numbers go through
@@ -103,10 +117,15 @@ std::string node_text(const Pslg& pslg, const Triangulation& tri) {
 std::string ele_text(const Pslg& pslg, const Triangulation& tri) {
   const unsigned base = pslg.first_index;
   std::string out;
-  line(out, tri.triangle_count(), 3, 0);
+  const bool attributes = !tri.attributes.empty();
+  line(out, tri.triangle_count(), 3, attributes ? 1 : 0);
   for (std::size_t t = 0; t < tri.triangle_count(); ++t) {
     const auto& c = tri.triangles[t];
-    line(out, t + base, c[0] + base, c[1] + base, c[2] + base);
+    if (attributes) {
+      line(out, t + base, c[0] + base, c[1] + base, c[2] + base, tri.attributes[t]);
+    } else {
+      line(out, t + base, c[0] + base, c[1] + base, c[2] + base);
+    }
   }
   return out;
 }
@@ -150,35 +169,75 @@ bool ends_with(const std::string& s, const char* suffix) {
 }
 
 // A point set (a .node, or a .poly without segments, as Triangle takes it)
-// is triangulated over its convex hull (cli/point_set.hpp).
+// is triangulated over its convex hull (cli/point_set.hpp); anything else is
+// a PSLG, its crossings resolved first when asked.
+struct Triangulated {
+  Pslg pslg;
+  Triangulation tri;
+  std::string note;
+};
+
+Triangulated triangulate_input(const Args& args) {
+  PolyFile file = read_poly_file(args.input);
+  Triangulated out;
+  if (file.pslg.segments.empty()) {
+    validate_pslg(file.pslg, file.source);
+    out.tri = triangulate_points(file.pslg, args.input);
+    if (args.options.region_attributes) out.tri = triangulate(file.pslg, args.options);  // the same triangles
+    out.pslg = std::move(file.pslg);
+    return out;
+  }
+  ValidatePslgOptions validation;
+  validation.allow_intersections = args.resolve;
+  validate_pslg(file.pslg, file.source, validation);
+  if (args.resolve) {
+    ResolvedPslg resolved = resolve_intersections(file.pslg);
+    if (resolved.crossings + resolved.overlaps > 0)
+      out.note = " (resolved " + std::to_string(resolved.crossings) + " crossing(s), " +
+                 std::to_string(resolved.overlaps) + " overlap(s): " + std::to_string(resolved.new_vertices) +
+                 " new vertices)";
+    file.pslg = std::move(resolved.pslg);
+  }
+  out.pslg = std::move(file.pslg);
+  out.tri = triangulate(out.pslg, args.options);
+  return out;
+}
+
 int triangulate_body(void* context) {
   const auto& args = *static_cast<Args*>(context);
-  const Pslg pslg = read_domain_or_points(args.input);
+  const Triangulated result = triangulate_input(args);
+  const Pslg& pslg = result.pslg;
+  const Triangulation& tri = result.tri;
   const bool points_only = pslg.segments.empty();
-  const Triangulation tri = points_only ? triangulate_points(pslg, args.input) : triangulate(pslg);
-  const Verification check = verify_triangulation(tri, points_only ? nullptr : &pslg);
+  const Verification check = verify_triangulation(tri, points_only ? nullptr : &pslg, args.options);
   if (!check.ok()) throw InternalError("the triangulation failed its check: " + check.problems.front());
   write_file_atomically(args.prefix + ".node", node_text(pslg, tri));
   write_file_atomically(args.prefix + ".ele", ele_text(pslg, tri));
   write_file_atomically(args.prefix + ".neigh", neigh_text(pslg, tri));
   write_file_atomically(args.prefix + ".edge", edge_text(pslg, tri));
   if (!args.quiet) {
-    std::printf("%s: %zu vertices, %zu triangles -> %s.{node,ele,neigh,edge}\n", args.input.c_str(),
-                tri.points.size(), tri.triangle_count(), args.prefix.c_str());
+    std::printf("%s: %zu vertices, %zu triangles%s -> %s.{node,ele,neigh,edge}\n", args.input.c_str(),
+                tri.points.size(), tri.triangle_count(), result.note.c_str(), args.prefix.c_str());
   }
   return exit_ok;
 }
 
 int run_triangulate(int argc, char** argv) {
-  static const option long_options[] = {{"output", required_argument, nullptr, 'o'},
+  static const option long_options[] = {{"convex-hull", no_argument, nullptr, 'c'},
+                                        {"region-attributes", no_argument, nullptr, 'A'},
+                                        {"resolve-crossings", no_argument, nullptr, 'r'},
+                                        {"output", required_argument, nullptr, 'o'},
                                         {"quiet", no_argument, nullptr, 'q'},
                                         {"help", no_argument, nullptr, 'h'},
                                         {nullptr, 0, nullptr, 0}};
   Args args;
   optind = 0;
   int c;
-  while ((c = getopt_long(argc, argv, "o:qh", long_options, nullptr)) != -1) {
+  while ((c = getopt_long(argc, argv, "cAro:qh", long_options, nullptr)) != -1) {
     switch (c) {
+    case 'c': args.options.convex_hull = true; break;
+    case 'A': args.options.region_attributes = true; break;
+    case 'r': args.resolve = true; break;
     case 'o': args.prefix = optarg; break;
     case 'q': args.quiet = true; break;
     case 'h': std::fputs(triangulate_help, stdout); return exit_ok;

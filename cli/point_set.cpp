@@ -1,15 +1,8 @@
 #include "point_set.hpp"
 
 #include "madd/error.hpp"
-#include "madd/poly_io.hpp"
 
 namespace madd::cli {
-
-Pslg read_domain_or_points(const std::string& path) {
-  ValidateOptions options;
-  options.allow_point_set = true;
-  return read_domain(path, options);
-}
 
 Triangulation triangulate_points(const Pslg& points, const std::string& path) {
   Triangulation tri = delaunay(points.points);

@@ -8,10 +8,6 @@
 
 namespace madd::cli {
 
-// Reads FILE and validates it as a domain, or as a point set when it has no
-// segments and no holes (duplicates and the coordinate range are checked).
-Pslg read_domain_or_points(const std::string& path);
-
 // The Delaunay triangulation of a point set, covering its convex hull. Points
 // that have no triangle at all (fewer than three, or all on one line) are bad
 // input (InvalidInputError naming the file).

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Generates madd's bundled test domains (data/*.poly) and the malformed
 inputs of data/bad/ (one per failure class of FORMATS.md "Bad input", each with
-a <name>.expected file: "<kind> <line>", kind = parse or an InputProblem name).
+a <name>.expected file: "<kind> <line>", kind = parse or an InputProblem name,
+the error validate() gives for a domain; then "pslg <kind> <line>", or
+"pslg ok", what validate_pslg() says: what madd triangulate takes).
 
 Run from anywhere: python3 data/generate.py. Output is deterministic."""
 import math
@@ -192,6 +194,24 @@ BAD = {
     "no_segments": (SQUARE + "0 0\n0\n", "empty_domain", 0),
     "disconnected": ("8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 0\n6 3 0\n7 3 1\n8 2 1\n"
                      "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n0\n", "disconnected_domain", 16),
+    "duplicate_segment": (SQUARE + "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 2 1\n0\n", "segments_intersect", 12),
+    "hole_no_segments": (SQUARE + "0 0\n1\n1 0.5 0.5\n", "empty_domain", 0),
+    "region_out_of_range": (SQUARE + SQUARE_SEGS + "0\n1\n1 1e80 0.5 3 0.1\n", "invalid_input", 14),
+}
+
+# What validate_pslg() says where it differs from validate(): "ok" (madd
+# triangulate takes it), or (kind, line).
+PSLG = {
+    "t_touching": "ok",
+    "open_boundary": "ok",
+    "isolated_vertex": "ok",
+    "interior_segment": "ok",
+    "hole_outside": "ok",
+    "hole_ring_outside": "ok",
+    "empty_domain": "ok",
+    "no_segments": "ok",
+    "disconnected": "ok",
+    "hole_no_segments": ("empty_domain", 9),
 }
 
 
@@ -201,8 +221,9 @@ def bad():
     for name, (text, kind, line) in BAD.items():
         with open(os.path.join(d, name + ".poly"), "w") as f:
             f.write(f"# bad/{name}.poly: malformed input, expected error: {kind} at line {line}\n" + text)
+        pslg = PSLG.get(name, (kind, line))
         with open(os.path.join(d, name + ".expected"), "w") as f:
-            f.write(f"{kind} {line}\n")
+            f.write(f"{kind} {line}\n" + ("pslg ok\n" if pslg == "ok" else f"pslg {pslg[0]} {pslg[1]}\n"))
 
 
 def fractal(rng, a, b, depth, rough):
@@ -310,6 +331,89 @@ def archipelago():
                [shore] + [ring[::-1] for ring in islands], holes)
 
 
+def write_pslg(name, comment, points, segments, holes=(), regions=()):
+    """A general PSLG in data/pslg/: points, segments as 0-based index pairs
+    (written 1-based), hole points, regions (x, y, attribute, max_area)."""
+    d = os.path.join(HERE, "pslg")
+    os.makedirs(d, exist_ok=True)
+    lines = ["# " + c for c in comment.strip().split("\n")]
+    lines.append(f"{len(points)} 2 0 0")
+    lines += [f"{i + 1} {x!r} {y!r}" for i, (x, y) in enumerate(points)]
+    lines.append(f"{len(segments)} 0")
+    lines += [f"{i + 1} {a + 1} {b + 1}" for i, (a, b) in enumerate(segments)]
+    lines.append(f"{len(holes)}")
+    lines += [f"{i + 1} {x!r} {y!r}" for i, (x, y) in enumerate(holes)]
+    lines.append(f"{len(regions)}")
+    lines += [f"{i + 1} {x!r} {y!r} {a!r} {m!r}" for i, (x, y, a, m) in enumerate(regions)]
+    with open(os.path.join(d, name), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("pslg/" + name)
+
+
+def chain(points, pts, closed=False):
+    """Appends pts to points; returns the segments joining them in order."""
+    base = len(points)
+    points.extend(pts)
+    segs = [(base + k, base + k + 1) for k in range(len(pts) - 1)]
+    return segs + ([(base + len(pts) - 1, base)] if closed else [])
+
+
+def estuary():
+    # Every kind of interior constraint in one domain; tests/pslg_test.cpp
+    # derives its expected counts from this construction (keep them in step).
+    pts, segs = [], []
+    segs += chain(pts, [(0.0, 0.0), (10.0, 0.0), (10.0, 6.0), (7.0, 8.0), (3.0, 8.0), (0.0, 6.0)], True)  # shore
+    segs += chain(pts, [(1.0, 1.0), (2.0, 1.0), (2.0, 2.0), (1.0, 2.0)], True)  # a hole (a pier)
+    segs += chain(pts, [(6.0, 2.0), (8.0, 2.0), (7.0, 3.5)], True)  # a closed interior loop: a region
+    lane = chain(pts, [(3.5, 5.0), (4.0, 3.5)])  # a lane from the shore vertex (3, 8) into the water
+    segs += [(4, len(pts) - 2)] + lane
+    segs += chain(pts, [(5.0, 5.0), (6.0, 5.5), (8.0, 5.5)])  # a levee: an open polyline
+    y = len(pts)
+    segs += chain(pts, [(6.0, 6.5)]) + [(y - 2, y)]  # a spur: a Y-junction at (6, 5.5)
+    t = len(pts)
+    pts += [(4.5, 4.2), (5.5, 5.25)]  # a groyne ending inside the levee segment (5, 5)-(6, 5.5)
+    segs.append((t, t + 1))
+    pts += [(2.0, 4.0), (8.5, 1.0), (5.0, 7.0)]  # survey points in the water
+    pts += [(1.25, 1.75)]  # a survey point inside the hole
+    pts += [(3.25, 6.5)]  # a survey point exactly on the lane (3, 8)-(3.5, 5)
+    write_pslg("estuary.poly",
+               "estuary.poly: a bay (area 74) with a square hole (area 1), a closed interior loop\n"
+               "with a region, a lane from the shore, a levee with a spur (Y-junction), a groyne\n"
+               "ending inside the levee, survey points (one in the hole, one on the lane).\n"
+               "(generated by data/generate.py)",
+               pts, segs, holes=[(1.5, 1.5)], regions=[(7.0, 2.5, 2.0, 0.05)])
+
+
+def crossing_lanes():
+    # Lanes that cross, meet at one point, overlap: madd triangulate -r.
+    pts, segs = [], []
+    segs += chain(pts, [(0.0, 0.0), (8.0, 0.0), (8.0, 4.0), (0.0, 4.0)], True)
+    segs += chain(pts, [(1.0, 1.0), (7.0, 3.0)])  # A: y = 1 + (x - 1) / 3
+    segs += chain(pts, [(1.0, 3.0), (7.0, 1.0)])  # B: crosses A at (4, 2)
+    segs += chain(pts, [(4.0, 0.5), (4.0, 3.5)])  # C: through (4, 2) too; ends inside D
+    segs += chain(pts, [(2.0, 0.5), (6.0, 0.5)])  # D
+    segs += chain(pts, [(5.0, 0.5), (7.0, 0.5)])  # D drawn again, overlapping it on [5, 6]
+    segs += chain(pts, [(0.5, 3.7), (3.1, 0.3)])  # E: crosses A, B and D away from any vertex
+    write_pslg("crossing_lanes.poly",
+               "crossing_lanes.poly: a rectangle with lanes that cross (three of them at one point),\n"
+               "overlap and touch; madd triangulate -r resolves them. (generated by data/generate.py)",
+               pts, segs)
+
+
+def survey():
+    # No enclosing boundary: points, open polylines and one closed loop.
+    pts, segs = [], []
+    segs += chain(pts, [(0.0, 0.0), (3.0, 1.0), (5.0, 0.5)])
+    segs += chain(pts, [(1.0, 4.0), (2.0, 2.5)])
+    segs += chain(pts, [(4.0, 2.0), (6.0, 2.0), (5.0, 3.5)], True)
+    pts += [(5.0, 2.5), (0.5, 2.0), (6.5, 4.5), (3.0, 5.0), (7.0, 0.0)]
+    write_pslg("survey.poly",
+               "survey.poly: no enclosing boundary: two open polylines, a closed triangle with a\n"
+               "point inside, scattered points. madd triangulate keeps the triangle only (as\n"
+               "triangle -p), -c the convex hull. (generated by data/generate.py)",
+               pts, segs)
+
+
 if __name__ == "__main__":
     key()
     pipe()
@@ -320,3 +424,6 @@ if __name__ == "__main__":
     near_collinear()
     node_companion()
     bad()
+    estuary()
+    crossing_lanes()
+    survey()

@@ -321,6 +321,66 @@ TEST_CASE("check FILE.node validates and summarises a point set") {
   CHECK(run_madd(dir, "q.poly -n 2 -q").code == 3);
 }
 
+// data/pslg/: estuary (every kind of interior constraint), crossing_lanes
+// (crossings and overlaps), survey (no enclosing boundary); their counts
+// follow from data/generate.py (see tests/triangulate_pslg_test.cpp).
+TEST_CASE("triangulate takes any PSLG: -c keeps the hull, -r resolves crossings, nothing is written for bad input") {
+  const Scratch dir("pslg");
+  const std::string pslg_dir = data_dir + "/pslg/";
+  const Result estuary = run_madd(dir, "triangulate -o e '" + pslg_dir + "estuary.poly'");
+  REQUIRE_MESSAGE(estuary.code == 0, estuary.err);
+  CHECK(has(estuary.out, "26 vertices, 40 triangles"));
+  CHECK(slurp(dir / "e.ele").rfind("40 ", 0) == 0);
+  const Result survey = run_madd(dir, "triangulate -o s '" + pslg_dir + "survey.poly'");
+  CHECK(has(survey.out, "13 vertices, 3 triangles"));  // the closed triangle with its inner point
+  const Result hull = run_madd(dir, "triangulate --convex-hull -o h '" + pslg_dir + "survey.poly'");
+  REQUIRE_MESSAGE(hull.code == 0, hull.err);
+  CHECK(!has(hull.out, " 3 triangles"));
+  const Result crossing = run_madd(dir, "triangulate -o x '" + pslg_dir + "crossing_lanes.poly'");
+  CHECK(crossing.code == 3);
+  CHECK(line_count(crossing.err) == 1);
+  CHECK(has(crossing.err, "crossing_lanes.poly:26:1: segment 6 (vertices 7-8) crosses segment 5"));
+  CHECK(has(crossing.err, "--resolve-crossings"));
+  CHECK(!fs::exists(dir / "x.ele"));
+  const Result resolved = run_madd(dir, "triangulate -r -o x '" + pslg_dir + "crossing_lanes.poly'");
+  REQUIRE_MESSAGE(resolved.code == 0, resolved.err);
+  CHECK(has(resolved.out, "20 vertices, 34 triangles (resolved 6 crossing(s), 1 overlap(s): 4 new vertices)"));
+  CHECK(slurp(dir / "x.node").rfind("20 2 0 1\n", 0) == 0);
+  // -A: the region's attribute as a column of the .ele (one triangle in the estuary's loop).
+  const Result regions = run_madd(dir, "triangulate -A -o a '" + pslg_dir + "estuary.poly'");
+  REQUIRE_MESSAGE(regions.code == 0, regions.err);
+  const std::string ele = slurp(dir / "a.ele");
+  CHECK(ele.rfind("40 3 1\n", 0) == 0);
+  std::size_t twos = 0;
+  for (std::size_t at = ele.find(" 2\n"); at != std::string::npos; at = ele.find(" 2\n", at + 1)) ++twos;
+  CHECK(twos == 1);
+}
+
+TEST_CASE("check describes a PSLG; decompose and mesh refuse it with a located error and write nothing") {
+  const Scratch dir("pslg-check");
+  const std::string estuary = "'" + data_dir + "/pslg/estuary.poly'";
+  const Result check = run_madd(dir, "check " + estuary);
+  REQUIRE_MESSAGE(check.code == 0, check.err);
+  CHECK(has(check.out, "estuary.poly: valid PSLG, not a domain"));
+  CHECK(has(check.out, "segments          19 (10 boundary, 9 interior, 0 outside)"));
+  CHECK(has(check.out, "isolated vertices 4 (3 inside)"));
+  CHECK(has(check.out, "regions           1"));
+  CHECK(has(check.out, "madd decompose and madd mesh refuse it"));
+  for (const char* command : {"decompose", "mesh"}) {
+    CAPTURE(command);
+    const Result r = run_madd(dir, std::string(command) + " " + estuary + " -n 2 -o out");
+    CHECK(r.code == 3);
+    CHECK(line_count(r.err) == 1);
+    // The first vertex on no segment: 22 (2, 4), on line 27 of the file.
+    CHECK(has(r.err, "estuary.poly:27:1: vertex 22 (2, 4) is on no segment"));
+    CHECK(fs::is_empty(dir.path));
+  }
+  // A crossing is bad input for check as well.
+  const Result crossing = run_madd(dir, "check '" + data_dir + "/pslg/crossing_lanes.poly'");
+  CHECK(crossing.code == 3);
+  CHECK(has(crossing.err, "crosses"));
+}
+
 TEST_CASE("the progress line counts subdomains and time on a terminal, and is cleared") {
   const Scratch dir("progress");
   if (exit_status(std::system("script -qec true /dev/null > /dev/null 2>&1")) != 0) {

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Builds every libFuzzer target (clang, ASan+UBSan) and runs each for SECONDS
-# (default 60) on its seed corpus: data/, data/bad/ and fuzz/corpus/<target>/.
+# (default 60) on its seed corpus: data/, data/bad/, data/pslg/ and fuzz/corpus/<target>/.
 # New inputs go to a scratch directory, never into the source tree.
 set -eu
 cd "$(dirname "$0")/.."
@@ -16,7 +16,7 @@ for target in build-fuzz/fuzz/fuzz_*; do
   [ -x "$target" ] || continue
   name=$(basename "$target")
   mkdir -p "$scratch/$name"
-  seeds="data data/bad"
+  seeds="data data/bad data/pslg"
   [ -d "fuzz/corpus/$name" ] && seeds="$seeds fuzz/corpus/$name"
   echo "== $name for ${seconds}s"
   # -timeout: one input may not run longer than 10 s (a hang is a finding).

@@ -13,6 +13,7 @@
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/triangulation.hpp"
 
 namespace fs = std::filesystem;
 
@@ -71,33 +72,47 @@ TEST_CASE("every data/*.poly round-trips exactly through format_poly") {
   }
 }
 
-TEST_CASE("every data/bad file fails with the expected kind and line") {
+// The error a check gives for a data/bad file, as "<kind> <line>" (kind =
+// parse or an InputProblem name), or "ok".
+template <class Check>
+std::string verdict_of(const std::string& poly, Check&& check) {
+  try {
+    const madd::PolyFile file = madd::read_poly_file(poly);
+    check(file);
+  } catch (const madd::ParseError& e) {
+    CHECK(e.path() == poly);
+    CHECK(std::string(e.what()).find(poly + ":" + std::to_string(e.line()) + ":") == 0);
+    return "parse " + std::to_string(e.line());
+  } catch (const madd::InvalidInputError& e) {
+    const std::string kind = kind_name(e.problem());
+    CHECK(!e.ids().empty() == (kind != "empty_domain" || e.line() != 0));
+    if (e.line() != 0) CHECK(std::string(e.what()).find(poly + ":" + std::to_string(e.line()) + ":1: ") == 0);
+    return kind + " " + std::to_string(e.line());
+  }
+  return "ok";
+}
+
+TEST_CASE("every data/bad file fails with the expected kind and line, as a domain and as a PSLG") {
   const auto expected_files = files_with_extension(fs::path(MADD_DATA_DIR) / "bad", ".expected");
-  REQUIRE(expected_files.size() >= 21);
+  REQUIRE(expected_files.size() >= 24);
   for (const auto& expected_path : expected_files) {
     std::istringstream expected(slurp(expected_path));
-    std::string kind;
+    std::string kind, pslg_word, pslg_verdict;
     std::size_t line = 0;
-    expected >> kind >> line;
+    expected >> kind >> line >> pslg_word;
+    std::getline(expected >> std::ws, pslg_verdict);
     const std::string poly = fs::path(expected_path).replace_extension(".poly").string();
     CAPTURE(poly);
-    std::string got_kind = "none";
-    std::size_t got_line = 0;
-    try {
-      const madd::PolyFile file = madd::read_poly_file(poly);
-      madd::validate(file.pslg, file.source);
-    } catch (const madd::ParseError& e) {
-      got_kind = "parse";
-      got_line = e.line();
-      CHECK(e.path() == poly);
-      CHECK(std::string(e.what()).find(poly + ":" + std::to_string(e.line()) + ":") == 0);
-    } catch (const madd::InvalidInputError& e) {
-      got_kind = kind_name(e.problem());
-      got_line = e.line();
-      CHECK(!e.ids().empty() == (kind != "empty_domain" || line != 0));
-    }
-    CHECK(got_kind == kind);
-    CHECK(got_line == line);
+    CHECK(pslg_word == "pslg");
+    CHECK(verdict_of(poly, [](const madd::PolyFile& f) { madd::validate(f.pslg, f.source); }) ==
+          kind + " " + std::to_string(line));
+    CHECK(verdict_of(poly, [](const madd::PolyFile& f) { madd::validate_pslg(f.pslg, f.source); }) == pslg_verdict);
+    if (pslg_verdict != "ok") continue;
+    // What triangulate takes, it triangulates, and the result verifies.
+    const madd::PolyFile file = madd::read_poly_file(poly);
+    const madd::Triangulation tri = madd::triangulate(file.pslg);
+    const madd::Verification check = madd::verify_triangulation(tri, &file.pslg);
+    CHECK_MESSAGE(check.ok(), (check.ok() ? "" : check.problems.front()));
   }
 }
 

@@ -7,6 +7,7 @@
 #include "madd/expression.hpp"
 #include "madd/geometry.hpp"
 #include "madd/graph.hpp"
+#include "madd/intersections.hpp"
 #include "madd/medial.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_output.hpp"

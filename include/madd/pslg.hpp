@@ -1,6 +1,9 @@
 #pragma once
-// The input value type: a planar straight line graph (Triangle's .poly model)
-// describing one domain, an outer boundary with any number of holes.
+// The input value type: a planar straight line graph (Triangle's .poly model),
+// and its two levels of validation: any PSLG (what triangulate() takes:
+// isolated vertices, interior and dangling segments, vertices on segments),
+// and a domain (what decompose() and mesh() take: one region bounded by
+// closed rings, an outer boundary with any number of holes).
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -53,6 +56,7 @@ struct SourceMap {
   std::vector<std::uint32_t> point_lines;
   std::vector<std::uint32_t> segment_lines;
   std::vector<std::uint32_t> hole_lines;
+  std::vector<std::uint32_t> region_lines;
 };
 
 struct ValidateOptions {
@@ -74,6 +78,43 @@ struct ValidateOptions {
 // Throws InvalidInputError naming ids (with the file's base) and coordinates,
 // plus the line when `source` knows it.
 void validate(const Pslg& pslg, const SourceMap& source = {}, const ValidateOptions& options = {});
+
+struct ValidatePslgOptions {
+  // Accept crossing and overlapping segments, to be resolved by
+  // resolve_intersections() (madd/intersections.hpp) before triangulating.
+  bool allow_intersections = false;
+};
+
+// Checks that `pslg` is a planar straight line graph triangulate() takes
+// (docs/formats.md, "PSLGs"): coordinates of vertices, holes and region
+// points 0 or of magnitude in [1e-40, 1e70]; no duplicate vertices, no
+// zero-length segments; no two segments crossing or overlapping (unless
+// `allow_intersections`); no hole point on a segment; no hole point without
+// any segment to stop it. Isolated vertices, interior, dangling and open
+// segments, and vertices lying inside a segment (the segment is split there)
+// are all accepted. Throws InvalidInputError as validate() does.
+void validate_pslg(const Pslg& pslg, const SourceMap& source = {}, const ValidatePslgOptions& options = {});
+
+// What a PSLG holds, as `madd check` prints it. "Kept" is the region
+// triangulate() keeps without the convex hull option (Triangle's -p): the
+// bounded faces of the segments, less those holding a hole point.
+struct PslgSummary {
+  std::size_t isolated_vertices = 0;       // on no segment
+  std::size_t isolated_inside = 0;         // ... of which inside the kept region
+  std::size_t vertices_inside_segments = 0;  // lying inside a segment, which is split there
+  std::size_t dangling_ends = 0;           // vertices ending exactly one segment (piece)
+  // Each segment is one of: interior (the kept region on both sides of some
+  // piece of it), boundary (else on one side of some piece), outside (else).
+  std::size_t interior_segments = 0;
+  std::size_t boundary_segments = 0;
+  std::size_t outside_segments = 0;
+  std::size_t parts = 0;                   // connected faces of the kept region
+  double area = 0.0;                       // of the kept region
+  friend bool operator==(const PslgSummary&, const PslgSummary&) = default;
+};
+
+// Precondition: validate_pslg() passed (intersections not allowed).
+PslgSummary summarize_pslg(const Pslg& pslg);
 
 // Area of the domain: outer boundary minus holes (sum over closed rings of the
 // region flooded as Triangle would). Precondition: validate() passed.

@@ -214,6 +214,7 @@ void read_regions(PolyLexer& lx, IdBase& base, PolyFile& out) {
   lx.end_of_line("the region count");
   check_count_fits(lx, n, 4, column, "regions");
   out.pslg.regions.reserve(n);
+  out.source.region_lines.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     lx.require_item("region", i + (base.known ? base.first : 1), n);
     expect_id(lx, base, lx.id("region id"), i, n, "region");
@@ -224,6 +225,7 @@ void read_regions(PolyLexer& lx, IdBase& base, PolyFile& out) {
     r.max_area = lx.has_token() ? lx.real("region maximum area") : r.attribute;
     lx.end_of_line("the region");
     out.pslg.regions.push_back(r);
+    out.source.region_lines.push_back(lx.line());
   }
 }
 

@@ -40,12 +40,17 @@ public:
            std::to_string(id(p_.segments[s].b)) + ")";
   }
   std::string hole(std::uint32_t h) const { return "hole " + std::to_string(id(h)) + " " + at(p_.holes[h]); }
+  std::string region(std::uint32_t r) const {
+    return "region " + std::to_string(id(r)) + " " + at(p_.regions[r].at);
+  }
 
-  enum class Item { point, segment, hole };
+  enum class Item { point, segment, hole, region };
   [[noreturn]] void fail(InputProblem problem, const std::string& message, std::vector<std::int64_t> ids,
                          std::vector<Point> points, Item item, std::uint32_t index) const {
-    const std::vector<std::uint32_t>& lines =
-        item == Item::point ? s_.point_lines : item == Item::segment ? s_.segment_lines : s_.hole_lines;
+    const std::vector<std::uint32_t>& lines = item == Item::point     ? s_.point_lines
+                                              : item == Item::segment ? s_.segment_lines
+                                              : item == Item::hole    ? s_.hole_lines
+                                                                      : s_.region_lines;
     const std::string& path = item == Item::point && !s_.point_path.empty() ? s_.point_path : s_.path;
     const std::size_t line = index < lines.size() ? lines[index] : 0;
     throw InvalidInputError(problem, message, std::move(ids), std::move(points), path, line, line ? 1 : 0);
@@ -79,6 +84,9 @@ void check_values(const Pslg& p, const Reporter& r, const ValidateOptions& optio
   for (std::uint32_t h = 0; h < p.holes.size(); ++h)
     if (!supported(p.holes[h]))
       r.fail(InputProblem::other, r.hole(h) + range_note, {r.id(h)}, {p.holes[h]}, Item::hole, h);
+  for (std::uint32_t k = 0; k < p.regions.size(); ++k)
+    if (!supported(p.regions[k].at))
+      r.fail(InputProblem::other, r.region(k) + range_note, {r.id(k)}, {p.regions[k].at}, Item::region, k);
   for (std::uint32_t s = 0; s < p.segments.size(); ++s)
     if (p.segments[s].a >= p.points.size() || p.segments[s].b >= p.points.size())
       r.fail(InputProblem::other, "segment " + std::to_string(r.id(s)) + " refers to a missing vertex", {r.id(s)},
@@ -128,21 +136,28 @@ void check_duplicates(const Pslg& p, const Reporter& r) {
   }
 }
 
-std::vector<std::uint32_t> check_segments_and_degrees(const Pslg& p, const Reporter& r) {
-  std::vector<std::uint32_t> degree(p.points.size(), 0);
+void check_zero_length(const Pslg& p, const Reporter& r) {
   for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
     const Segment& seg = p.segments[s];
     if (seg.a == seg.b)
       r.fail(InputProblem::zero_length_segment, r.segment(s) + " has zero length", {r.id(s)}, {p.points[seg.a]},
              Item::segment, s);
+  }
+}
+
+std::vector<std::uint32_t> check_segments_and_degrees(const Pslg& p, const Reporter& r) {
+  check_zero_length(p, r);
+  std::vector<std::uint32_t> degree(p.points.size(), 0);
+  for (const Segment& seg : p.segments) {
     ++degree[seg.a];
     ++degree[seg.b];
   }
   for (std::uint32_t v = 0; v < p.points.size(); ++v)
     if (degree[v] == 0)
       r.fail(InputProblem::isolated_vertex,
-             r.vertex(v) + " is on no segment; isolated vertices are not supported (docs/formats.md)", {r.id(v)},
-             {p.points[v]}, Item::point, v);
+             r.vertex(v) + " is on no segment; isolated vertices are not supported by decompose and mesh "
+                           "(madd triangulate takes them; docs/formats.md)",
+             {r.id(v)}, {p.points[v]}, Item::point, v);
   return degree;
 }
 
@@ -210,7 +225,7 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
     if (f != g && is_kept(f) && is_kept(g))
       r.fail(InputProblem::interior_segment,
              r.segment(s) + " has the domain on both sides; interior segments (as in Triangle's face.poly) "
-                            "are not supported",
+                            "are not supported by decompose and mesh (madd triangulate takes them)",
              {r.id(s)}, {p.points[p.segments[s].a], p.points[p.segments[s].b]}, Item::segment, s);
   }
   for (std::uint32_t v = 0; v < p.points.size(); ++v)
@@ -246,7 +261,36 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
   check_bounds_domain(p, fm, domain, hole_of_face, r);
 }
 
+// Crossings and overlaps, the first in file order; a vertex lying inside a
+// segment (a touch) is allowed: triangulate() splits the segment there.
+void check_pslg_intersections(const Pslg& p, const detail::SegmentGrid& grid, const Reporter& r) {
+  const auto conflict = detail::find_segment_conflict(p, grid, false);
+  if (!conflict) return;
+  const char* verb = conflict->contact.kind == Contact::cross ? " crosses " : " overlaps ";
+  r.fail(InputProblem::segments_intersect,
+         r.segment(conflict->later) + verb + r.segment(conflict->earlier) + " at " + at(conflict->contact.at) +
+             " (madd triangulate --resolve-crossings inserts the intersection vertices)",
+         {r.id(conflict->later), r.id(conflict->earlier)}, {conflict->contact.at}, Item::segment, conflict->later);
+}
+
 } // namespace
+
+void validate_pslg(const Pslg& pslg, const SourceMap& source, const ValidatePslgOptions& options) {
+  const Reporter r(pslg, source);
+  check_values(pslg, r, {});
+  check_duplicates(pslg, r);
+  check_zero_length(pslg, r);
+  if (pslg.segments.empty()) {
+    if (!pslg.holes.empty())
+      r.fail(InputProblem::empty_domain,
+             r.hole(0) + " would remove every triangle: there are no segments to stop it", {r.id(0)},
+             {pslg.holes[0]}, Item::hole, 0);
+    return;
+  }
+  const detail::SegmentGrid grid(pslg.points, pslg.segments);
+  if (!options.allow_intersections) check_pslg_intersections(pslg, grid, r);
+  check_holes_on_segments(pslg, grid, r);
+}
 
 void validate(const Pslg& pslg, const SourceMap& source, const ValidateOptions& options) {
   const Reporter r(pslg, source);

@@ -29,7 +29,16 @@ struct SegmentConflict {
   std::uint32_t earlier = 0;
   ContactResult contact;
 };
-std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid);
+// With `touches` off, a segment ending inside another (Contact::touch) is
+// not a conflict: what validate_pslg() allows.
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid, bool touches = true);
+
+// Every pair of segments that meets other than at a shared endpoint (crossing,
+// touching or overlapping), each pair once, ascending by (later, earlier).
+// Throws InvalidInputError (segments_intersect) once more than `limit` pairs
+// are found, so that a file where everything crosses everything cannot make
+// the search (and what is built from it) quadratic in memory.
+std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const SegmentGrid& grid, std::size_t limit);
 
 // First segment (by index) that a point lies on, endpoints included.
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p);

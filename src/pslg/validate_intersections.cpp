@@ -1,6 +1,10 @@
 // Exact, grid-accelerated search for segments that cross, overlap or touch
 // other than at a shared endpoint (docs/formats.md, "Bad input").
 #include <algorithm>
+#include <string>
+#include <unordered_set>
+
+#include "madd/error.hpp"
 
 #include "kernel/containment.hpp"
 #include "madd/predicates.hpp"
@@ -73,6 +77,7 @@ struct BestConflict {
   std::optional<SegmentConflict> best;
   std::size_t budget = 0;
   bool done = false;
+  bool touches = true;
   bool worth_testing(std::uint32_t i, std::uint32_t j) const noexcept {
     const std::uint32_t later = std::max(i, j), earlier = std::min(i, j);
     return !best || later < best->later || (later == best->later && earlier < best->earlier);
@@ -81,7 +86,8 @@ struct BestConflict {
     if (best && --budget == 0) done = true;
     if (!worth_testing(i, j)) return;
     const ContactResult c = classify_contact(p.points, p.segments[i], p.segments[j]);
-    if (c.kind != Contact::none) best = SegmentConflict{std::max(i, j), std::min(i, j), c};
+    if (c.kind != Contact::none && (touches || c.kind != Contact::touch))
+      best = SegmentConflict{std::max(i, j), std::min(i, j), c};
   }
 };
 
@@ -104,8 +110,9 @@ void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& fo
 
 } // namespace
 
-std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid) {
+std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid, bool touches) {
   BestConflict found;
+  found.touches = touches;
   found.budget = 8 * pslg.segments.size() + 4096;
   std::vector<std::uint32_t> cell;
   for (std::uint32_t r = 0; r < grid.rows() && !found.done; ++r) {
@@ -118,6 +125,67 @@ std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const Seg
     }
   }
   return found.best;
+}
+
+namespace {
+
+// Collects every contact once: a pair listed in several cells is classified
+// in each, but recorded only the first time.
+class ContactCollector {
+public:
+  ContactCollector(const Pslg& p, std::size_t limit) : p_(p), limit_(limit) {}
+  void offer(std::uint32_t i, std::uint32_t j) {
+    const std::uint32_t later = std::max(i, j), earlier = std::min(i, j);
+    const std::uint64_t key = (std::uint64_t{later} << 32) | earlier;
+    if (seen_.count(key) != 0) return;
+    const ContactResult c = classify_contact(p_.points, p_.segments[later], p_.segments[earlier]);
+    if (c.kind == Contact::none) return;
+    seen_.insert(key);
+    found_.push_back({later, earlier, c});
+    if (found_.size() > limit_) {
+      const std::int64_t base = p_.first_index;
+      throw InvalidInputError(InputProblem::segments_intersect,
+                              "more than " + std::to_string(limit_) +
+                                  " pairs of segments intersect; too many to resolve",
+                              {later + base, earlier + base}, {c.at});
+    }
+  }
+  std::vector<SegmentConflict> take() {
+    std::sort(found_.begin(), found_.end(), [](const SegmentConflict& a, const SegmentConflict& b) {
+      return a.later < b.later || (a.later == b.later && a.earlier < b.earlier);
+    });
+    return std::move(found_);
+  }
+
+private:
+  const Pslg& p_;
+  std::size_t limit_;
+  std::unordered_set<std::uint64_t> seen_;
+  std::vector<SegmentConflict> found_;
+};
+
+} // namespace
+
+std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const SegmentGrid& grid, std::size_t limit) {
+  ContactCollector collector(pslg, limit);
+  std::vector<std::uint32_t> cell;
+  const auto min_x = [&](std::uint32_t s) { return std::min(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x); };
+  const auto max_x = [&](std::uint32_t s) { return std::max(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x); };
+  for (std::uint32_t r = 0; r < grid.rows(); ++r) {
+    const auto row = grid.row_range(r, 0, grid.cols() - 1);
+    for (std::size_t k = 0; k < row.size();) {
+      cell.clear();
+      const std::uint32_t col = row[k].col;
+      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].segment);
+      // Pruned by x-extent after sorting, as test_cell() does.
+      std::sort(cell.begin(), cell.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
+      for (std::size_t u = 0; u < cell.size(); ++u) {
+        const double reach = max_x(cell[u]);
+        for (std::size_t w = u + 1; w < cell.size() && min_x(cell[w]) <= reach; ++w) collector.offer(cell[u], cell[w]);
+      }
+    }
+  }
+  return collector.take();
 }
 
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {

@@ -1,7 +1,10 @@
 // Exact twice-areas of a domain and of a triangulation (see exact_area.hpp).
 #include "triangulation/exact_area.hpp"
 
+#include <algorithm>
+
 #include "kernel/segment_grid.hpp"
+#include "madd/predicates.hpp"
 #include "pslg/validate_detail.hpp"
 
 namespace madd::detail {
@@ -23,6 +26,31 @@ ExactSum domain_twice_area_exact(const Pslg& pslg) {
     const bool backward = (h & 1U) != 0;
     twice.add_cross(pslg.points[backward ? s.b : s.a], pslg.points[backward ? s.a : s.b]);
   }
+  return twice;
+}
+
+// Andrew's monotone chain, every turn decided by orient2d: the hull's
+// vertices counter-clockwise, without collinear ones.
+std::vector<Point> convex_hull(std::vector<Point> pts) {
+  std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (pts.size() < 3) return {};
+  std::vector<Point> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t base = hull.size();
+    for (const Point& q : pts) {
+      while (hull.size() >= base + 2 && orient2d(hull[hull.size() - 2], hull.back(), q) <= 0) hull.pop_back();
+      hull.push_back(q);
+    }
+    hull.pop_back();
+    std::reverse(pts.begin(), pts.end());
+  }
+  return hull.size() >= 3 ? hull : std::vector<Point>{};
+}
+
+ExactSum hull_twice_area_exact(const std::vector<Point>& points) {
+  ExactSum twice;
+  const std::vector<Point> hull = convex_hull(points);
+  for (std::size_t i = 0; i < hull.size(); ++i) twice.add_cross(hull[i], hull[(i + 1) % hull.size()]);
   return twice;
 }
 

@@ -13,6 +13,15 @@ namespace madd::detail {
 // every half-edge of the rings of the kept faces (validate's face map).
 ExactSum domain_twice_area_exact(const Pslg& pslg);
 
+// The vertices of the convex hull of the points, counter-clockwise, without
+// collinear ones (Andrew's monotone chain, every turn decided by orient2d);
+// empty when they are all on one line.
+std::vector<Point> convex_hull(std::vector<Point> points);
+
+// Twice the area of the convex hull of the points, exactly (0 when they
+// are all on one line).
+ExactSum hull_twice_area_exact(const std::vector<Point>& points);
+
 // Twice the total signed area of the triangles, exactly.
 ExactSum triangles_twice_area_exact(const Triangulation& tri);
 

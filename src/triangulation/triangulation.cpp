@@ -56,8 +56,15 @@ Triples to_triples(std::vector<std::uint32_t>& flat) {
 // no_index. Peak memory: the working arrays are compacted in place and `dead`
 // released before any output array exists, then each working array is
 // released as soon as its exact-size copy is made, and the points come last.
-Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points) {
+Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points,
+                          const std::vector<double>& attribute = {}) {
   const std::uint32_t live = renumber(dead);
+  std::vector<double> attributes;
+  if (!attribute.empty()) {
+    attributes.resize(live);
+    for (std::uint32_t t = 0; t < dead.size(); ++t)
+      if (dead[t] != no_index) attributes[dead[t]] = attribute[t];
+  }
   compact(mesh.tv, dead, live);
   compact_neighbours(mesh.tn, dead, live);
   const bool constrained = !mesh.seg.empty();
@@ -72,6 +79,7 @@ Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::spa
     out.segment_of.assign(live, {no_index, no_index, no_index});
   }
   out.points.assign(points.begin(), points.end());
+  out.attributes = std::move(attributes);
   return out;
 }
 
@@ -97,18 +105,20 @@ void flood(const Mesh& mesh, std::vector<std::uint32_t>& dead, std::vector<std::
   }
 }
 
-std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg) {
+// Triangle's classification: with `convex_hull` off, flood from every ghost
+// (the outside of the hull) up to the first segments; then from every hole
+// point. Without segments there is nothing to stop a flood: the hull is kept.
+std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg, const TriangulateOptions& options) {
   std::vector<std::uint32_t> dead = ghost_flags(mesh);
-  if (pslg.segments.empty()) return dead;  // no boundary: keep the convex hull
+  if (pslg.segments.empty()) return dead;
   std::vector<std::uint32_t> stack;
   std::uint32_t some_live = no_index;
+  for (std::uint32_t t = 0; t < dead.size() && some_live == no_index; ++t)
+    if (!mesh.is_ghost(t)) some_live = t;
   // One ghost at a time: the stack then holds at most the region being
   // flooded, not every hull edge at once (half the mesh for a convex polygon).
-  for (std::uint32_t t = 0; t < dead.size(); ++t) {
-    if (!mesh.is_ghost(t)) {
-      if (some_live == no_index) some_live = t;
-      continue;
-    }
+  for (std::uint32_t t = 0; t < dead.size() && !options.convex_hull; ++t) {
+    if (!mesh.is_ghost(t)) continue;
     stack.push_back(t);
     flood(mesh, dead, stack);
   }
@@ -121,6 +131,36 @@ std::vector<std::uint32_t> classify(const Mesh& mesh, const Pslg& pslg) {
     flood(mesh, dead, stack);
   }
   return dead;
+}
+
+// Regional attributes, as Triangle's -A: each region point's attribute spreads
+// over the kept triangles around it, up to the segments; a later region in
+// the same place wins; the rest get 0.
+std::vector<double> region_attributes(const Mesh& mesh, const Pslg& pslg, const std::vector<std::uint32_t>& dead) {
+  std::vector<double> attribute(dead.size(), 0.0);
+  std::vector<std::uint32_t> seen(dead.size(), 0), stack;
+  std::uint32_t some_live = 0;
+  while (some_live < dead.size() && dead[some_live]) ++some_live;
+  if (some_live == dead.size()) return attribute;
+  for (std::uint32_t r = 0; r < pslg.regions.size(); ++r) {
+    const std::uint32_t t0 = detail::walk_to(mesh, pslg.points, pslg.regions[r].at, some_live);
+    if (t0 == no_index || dead[t0]) continue;
+    const std::uint32_t stamp = r + 1;
+    seen[t0] = stamp;
+    stack.push_back(t0);
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      attribute[t] = pslg.regions[r].attribute;
+      for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
+        const std::uint32_t u = mesh.tn[h] / 3;
+        if ((!mesh.seg.empty() && mesh.seg[h] != no_index) || dead[u] || seen[u] == stamp) continue;
+        seen[u] = stamp;
+        stack.push_back(u);
+      }
+    }
+  }
+  return attribute;
 }
 
 } // namespace
@@ -136,7 +176,7 @@ Triangulation delaunay(std::span<const Point> points) {
   return export_mesh(mesh, dead, points);
 }
 
-Triangulation triangulate(const Pslg& pslg) {
+Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options) {
   Mesh mesh;
   if (!detail::build_delaunay(mesh, pslg.points)) {
     Triangulation out;
@@ -144,8 +184,10 @@ Triangulation triangulate(const Pslg& pslg) {
     return out;
   }
   detail::insert_segments(mesh, pslg);
-  std::vector<std::uint32_t> dead = classify(mesh, pslg);
-  return export_mesh(mesh, dead, pslg.points);
+  std::vector<std::uint32_t> dead = classify(mesh, pslg, options);
+  if (!options.region_attributes) return export_mesh(mesh, dead, pslg.points);
+  const std::vector<double> attribute = region_attributes(mesh, pslg, dead);
+  return export_mesh(mesh, dead, pslg.points, attribute);
 }
 
 } // namespace madd

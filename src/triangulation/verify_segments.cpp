@@ -1,11 +1,12 @@
-// verify_triangulation, the PSLG part: every input segment is present as a
-// chain of constrained edges (split at vertices lying exactly on it), and
-// every constrained edge lies on the segment it names.
+// verify_triangulation, the PSLG part: every input segment bordering the kept
+// region is present as a chain of constrained edges (split at the vertices
+// lying exactly on it), and every constrained edge lies on the segment it names.
 #include <algorithm>
 #include <string>
 
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
+#include "triangulation/kept_region.hpp"
 
 namespace madd::detail {
 
@@ -18,16 +19,9 @@ struct Constrained {
   }
 };
 
-// x strictly closer to b than cur along the line ab (all three collinear with
-// a, b): exact coordinate comparison on an axis where a and b differ.
-bool advances(Point a, Point b, Point cur, Point x) noexcept {
-  if (a.x != b.x) return b.x > a.x ? (x.x > cur.x && x.x <= b.x) : (x.x < cur.x && x.x >= b.x);
-  return b.y > a.y ? (x.y > cur.y && x.y <= b.y) : (x.y < cur.y && x.y >= b.y);
-}
-
 } // namespace
 
-void check_segments(const Triangulation& tri, const Pslg& pslg, Verification& v) {
+void check_segments(const Triangulation& tri, const Pslg& pslg, const KeptRegion& region, Verification& v) {
   std::vector<Constrained> edges;
   const auto& P = tri.points;
   for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
@@ -45,27 +39,22 @@ void check_segments(const Triangulation& tri, const Pslg& pslg, Verification& v)
         v.add("constrained edge " + std::to_string(a) + "-" + std::to_string(b) + " is not on segment " +
               std::to_string(s));
       }
-      edges.push_back({a, b, s});
-      edges.push_back({b, a, s});
+      edges.push_back({std::min(a, b), std::max(a, b), s});
     }
   }
   std::sort(edges.begin(), edges.end());
-  for (std::uint32_t s = 0; s < pslg.segments.size(); ++s) {
-    const std::uint32_t a = pslg.segments[s].a, b = pslg.segments[s].b;
-    std::uint32_t cur = a;
-    while (cur != b) {
-      auto it = std::lower_bound(edges.begin(), edges.end(), Constrained{cur, 0, 0});
-      std::uint32_t step = no_index;
-      for (; it != edges.end() && it->from == cur; ++it) {
-        if (it->segment == s && advances(P[a], P[b], P[cur], P[it->to])) step = it->to;
-      }
-      if (step == no_index) {
-        v.add("segment " + std::to_string(s) + " (" + std::to_string(a) + "-" + std::to_string(b) +
-              ") is not covered by constrained edges after vertex " + std::to_string(cur));
-        break;
-      }
-      cur = step;
-    }
+  // Each piece (the part of a segment between consecutive vertices on it)
+  // bordering the kept region must be one edge, constrained by its segment.
+  for (std::uint32_t k = 0; k < region.pieces.size(); ++k) {
+    if (!region.must_be_edge[k]) continue;
+    const std::uint32_t a = std::min(region.pieces[k].a, region.pieces[k].b);
+    const std::uint32_t b = std::max(region.pieces[k].a, region.pieces[k].b);
+    const std::uint32_t s = region.source[k];
+    if (std::binary_search(edges.begin(), edges.end(), Constrained{a, b, s})) continue;
+    v.add("segment " + std::to_string(s) + " (" + std::to_string(pslg.segments[s].a) + "-" +
+          std::to_string(pslg.segments[s].b) + ") is not covered by constrained edges: its piece " +
+          std::to_string(a) + "-" + std::to_string(b) + " is missing");
+    return;
   }
 }
 
