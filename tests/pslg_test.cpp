@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <random>
 #include <string>
 
+#include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"
@@ -166,6 +169,26 @@ TEST_CASE("summarize_pslg on random lone points and segments agrees with brute f
     CHECK(s.area == doctest::Approx(1.0));
     const madd::Triangulation tri = madd::triangulate(p);
     CHECK(triangles_area(tri) == doctest::Approx(s.area));
+  }
+}
+
+TEST_CASE("decompose() and mesh() refuse a PSLG with interior segments or isolated vertices, naming them") {
+  // Until the decomposition takes interior constraints (issue 16).
+  madd::Pslg lone = square_with({{0.5, 0.5}}, {});
+  madd::Pslg interior = square_with({}, {{0, 2, 0}});
+  for (const auto& [pslg, problem, id] : {std::tuple{lone, InputProblem::isolated_vertex, 5},
+                                          std::tuple{interior, InputProblem::interior_segment, 5}}) {
+    CHECK(!pslg_error(pslg));  // triangulate takes it
+    try {
+      (void)madd::decompose(pslg, {});
+      FAIL("decompose took a PSLG that is not a domain");
+    } catch (const madd::InvalidInputError& e) {
+      CHECK(e.problem() == problem);
+      CHECK(e.ids().front() == id);
+    }
+    madd::MeshOptions options;
+    options.decomposition.subdomains = 2;
+    CHECK_THROWS_AS((void)madd::mesh(pslg, options), madd::InvalidInputError);
   }
 }
 
