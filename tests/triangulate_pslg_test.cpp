@@ -285,6 +285,12 @@ TEST_CASE("regional attributes follow the triangles up to the segments; a later 
   const madd::Triangulation plain = madd::triangulate(p);
   CHECK(plain.attributes.empty());
   CHECK(plain.triangles == tri.triangles);
+  // The reader takes any real as an attribute, NaN too: it is still one region.
+  madd::Pslg odd = p;
+  odd.regions = {{{5, 1}, std::nan(""), -1.0}};
+  const madd::Triangulation nan_region = madd::triangulate(odd, o);
+  check_verified(nan_region, odd, o);
+  CHECK(std::count_if(nan_region.attributes.begin(), nan_region.attributes.end(), [](double a) { return std::isnan(a); }) == 39);
   // verify_triangulation catches an attribute that changes across an unconstrained edge.
   madd::Triangulation broken = tri;
   broken.attributes[0] += 1;

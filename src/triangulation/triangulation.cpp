@@ -55,7 +55,8 @@ Triples to_triples(std::vector<std::uint32_t>& flat) {
 // Triangulation, renumbering them in order and mapping removed neighbours to
 // no_index. Peak memory: the working arrays are compacted in place and `dead`
 // released before any output array exists, then each working array is
-// released as soon as its exact-size copy is made, and the points come last.
+// released as soon as its exact-size copy is made, and the points come last
+// (regional attributes, when asked for, are renumbered first).
 Triangulation export_mesh(Mesh& mesh, std::vector<std::uint32_t>& dead, std::span<const Point> points,
                           const std::vector<double>& attribute = {}) {
   const std::uint32_t live = renumber(dead);

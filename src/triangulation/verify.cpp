@@ -1,6 +1,7 @@
 // verify_triangulation: recomputes every invariant of a Triangulation from
 // scratch, sharing no code with the builder, so a builder bug cannot hide.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "kernel/number_format.hpp"
@@ -109,6 +110,10 @@ void check_adjacency(const Triangulation& tri, Verification& v) {
   }
 }
 
+// The same attribute value; a region's attribute may be NaN (the reader takes
+// any real), which must still equal itself here.
+bool same_attribute(double a, double b) noexcept { return a == b || (std::isnan(a) && std::isnan(b)); }
+
 // A region ends only at segments: across an unconstrained edge the regional
 // attribute is the same.
 void check_attributes(const Triangulation& tri, Verification& v) {
@@ -116,7 +121,7 @@ void check_attributes(const Triangulation& tri, Verification& v) {
   for (std::size_t t = 0; t < tri.triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t u = tri.neighbours[t][i];
-      if (u != no_index && tri.segment_of[t][i] == no_index && !(tri.attributes[u] == tri.attributes[t]))
+      if (u != no_index && tri.segment_of[t][i] == no_index && !same_attribute(tri.attributes[u], tri.attributes[t]))
         report(v, tri_name(t) + " and " + tri_name(u) + " share an unconstrained edge but not their regional attribute");
     }
 }
