@@ -30,7 +30,7 @@ field() { sed -n "s/^  \"$1\": \\(.*\\),\$/\\1/p" "$2" | tr -d '[]' ; }
 for i in $(seq 1 "$repeat"); do
   for np in 1 "$ranks"; do
     start=$(date +%s.%N)
-    mpirun $root_flag --oversubscribe --bind-to none -np "$np" "$build/madd-mpi" mesh "$domain" -j 1 --quiet \
+    mpirun $root_flag --oversubscribe --bind-to core -np "$np" "$build/madd-mpi" mesh "$domain" -j 1 --quiet \
       --report="$work/r$np-$i.json" -o "$work/m$np" "$@"
     end=$(date +%s.%N)
     awk -v a="$start" -v b="$end" 'BEGIN { print b - a }' >> "$work/wall$np"
