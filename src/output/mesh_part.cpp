@@ -2,6 +2,7 @@
 // Triangle's .node/.ele with global ids as attributes, a .vtu piece, and the
 // .pvtu that joins the pieces.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "madd/mesh_output.hpp"
@@ -86,7 +87,10 @@ std::pair<std::string, std::string> split_prefix(const std::string& prefix) {
 void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
                    const MeshPartFormats& formats) {
   detail::check_first_index(formats.first_index);
-  const auto [dir, stem] = split_prefix(prefix);
+  // Not a structured binding: clang 14 cannot capture one in the lambda below.
+  const std::pair<std::string, std::string> parts = split_prefix(prefix);
+  const std::string& dir = parts.first;
+  const std::string& stem = parts.second;
   const auto name = [&](std::uint32_t share, const char* extension) {
     return part_file_name(stem, share, part.shares, extension);
   };
