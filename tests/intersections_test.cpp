@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "hull_points.hpp"
 #include "madd/error.hpp"
 #include "madd/intersections.hpp"
 #include "madd/predicates.hpp"
@@ -34,22 +35,7 @@ double length_of(const madd::Pslg& p) {
 // Distance from q to the line through a and b.
 double off_line(Point a, Point b, Point q) { return std::abs(madd::cross(b - a, q - a)) / madd::distance(a, b); }
 
-// Number of points on the boundary of the convex hull (collinear ones
-// included), by the monotone chain with exact orientation.
-std::size_t hull_points(std::vector<Point> pts) {
-  std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<Point> h;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t base = h.size();
-    for (const Point& q : pts) {
-      while (h.size() >= base + 2 && madd::orient2d(h[h.size() - 2], h.back(), q) < 0) h.pop_back();
-      h.push_back(q);
-    }
-    h.pop_back();
-    std::reverse(pts.begin(), pts.end());
-  }
-  return h.size();
-}
+using madd::test::hull_point_count;
 
 void check_resolved(const madd::Pslg& input, const madd::ResolvedPslg& r) {
   madd::validate_pslg(r.pslg);  // nothing crosses or overlaps any more
@@ -104,7 +90,7 @@ TEST_CASE("random crossing segments: one new vertex per crossing pair, the piece
     hull.convex_hull = true;
     const madd::Triangulation tri = madd::triangulate(r.pslg, hull);
     CHECK(madd::verify_triangulation(tri, &r.pslg, hull).ok());
-    CHECK(tri.triangle_count() == 2 * r.pslg.points.size() - 2 - hull_points(r.pslg.points));
+    CHECK(tri.triangle_count() == 2 * r.pslg.points.size() - 2 - hull_point_count(r.pslg.points));
   }
 }
 

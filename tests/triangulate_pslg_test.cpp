@@ -12,6 +12,7 @@
 #include <random>
 #include <set>
 
+#include "hull_points.hpp"
 #include "madd/intersections.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
@@ -24,20 +25,7 @@ namespace {
 
 const madd::TriangulateOptions hull_option{true};
 
-std::size_t hull_points(std::vector<Point> pts) {
-  std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<Point> h;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t base = h.size();
-    for (const Point& q : pts) {
-      while (h.size() >= base + 2 && madd::orient2d(h[h.size() - 2], h.back(), q) < 0) h.pop_back();
-      h.push_back(q);
-    }
-    h.pop_back();
-    std::reverse(pts.begin(), pts.end());
-  }
-  return h.size();
-}
+using madd::test::hull_point_count;
 
 double area_of(const madd::Triangulation& tri) {
   double a = 0;
@@ -122,7 +110,7 @@ TEST_CASE("random scenes: -c covers the hull (2n - 2 - h triangles), -p keeps ex
     madd::validate_pslg(p);
     const madd::Triangulation all = madd::triangulate(p, hull_option);
     check_verified(all, p, hull_option);
-    CHECK(all.triangle_count() == 2 * p.points.size() - 2 - hull_points(p.points));
+    CHECK(all.triangle_count() == 2 * p.points.size() - 2 - hull_point_count(p.points));
     CHECK(area_of(all) == doctest::Approx(49.0));
 
     const madd::Triangulation kept = madd::triangulate(p);
@@ -187,7 +175,7 @@ TEST_CASE("no enclosing boundary: open polylines and points; -p keeps nothing, -
   CHECK(none.points == p.points);
   const madd::Triangulation hull = madd::triangulate(p, hull_option);
   check_verified(hull, p, hull_option);
-  CHECK(hull.triangle_count() == 2 * p.points.size() - 2 - hull_points(p.points));
+  CHECK(hull.triangle_count() == 2 * p.points.size() - 2 - hull_point_count(p.points));
 }
 
 TEST_CASE("a point set keeps its convex hull with or without the option; all collinear gives nothing") {
@@ -196,7 +184,7 @@ TEST_CASE("a point set keeps its convex hull with or without the option; all col
   for (const madd::TriangulateOptions& o : {madd::TriangulateOptions{}, hull_option}) {
     const madd::Triangulation tri = madd::triangulate(p, o);
     check_verified(tri, p, o);
-    CHECK(tri.triangle_count() == 2 * p.points.size() - 2 - hull_points(p.points));
+    CHECK(tri.triangle_count() == 2 * p.points.size() - 2 - hull_point_count(p.points));
   }
   madd::Pslg line;
   line.points = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};

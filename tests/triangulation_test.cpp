@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "hull_points.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
@@ -36,22 +37,7 @@ std::vector<Point> random_points(std::size_t n, unsigned seed) {
   return pts;
 }
 
-// Number of input points on the convex hull boundary (collinear ones
-// included), by Andrew's monotone chain with exact orientation.
-std::size_t hull_point_count(std::vector<Point> pts) {
-  std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<Point> h;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t base = h.size();
-    for (const Point& p : pts) {
-      while (h.size() >= base + 2 && madd::orient2d(h[h.size() - 2], h.back(), p) < 0) h.pop_back();
-      h.push_back(p);
-    }
-    h.pop_back();
-    std::reverse(pts.begin(), pts.end());
-  }
-  return h.size();
-}
+using madd::test::hull_point_count;
 
 std::string problems(const madd::Verification& v) {
   std::string s;
