@@ -9,10 +9,12 @@
 #include <functional>
 #include <mutex>
 #include <set>
+#include <sstream>
 #include <thread>
 #include <vector>
 
 #include "madd/mesh.hpp"
+#include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
 #include "mesh_fixtures.hpp"
@@ -171,4 +173,41 @@ TEST_CASE("assign_shares: every share gets work, none more than the largest subd
   }
   madd::MeshReport report;
   CHECK_THROWS_AS(madd::mesh_share({}, {}, {}, 2, 2, {}, report), madd::OptionError);
+}
+
+TEST_CASE("mesh part files: the .node carries each vertex's global id and owner, the .vtu its GlobalIds, the .pvtu every piece") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
+  const madd::MeshOptions o = madd::test::options_for(4, 30, madd::domain_area(domain) / 500);
+  int rounds = 0;
+  const std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, 2, rounds);
+  const madd::MeshPart& p = parts[1];
+  // .node: a header, then "id x y global owner marker" with global + 1 and the owner.
+  std::istringstream node(madd::format_part_node(p, 1));
+  std::size_t n = 0, dim = 0, attributes = 0, markers = 0;
+  node >> n >> dim >> attributes >> markers;
+  CHECK(n == p.mesh.points.size());
+  CHECK(attributes == 2);
+  for (std::size_t v = 0; v < n; ++v) {
+    std::size_t id = 0, global = 0, owner = 0;
+    double x = 0, y = 0;
+    int marker = 0;
+    node >> id >> x >> y >> global >> owner >> marker;
+    REQUIRE(id == v + 1);
+    CHECK(global == p.point_ids[v] + 1);
+    CHECK(owner == p.point_owner[v]);
+  }
+  // .vtu: the 0-based global ids of every point, in order, declared as GlobalIds.
+  const std::string vtu = madd::format_part_vtu(p);
+  CHECK(vtu.find("GlobalIds=\"global_id\"") != std::string::npos);
+  const std::size_t at = vtu.find("Name=\"global_id\" IdType=\"1\"");
+  REQUIRE(at != std::string::npos);
+  std::istringstream ids(vtu.substr(vtu.find('\n', at) + 1));
+  for (std::size_t v = 0; v < n; ++v) {
+    std::uint64_t g = 0;
+    ids >> g;
+    REQUIRE(g == p.point_ids[v]);
+  }
+  const std::string pvtu = madd::format_parts_pvtu({"m-0.vtu", "m-1.vtu"});
+  CHECK(pvtu.find("<Piece Source=\"m-0.vtu\"/>") != std::string::npos);
+  CHECK(pvtu.find("<Piece Source=\"m-1.vtu\"/>") != std::string::npos);
 }

@@ -12,7 +12,9 @@ namespace {
 
 using detail::line;
 
-void open_array(std::string& out, const char* type, const char* name, int components = 1) {
+// `id_type`: the array holds vtkIdType values (IdType="1"), which VTK needs
+// to take it as the GlobalIds attribute.
+void open_array(std::string& out, const char* type, const char* name, int components = 1, bool id_type = false) {
   out += "        <DataArray type=\"";
   out += type;
   out += '"';
@@ -21,6 +23,7 @@ void open_array(std::string& out, const char* type, const char* name, int compon
     out += name;
     out += '"';
   }
+  if (id_type) out += " IdType=\"1\"";
   if (components != 1) out += " NumberOfComponents=\"" + std::to_string(components) + '"';
   out += " format=\"ascii\">\n";
 }
@@ -33,7 +36,7 @@ void append_point_data(std::string& out, const Mesh& mesh, const detail::VtuGlob
   const std::size_t n = mesh.points.size();
   out += global ? "      <PointData Scalars=\"marker\" GlobalIds=\"global_id\">\n" : "      <PointData Scalars=\"marker\">\n";
   if (global) {
-    open_array(out, "Int64", "global_id\" IdType=\"1");
+    open_array(out, "Int64", "global_id", 1, true);
     for (const std::uint64_t id : *global->point_ids) line(out, id);
     close_array(out);
     open_array(out, "Int32", "owner");
@@ -49,7 +52,7 @@ void append_point_data(std::string& out, const Mesh& mesh, const detail::VtuGlob
 void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGlobalIds* global) {
   out += global ? "      <CellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n" : "      <CellData Scalars=\"subdomain\">\n";
   if (global) {
-    open_array(out, "Int64", "global_id\" IdType=\"1");
+    open_array(out, "Int64", "global_id", 1, true);
     for (const std::uint64_t id : *global->triangle_ids) line(out, id);
     close_array(out);
     open_array(out, "Int32", "rank");
