@@ -121,6 +121,14 @@ struct Subdomain {
   double required_area = 0.0;
   Point interior_point;             // strictly inside the subdomain
   std::vector<Point> hole_points;   // one strictly inside each hole ring
+  // Interior constraints inside the subdomain (docs/formats.md, "Interior
+  // segments"): pieces of input segments with this subdomain on both sides,
+  // as indices into Decomposition::segments (in no ring, of no other
+  // subdomain; a separator only ever crosses one at a vertex, so a piece is
+  // always inside exactly one subdomain), and the input's isolated vertices
+  // strictly inside it, as indices into Decomposition::points.
+  std::vector<std::uint32_t> interior_segments;
+  std::vector<std::uint32_t> interior_points;
   friend bool operator==(const Subdomain&, const Subdomain&) = default;
 };
 
@@ -132,6 +140,7 @@ struct Decomposition {
                                     // marker, or 1 where it was 0 or absent
   std::vector<std::uint32_t> segment_origin;  // input segment a piece comes from, no_index for separators
   std::vector<Point> holes;         // the input's hole points
+  std::vector<Region> regions;      // the input's regions (attribute, area constraint), unchanged
   std::vector<Subdomain> subdomains;
   double min_angle_deg = 60.0;      // the Phi0 it was built with
   double area_ratio_bound = 0.0;    // with a required area: the bound it was split to; 0 otherwise
@@ -139,6 +148,12 @@ struct Decomposition {
 
   bool is_separator(std::uint32_t segment) const { return segment_origin[segment] == no_index; }
 };
+
+// Per segment of `decomposition`: the subdomain it is an interior segment of
+// (Subdomain::interior_segments), or no_index for separators and boundary pieces.
+std::vector<std::uint32_t> interior_segment_owners(const Decomposition& decomposition);
+
+
 
 // Decomposes a validated domain into options.subdomains connected subdomains
 // (Algorithm 4). Every new angle is >= options.min_angle_deg. Deterministic:

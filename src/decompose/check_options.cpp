@@ -98,3 +98,17 @@ std::uint32_t expected_subdomain_count(const Decomposition& decomposition, std::
 }
 
 } // namespace madd
+
+namespace madd {
+
+std::vector<std::uint32_t> interior_segment_owners(const Decomposition& decomposition) {
+  std::vector<std::uint32_t> owner(decomposition.segments.size(), no_index);
+  for (std::uint32_t s = 0; s < decomposition.subdomains.size(); ++s) {
+    for (const std::uint32_t seg : decomposition.subdomains[s].interior_segments) {
+      if (seg < owner.size()) owner[seg] = s;
+    }
+  }
+  return owner;
+}
+
+} // namespace madd

@@ -43,6 +43,7 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
   d.segments = sub.segments;
   d.segment_origin = sub.origin;
   d.holes = domain.holes;
+  d.regions = domain.regions;
   d.min_angle_deg = options.min_angle_deg;
   const bool required_area = has_required_area(options);
   if (required_area) d.area_ratio_bound = options.area_ratio_bound;
@@ -55,6 +56,10 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
     if (required_area) s.required_area = grading.required(sub, f);
     s.interior_point = sub.faces[f].interior;
     for (std::size_t r = 1; r < s.rings.size(); ++r) s.hole_points.push_back(sub.hole_point(f, r));
+    s.interior_segments = sub.faces[f].inner_segments;
+    s.interior_points = sub.faces[f].inner_points;
+    std::sort(s.interior_segments.begin(), s.interior_segments.end());
+    std::sort(s.interior_points.begin(), s.interior_points.end());
     d.subdomains.push_back(std::move(s));
   }
   return d;

@@ -69,6 +69,11 @@ struct Face {
   std::vector<std::vector<std::uint32_t>> rings;          // [0] outer CCW, others CW
   std::vector<std::vector<std::uint32_t>> ring_segments;  // ring_segments[r][k]: rings[r][k] -> rings[r][k+1]
   Point interior;                                         // strictly inside
+  // Interior constraints inside the face, in no ring: segment pieces with the
+  // face on both sides, and isolated input vertices (docs/algorithm.md,
+  // "Interior segments"). A separator crosses such a piece only at a vertex.
+  std::vector<std::uint32_t> inner_segments;
+  std::vector<std::uint32_t> inner_points;
   std::uint32_t plan = 1;                                 // final subdomains this face will become
   std::uint32_t sibling = no_index;                       // the other side of the split that made it, if still whole
 };
