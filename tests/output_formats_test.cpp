@@ -154,16 +154,34 @@ TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
     const VtkPolyData v = parse_vtk(format_vtk(*d));
     REQUIRE(v.points.size() == d->points.size());
     for (std::size_t i = 0; i < v.points.size(); ++i) CHECK(v.points[i] == d->points[i]);
-    REQUIRE(v.subdomain.size() == v.cells.size());
-    REQUIRE(v.area.size() == v.cells.size());
-    REQUIRE(v.weight.size() == v.cells.size());
+    CHECK(v.vertices.empty());  // no isolated points here
+    // Every segment is one line cell, in order, with its kind, marker and subdomain.
+    REQUIRE(v.lines.size() == d->segments.size());
+    const std::size_t first_triangle = v.lines.size();
+    REQUIRE(v.subdomain.size() == first_triangle + v.cells.size());
+    REQUIRE(v.area.size() == v.subdomain.size());
+    REQUIRE(v.weight.size() == v.subdomain.size());
+    std::vector<long> ring_owner(d->segments.size(), -1);
+    for (std::size_t k = 0; k < d->subdomains.size(); ++k)
+      for (const auto& ring : d->subdomains[k].ring_segments)
+        for (const std::uint32_t j : ring)
+          if (!d->is_separator(j)) ring_owner[j] = static_cast<long>(k);
+    for (std::uint32_t j = 0; j < d->segments.size(); ++j) {
+      CHECK(v.lines[j] == std::pair{d->segments[j].a, d->segments[j].b});
+      CHECK(v.kind[j] == (d->is_separator(j) ? 2 : 1));
+      CHECK(v.marker[j] == d->segments[j].marker);
+      CHECK(v.subdomain[j] == ring_owner[j]);
+    }
     std::vector<double> covered(d->subdomains.size(), 0.0);
     for (std::size_t c = 0; c < v.cells.size(); ++c) {
+      const std::size_t cell = first_triangle + c;
       REQUIRE(v.cells[c].size() == 3);
-      const auto k = static_cast<std::size_t>(v.subdomain[c]);
+      CHECK(v.kind[cell] == 0);
+      CHECK(v.marker[cell] == 0);
+      const auto k = static_cast<std::size_t>(v.subdomain[cell]);
       REQUIRE(k < d->subdomains.size());
-      CHECK(v.area[c] == d->subdomains[k].area);
-      CHECK(v.weight[c] == d->subdomains[k].weight);
+      CHECK(v.area[cell] == d->subdomains[k].area);
+      CHECK(v.weight[cell] == d->subdomains[k].weight);
       const double a = signed_area(v.points[v.cells[c][0]], v.points[v.cells[c][1]], v.points[v.cells[c][2]]);
       CHECK(a > 0);
       covered[k] += a;

@@ -245,16 +245,40 @@ private:
 inline Json parse_json(const std::string& text) { return JsonParser(text).document(); }
 
 // ---- legacy VTK POLYDATA as format_vtk writes it ----
+// Cells in POLYDATA's order: vertices, lines, polygons; the cell data of all.
 struct VtkPolyData {
   std::vector<Point> points;
-  std::vector<std::vector<std::uint32_t>> cells;
-  std::vector<long> subdomain;
+  std::vector<std::uint32_t> vertices;                       // VERTICES (one point each)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;  // LINES (two points each)
+  std::vector<std::vector<std::uint32_t>> cells;             // POLYGONS
+  std::vector<long> subdomain;                               // per cell, vertices first
   std::vector<double> area, weight;
+  std::vector<long> kind, marker;
 };
 
 inline void expect_word(std::istream& in, const std::string& word) {
   std::string w;
   if (!(in >> w) || w != word) throw std::runtime_error("VTK: expected " + word + ", got " + w);
+}
+
+// One cell section: "<keyword> n size", then n cells of `arity` points
+// (0: any), whose integers must add up to size.
+inline std::vector<std::vector<std::uint32_t>> read_vtk_cells(std::istream& in, std::size_t points, std::size_t arity) {
+  std::size_t n = 0, size = 0, integers = 0;
+  in >> n >> size;
+  std::vector<std::vector<std::uint32_t>> out;
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t k = 0;
+    in >> k;
+    if (!in || (arity != 0 && k != arity)) throw std::runtime_error("VTK: bad cell size");
+    std::vector<std::uint32_t> cell(k);
+    for (auto& p : cell)
+      if (!(in >> p) || p >= points) throw std::runtime_error("VTK: bad cell");
+    integers += k + 1;
+    out.push_back(cell);
+  }
+  if (integers != size) throw std::runtime_error("VTK: section size does not match");
+  return out;
 }
 
 inline VtkPolyData parse_vtk(const std::string& text) {
@@ -265,7 +289,7 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   std::getline(in, line);
   if (line.empty() || line.size() > 255) throw std::runtime_error("VTK: bad title");
   VtkPolyData v;
-  std::size_t n = 0, cells = 0, size = 0;
+  std::size_t n = 0;
   expect_word(in, "ASCII");
   expect_word(in, "DATASET");
   expect_word(in, "POLYDATA");
@@ -278,19 +302,17 @@ inline VtkPolyData parse_vtk(const std::string& text) {
     if (!in || z != 0) throw std::runtime_error("VTK: bad point");
     v.points.push_back({x, y});
   }
-  expect_word(in, "POLYGONS");
-  in >> cells >> size;
-  std::size_t integers = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    std::size_t k = 0;
-    in >> k;
-    std::vector<std::uint32_t> cell(k);
-    for (auto& p : cell)
-      if (!(in >> p) || p >= n) throw std::runtime_error("VTK: bad cell");
-    integers += k + 1;
-    v.cells.push_back(cell);
+  std::string word;
+  in >> word;
+  if (word == "VERTICES") {
+    for (const auto& c : read_vtk_cells(in, n, 1)) v.vertices.push_back(c[0]);
+    in >> word;
   }
-  if (integers != size) throw std::runtime_error("VTK: POLYGONS size does not match");
+  if (word != "LINES") throw std::runtime_error("VTK: expected LINES, got " + word);
+  for (const auto& c : read_vtk_cells(in, n, 2)) v.lines.push_back({c[0], c[1]});
+  expect_word(in, "POLYGONS");
+  v.cells = read_vtk_cells(in, n, 0);
+  const std::size_t cells = v.vertices.size() + v.lines.size() + v.cells.size();
   expect_word(in, "CELL_DATA");
   std::size_t data = 0;
   in >> data;
@@ -302,22 +324,26 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   expect_word(in, "LOOKUP_TABLE");
   expect_word(in, "default");
   for (std::size_t c = 0; c < cells; ++c) {
-    long k = -1;
+    long k = -2;
     if (!(in >> k)) throw std::runtime_error("VTK: short subdomain");
     v.subdomain.push_back(k);
   }
   expect_word(in, "FIELD");
   expect_word(in, "FieldData");
-  expect_word(in, "2");
-  for (const std::string name : {"area", "weight"}) {
+  expect_word(in, "4");
+  for (const std::string name : {"area", "weight", "kind", "marker"}) {
+    const bool real = name == "area" || name == "weight";
     expect_word(in, name);
     expect_word(in, "1");
     expect_word(in, std::to_string(cells));
-    expect_word(in, "double");
+    expect_word(in, real ? "double" : "int");
     for (std::size_t c = 0; c < cells; ++c) {
       double x = 0;
-      if (!(in >> x)) throw std::runtime_error("VTK: short " + name);
-      (name == "area" ? v.area : v.weight).push_back(x);
+      long i = 0;
+      if (!(real ? static_cast<bool>(in >> x) : static_cast<bool>(in >> i))) throw std::runtime_error("VTK: short " + name);
+      if (name == "area") v.area.push_back(x);
+      else if (name == "weight") v.weight.push_back(x);
+      else (name == "kind" ? v.kind : v.marker).push_back(i);
     }
   }
   std::string rest;
