@@ -65,6 +65,8 @@ struct GeoModel {
   std::vector<std::vector<std::int64_t>> surfaces;             // Curve Loop ids
   std::map<std::int64_t, std::string> physical_surfaces;       // tag -> name
   std::map<std::string, std::multiset<std::int64_t>> physical_curves;  // name -> Line ids
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_lines;   // surface -> "Line{...} In Surface"
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_points;  // surface -> "Point{...} In Surface"
 };
 
 inline std::vector<std::string> split_commas(const std::string& s) {
@@ -72,6 +74,29 @@ inline std::vector<std::string> split_commas(const std::string& s) {
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');) out.push_back(trim(item));
   return out;
+}
+
+// The ids of "{a, b, ...}" (no text around the braces).
+inline std::vector<std::int64_t> brace_ids(const std::string& s) {
+  if (s.size() < 2 || s.front() != '{' || s.back() != '}') throw std::runtime_error("bad list: " + s);
+  std::vector<std::int64_t> ids;
+  for (const std::string& v : split_commas(s.substr(1, s.size() - 2))) ids.push_back(static_cast<std::int64_t>(to_number(v)));
+  return ids;
+}
+
+// "Line{...} In Surface{k}" or "Point{...} In Surface{k}": true when st is one.
+inline bool parse_embedded(const std::string& st, GeoModel& g) {
+  const auto in = st.find(" In Surface");
+  if (in == std::string::npos) return false;
+  const std::string head = trim(st.substr(0, in)), tail = trim(st.substr(in + 11));
+  const bool line = head.rfind("Line", 0) == 0;
+  if (!line && head.rfind("Point", 0) != 0) throw std::runtime_error("bad embedding: " + st);
+  const std::vector<std::int64_t> surface = brace_ids(tail);
+  if (surface.size() != 1) throw std::runtime_error("bad embedding: " + st);
+  auto& list = (line ? g.embedded_lines : g.embedded_points)[surface[0]];
+  if (!list.empty()) throw std::runtime_error("embedded twice: " + st);
+  list = brace_ids(trim(head.substr(line ? 4 : 5)));
+  return true;
 }
 
 inline GeoModel parse_geo(const std::string& text) {
@@ -82,7 +107,7 @@ inline GeoModel parse_geo(const std::string& text) {
   std::stringstream statements(code);
   for (std::string st; std::getline(statements, st, ';');) {
     st = trim(st);
-    if (st.empty()) continue;
+    if (st.empty() || parse_embedded(st, g)) continue;
     const auto open = st.find('('), close = st.find(')'), lb = st.find('{'), rb = st.find('}');
     if (open == std::string::npos || close < open || lb < close || rb < lb || rb + 1 != st.size())
       throw std::runtime_error("bad statement: " + st);
