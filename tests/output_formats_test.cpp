@@ -299,7 +299,8 @@ TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
   }
   const fs::path dir = fs::temp_directory_path() / ("madd-geo-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  for (const Decomposition* d : {&key7(), &marked_square()}) {
+  const Decomposition interior = interior_square().decomposition;
+  for (const Decomposition* d : {&key7(), &marked_square(), &interior}) {
     const fs::path geo = dir / "d.geo";
     const fs::path msh = dir / "d.msh";
     // A size well below the separators' lengths, so separators get nodes inside them too.
@@ -315,6 +316,7 @@ TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
     std::stringstream text;
     text << in.rdbuf();
     check_gmsh_mesh(*d, parse_msh22(text.str()));
+    check_gmsh_embedded(*d, parse_msh22(text.str()));
   }
   std::error_code ignored;
   fs::remove_all(dir, ignored);

@@ -131,11 +131,17 @@ TEST_CASE("interior output: a face per part of a subdomain, each with the input 
     CHECK(face.region == (loop ? 0U : 1U));
   }
   CHECK(in_loop == 1);
+  // A region point strictly inside the face it covers is the face's point.
+  CHECK(faces[0].point != f.domain.regions[1].at);   // B is not in the left half
+  CHECK((faces[1].point == f.domain.regions[0].at || faces[0].point == f.domain.regions[0].at));
+  CHECK(faces[2].point == f.domain.regions[1].at);
 
   SUBCASE("a region point on the separator covers both sides, whichever it is given to") {
     d.regions.push_back({{0.5, 0.3}, 9, -1});
-    for (const detail::DecompositionFace& face : detail::decomposition_faces(d))
+    for (const detail::DecompositionFace& face : detail::decomposition_faces(d)) {
       CHECK(face.region == (inside_loop(d, face.point) ? 0U : 2U));
+      CHECK(!on_any_segment(d, face.point));  // not the region's own point: it is on the separator
+    }
     // Earlier in the file than B, it loses to B (Triangle: the later region wins).
     d.regions = {{{0.5, 0.3}, 9, -1}, f.domain.regions[0], f.domain.regions[1]};
     for (const detail::DecompositionFace& face : detail::decomposition_faces(d))
@@ -152,7 +158,9 @@ TEST_CASE("interior output: a face per part of a subdomain, each with the input 
     REQUIRE(plain.size() == 3);
     for (std::size_t i = 0; i < 3; ++i) {
       CHECK(plain[i].subdomain == faces[i].subdomain);
-      CHECK(plain[i].point == faces[i].point);
+      CHECK(strictly_inside(d, plain[i].subdomain, plain[i].point));
+      CHECK(!on_any_segment(d, plain[i].point));
+      CHECK(inside_loop(d, plain[i].point) == inside_loop(d, faces[i].point));
       CHECK(plain[i].region == no_index);
     }
   }

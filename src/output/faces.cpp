@@ -112,6 +112,20 @@ Point point_inside(const Triangulation& tri, std::vector<std::uint32_t> triangle
                       " triangles");
 }
 
+// True when p lies on a constrained edge of one of `triangles` (closed: its
+// ends included), that is, on the face's boundary or one of its segments.
+bool on_constrained_edge(const Triangulation& tri, const std::vector<std::uint32_t>& triangles, Point p) {
+  for (const std::uint32_t t : triangles)
+    for (int i = 0; i < 3; ++i) {
+      if (!tri.is_constrained(t, i)) continue;
+      const Point a = tri.points[tri.triangles[t][(i + 1) % 3]], b = tri.points[tri.triangles[t][(i + 2) % 3]];
+      if (orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+          std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+        return true;
+    }
+  return false;
+}
+
 } // namespace
 
 std::vector<DecompositionFace> decomposition_faces(const Decomposition& d) {
@@ -158,12 +172,22 @@ std::vector<DecompositionFace> decomposition_faces(const Decomposition& d) {
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0U);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return subdomain[a] < subdomain[b]; });
+  // The point of a face: the input's own region point when it is the one
+  // covering the face and lies strictly inside it (the file then shows the
+  // user's point), else the subdomain's interior point when the face is the
+  // whole subdomain, else a point inside its largest triangle.
   for (const std::uint32_t f : order) {
     const std::uint32_t k = subdomain[f];
     if (k == no_index) continue;  // bounded by segments of no subdomain (not part of the decomposition)
-    const bool whole = faces_of_subdomain[k] == 1 && d.subdomains[k].interior_segments.empty();
     const std::uint32_t g = governing[find_root(parent, f)];
-    out.push_back({k, whole ? d.subdomains[k].interior_point : point_inside(tri, triangles[f]), g == 0 ? no_index : g - 1});
+    const bool whole = faces_of_subdomain[k] == 1 && d.subdomains[k].interior_segments.empty();
+    Point at;
+    if (g != 0 && region[f] == g && !on_constrained_edge(tri, triangles[f], d.regions[g - 1].at)) {
+      at = d.regions[g - 1].at;  // its flood started in this face, and it is on none of its edges
+    } else {
+      at = whole ? d.subdomains[k].interior_point : point_inside(tri, triangles[f]);
+    }
+    out.push_back({k, at, g == 0 ? no_index : g - 1});
   }
   return out;
 }

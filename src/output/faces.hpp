@@ -29,8 +29,10 @@ struct DecompositionFace {
 
 // Every face, ordered by subdomain, then by where the face's first triangle
 // comes in a triangulation of the whole decomposition (deterministic). A
-// subdomain without interior segments has one face, at its interior_point;
-// the others get, per face, the centroid of its largest triangle. Without
+// face's point is the point of the input region covering it when that lies
+// strictly inside the face; else, for a subdomain without interior segments
+// (one face), its interior_point; else the centroid of the face's largest
+// triangle. Without
 // interior segments and without regions this costs nothing (no triangulation).
 // Precondition: the decomposition passes verify_decomposition (its segments
 // are a valid PSLG). Throws InternalError on a face no subdomain bounds
