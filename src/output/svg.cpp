@@ -149,22 +149,34 @@ std::string interior_path(const Decomposition& d, const View& view) {
   return out;
 }
 
-// Interior segments dashed in blue over the edges, isolated points as blue dots.
-void append_interior(std::string& out, const Decomposition& d, const View& view) {
+// Interior segments dashed in dark blue over the edges (a colour no fill
+// has: the fills are light), isolated points as dots of the same colour;
+// both sized like the boundary line, `thick`.
+void append_interior(std::string& out, const Decomposition& d, const View& view, double thick) {
   const std::string path = interior_path(d, view);
-  if (!path.empty())
-    out += "<path fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"1.5\" stroke-dasharray=\"6 3\" "
-           "stroke-linejoin=\"round\" d=\"" + path + "\"/>\n";
+  if (!path.empty()) {
+    out += "<path fill=\"none\" stroke=\"#0a2f8c\" stroke-width=\"";
+    append_px(out, thick);
+    out += "\" stroke-dasharray=\"";
+    append_px(out, 4 * thick);
+    out += ' ';
+    append_px(out, 2 * thick);
+    out += "\" stroke-linejoin=\"round\" d=\"" + path + "\"/>\n";
+  }
   bool any = false;
   for (const Subdomain& sub : d.subdomains)
     for (const std::uint32_t p : sub.interior_points) {
-      if (!any) out += "<g fill=\"#1f5fbf\" stroke=\"none\">\n";
+      if (!any) {
+        out += "<g fill=\"#0a2f8c\" stroke=\"none\">\n";
+      }
       any = true;
       out += "<circle cx=\"";
       append_px(out, view.x(d.points[p].x));
       out += "\" cy=\"";
       append_px(out, view.y(d.points[p].y));
-      out += "\" r=\"3\"/>\n";
+      out += "\" r=\"";
+      append_px(out, 3 * thick);
+      out += "\"/>\n";
     }
   if (any) out += "</g>\n";
 }
@@ -260,7 +272,7 @@ std::string format_svg(const Decomposition& d, const SvgOptions& options) {
   out += "<path stroke=\"#000\" stroke-width=\"";
   append_px(out, thick);
   out += "\" d=\"" + boundary + "\"/>\n</g>\n";
-  append_interior(out, d, view);
+  append_interior(out, d, view, thick);
   append_annotations(out, d, view, options);
   out += "</svg>\n";
   return out;
