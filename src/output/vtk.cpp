@@ -2,7 +2,9 @@
 // VTK's POLYGON cell has no holes and ParaView triangulates concave polygons
 // heuristically, so each subdomain is written as its own constrained Delaunay
 // triangles: exact shape, holes kept, and cells of one subdomain share its
-// cell data so "Threshold" or "Color by subdomain" work per subdomain.
+// cell data so "Threshold" or "Color by subdomain" work per subdomain. Every
+// segment is a line cell too, and every isolated point a vertex cell, told
+// apart by the "kind" array, so the lines can be shown over the triangles.
 #include <array>
 #include <cstdint>
 #include <string>
