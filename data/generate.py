@@ -177,12 +177,22 @@ BAD = {
     "crossing": (SQUARE + "4 0\n1 1 2\n2 2 4\n3 4 3\n4 3 1\n0\n", "segments_intersect", 11),
     "overlapping": ("6 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.25 0\n6 0.75 0\n" + "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
                     "5 5 6\n0\n", "segments_intersect", 14),
+    # A triangle touching the square at a vertex inside its edge: the edge is
+    # split there, and the two meet at one point only.
     "t_touching": ("7 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 0.5\n6 2 0\n7 2 1\n"
-                   "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 5\n0\n", "segments_intersect", 15),
+                   "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 5\n0\n", "disconnected_domain", 15),
     "open_boundary": (SQUARE + "3 0\n1 1 2\n2 2 3\n3 3 4\n0\n", "open_boundary", 3),
-    "isolated_vertex": ("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 0.5 0.5\n" + SQUARE_SEGS + "0\n",
-                        "isolated_vertex", 7),
-    "interior_segment": (SQUARE + "5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 1 3\n0\n", "interior_segment", 12),
+    # An isolated vertex inside the domain is kept; one outside it is an error.
+    "isolated_outside": ("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 0.5\n" + SQUARE_SEGS + "0\n",
+                         "isolated_vertex", 7),
+    # Interior segments are kept; a ring inside a hole has the domain on neither side.
+    "ring_in_hole": ("12 2 0 0\n1 0 0\n2 9 0\n3 9 9\n4 0 9\n5 3 3\n6 6 3\n7 6 6\n8 3 6\n"
+                     "9 4 4\n10 5 4\n11 5 5\n12 4 5\n12 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n"
+                     "7 7 8\n8 8 5\n9 9 10\n10 10 11\n11 11 12\n12 12 9\n2\n1 3.5 3.5\n2 4.5 4.5\n",
+                     "interior_segment", 24),
+    # A segment from the boundary to nowhere outside: the boundary is not closed there.
+    "stray_segment": ("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 0\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+                      "5 2 5\n0\n", "open_boundary", 7),
     "hole_on_segment": ("8 2 0 0\n1 0 0\n2 3 0\n3 3 3\n4 0 3\n5 1 1\n6 2 1\n7 2 2\n8 1 2\n"
                         "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 1.5 1\n",
                         "hole_on_segment", 21),
@@ -204,8 +214,9 @@ BAD = {
 PSLG = {
     "t_touching": "ok",
     "open_boundary": "ok",
-    "isolated_vertex": "ok",
-    "interior_segment": "ok",
+    "isolated_outside": "ok",
+    "ring_in_hole": "ok",
+    "stray_segment": "ok",
     "hole_outside": "ok",
     "hole_ring_outside": "ok",
     "empty_domain": "ok",

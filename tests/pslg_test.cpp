@@ -57,12 +57,17 @@ TEST_CASE("validate_pslg accepts what a domain may not hold: interior, dangling 
   const madd::Pslg p = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}, {2, 0}, {3, 1}},
                                    {{4, 5, 0}, {7, 8, 0}});
   CHECK(!pslg_error(p));
+  // As a domain, all but the polyline outside are interior constraints.
   try {
     madd::validate(p);
-    FAIL("a domain with a touching segment");
+    FAIL("a domain with a segment outside it");
   } catch (const madd::InvalidInputError& e) {
-    CHECK(e.problem() == InputProblem::isolated_vertex);  // vertex 7 (0.25, 0.75) comes first
+    CHECK(e.problem() == InputProblem::open_boundary);
+    CHECK(e.ids() == std::vector<std::int64_t>{8});  // vertex 8 (2, 0), a loose end of the polyline
   }
+  const madd::Pslg inside = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}}, {{4, 5, 0}});
+  CHECK_NOTHROW(madd::validate(inside));
+  CHECK(madd::domain_area(inside) == 1.0);
 }
 
 TEST_CASE("validate_pslg refuses crossings and overlaps unless asked, naming both segments in the file's base") {
