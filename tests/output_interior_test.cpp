@@ -272,3 +272,123 @@ TEST_CASE("interior output 4: SVG draws interior segments dashed and isolated po
 }
 
 } // TEST_SUITE
+
+// ---- round trips: decompose, write, read back with the library's reader ----
+namespace {
+
+// Until decompose() takes interior constraints (issue 16's core), the parts of
+// the round trips that need it are off.
+constexpr bool decompose_interior = false;
+
+// Triangle's face.poly kind of domain: a rectangle holding a closed interior
+// loop, an open polyline with a branch off its middle vertex (a Y), a segment
+// from the boundary into the interior, an isolated vertex and two regions
+// (inside the loop, and the rest).
+const char* const face_poly = R"(# a face.poly kind of domain
+15 2 0 0
+1 0 0
+2 4 0
+3 4 1
+4 4 2
+5 0 2
+6 0.5 0.5
+7 1.5 0.5
+8 1.5 1.5
+9 0.5 1.5
+10 2.2 0.3
+11 2.6 0.8
+12 3.0 0.6
+13 3.4 1.0
+14 2.6 1.4
+15 3.5 1.6
+13 1
+1 1 2 1
+2 2 3 2
+3 3 4 2
+4 4 5 3
+5 5 1 4
+6 6 7 5
+7 7 8 5
+8 8 9 5
+9 9 6 5
+10 10 11 6
+11 11 12 6
+12 3 13 0
+13 11 14 6
+0
+2
+1 1.0 1.0 1 0.05
+2 3.0 1.2 2 0.2
+)";
+
+// Every triangle of the re-read output 1 without input regions gets its
+// subdomain's number (triangle -pA).
+void check_labelled_by_subdomain(const Pslg& file, const Decomposition& d) {
+  const Triangulation tri = with_regions(file);
+  REQUIRE(tri.triangle_count() > 0);
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    const double k = tri.attributes[t];
+    REQUIRE(k >= 0);
+    REQUIRE(k < static_cast<double>(d.subdomains.size()));
+    CHECK(strictly_inside(d, static_cast<std::uint32_t>(k), centroid(tri, t)));
+  }
+}
+
+// decompose -> output 1 -> parse_poly -> validate -> the same points and
+// segments (markers too), the regions as designed -> decompose again; and
+// every output 2 file a valid domain with the regions as designed.
+void check_round_trip(const Pslg& domain, std::uint32_t n) {
+  const Decomposition d = decompose(domain, [&] {
+    DecomposeOptions o;
+    o.subdomains = n;
+    return o;
+  }());
+  REQUIRE(verify_decomposition(d, domain, n).ok());
+  const PolyFile back = parse_poly(format_decomposition_poly(d, "round trip"));
+  CHECK_NOTHROW(validate(back.pslg, back.source));
+  CHECK(back.pslg.points == d.points);
+  CHECK(back.pslg.segments == d.segments);  // separators (0), boundary and interior pieces, in order
+  CHECK(back.pslg.holes == d.holes);
+  CHECK(back.pslg.regions.size() >= d.subdomains.size());  // one per face
+  if (domain.regions.empty()) {
+    check_labelled_by_subdomain(back.pslg, d);
+  } else {
+    check_regions_as_input(back.pslg, domain);
+  }
+  if (decompose_interior) {  // the separators are interior segments of the re-read domain
+    DecomposeOptions again;
+    again.subdomains = n;
+    const Decomposition d2 = decompose(back.pslg, again);
+    const Verification v = verify_decomposition(d2, back.pslg, n);
+    CHECK_MESSAGE(v.ok(), (v.problems.empty() ? std::string() : v.problems.front()));
+  }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const PolyFile part = parse_poly(format_subdomain_poly(d, k));
+    CHECK_NOTHROW(validate(part.pslg, part.source));
+    if (!domain.regions.empty()) check_regions_as_input(part.pslg, domain);
+    else CHECK(part.pslg.regions.empty());
+  }
+}
+
+} // namespace
+
+TEST_SUITE("output") {
+
+TEST_CASE("interior output round trip: a domain without interior constraints") {
+  check_round_trip(read_domain(std::string(MADD_DATA_DIR) + "/key.poly"), 8);
+  // One region, its point the centroid of a triangle of the domain (so inside it).
+  Pslg with_region = read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
+  with_region.regions = {{centroid(triangulate(with_region), 0), 5, 0.5}};
+  check_round_trip(with_region, 5);
+}
+
+TEST_CASE("interior output round trip: a face.poly kind of domain" * doctest::skip(true)) {
+  const PolyFile face = parse_poly(face_poly, "face.poly");
+  validate(face.pslg, face.source);
+  check_round_trip(face.pslg, 4);
+  Pslg no_regions = face.pslg;
+  no_regions.regions.clear();
+  check_round_trip(no_regions, 4);
+}
+
+} // TEST_SUITE
