@@ -4,10 +4,13 @@
 // madd::triangulate with region attributes, the same rule) then gives every
 // triangle: the subdomain number, or the input's own attribute and area bound.
 #include <doctest/doctest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -392,3 +395,41 @@ TEST_CASE("interior output round trip: a face.poly kind of domain" * doctest::sk
 }
 
 } // TEST_SUITE
+
+#ifdef MADD_CLI_PATH
+namespace {
+
+// Runs the CLI in `dir`; its exit code and standard output.
+std::pair<int, std::string> run_madd(const std::filesystem::path& dir, const std::string& args) {
+  const std::string command =
+      "cd '" + dir.string() + "' && '" MADD_CLI_PATH "' " + args + " > stdout.txt 2> stderr.txt";
+  const int status = std::system(command.c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return {code, test::read_text(dir / "stdout.txt") + test::read_text(dir / "stderr.txt")};
+}
+
+} // namespace
+
+TEST_SUITE("output") {
+
+TEST_CASE("interior output through the CLI: every output of a face.poly kind of domain, and madd check on the .poly files" *
+          doctest::skip(!decompose_interior)) {
+  test::TempDir tmp("output-interior-cli");
+  {
+    std::ofstream out(tmp.path / "face.poly");
+    out << face_poly;
+  }
+  const auto [code, text] = run_madd(tmp.path, "decompose face.poly -n 4 -o all.poly --split parts --subdomains-file face.sub "
+                                               "--svg face.svg --geo face.geo --vtk face.vtk --geojson face.json -q");
+  REQUIRE_MESSAGE(code == 0, text);
+  for (const char* file : {"all.poly", "parts/face-0.poly", "parts/face-1.poly", "parts/face-2.poly", "parts/face-3.poly"}) {
+    const auto [check, summary] = run_madd(tmp.path, std::string("check ") + file);
+    CHECK_MESSAGE(check == 0, summary);
+    CHECK_MESSAGE(summary.find(std::string(file) + ": valid domain") != std::string::npos, summary);
+  }
+  const auto [again, again_text] = run_madd(tmp.path, "decompose all.poly -n 4 -o again.poly -q");
+  CHECK_MESSAGE(again == 0, again_text);
+}
+
+} // TEST_SUITE
+#endif
