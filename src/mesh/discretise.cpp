@@ -1,5 +1,5 @@
 // The decoupling step (docs/mesh.md, "Decoupling"): every segment of the
-// decomposition, separator or boundary piece, is split once into pieces no
+// decomposition, separator, boundary or interior piece, is split once into pieces no
 // longer than the local target length
 //
 //   h(p) = min(size_factor * sqrt(A(p)), feature_factor * lfs(p)),
@@ -120,7 +120,14 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 Decomposition detail::discretise(const Decomposition& decomposition, const MeshSizeOptions& size,
                                  bool boundary_by_features) {
   const detail::SizeField field(size);
-  const detail::FeatureDistance features(decomposition.points, decomposition.segments);
+  // The features every piece resolves: every segment (interior ones too, so
+  // that a narrow gap between an interior segment and the shore is resolved)
+  // and every isolated input vertex, as a segment of length 0 (the distance
+  // to it is the distance to the point; it shares no end with any piece).
+  std::vector<Segment> all_features = decomposition.segments;
+  for (const Subdomain& sub : decomposition.subdomains)
+    for (const std::uint32_t v : sub.interior_points) all_features.push_back({v, v, 0});
+  const detail::FeatureDistance features(decomposition.points, all_features);
   const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features);
   // Boundary pieces our refinement may split need only resolve the
   // separators near them (the decoupling); elsewhere it splits them itself.
@@ -152,8 +159,14 @@ Decomposition detail::discretise(const Decomposition& decomposition, const MeshS
     out.segments.push_back({from, hi, s.marker});
     out.segment_origin.push_back(decomposition.segment_origin[j]);
   }
-  // Rings: each old segment becomes its pieces, in the ring's direction.
+  // Rings: each old segment becomes its pieces, in the ring's direction;
+  // interior segments become their pieces (indices increase with j, so the
+  // list stays sorted).
   for (Subdomain& sub : out.subdomains) {
+    std::vector<std::uint32_t> interior;
+    for (const std::uint32_t j : sub.interior_segments) interior.insert(interior.end(), pieces[j].begin(), pieces[j].end());
+    std::sort(interior.begin(), interior.end());
+    sub.interior_segments = std::move(interior);
     for (std::size_t r = 0; r < sub.rings.size(); ++r) {
       std::vector<std::uint32_t> ring, ring_segments;
       for (std::size_t k = 0; k < sub.rings[r].size(); ++k) {

@@ -1,0 +1,130 @@
+// Each subdomain's regions (subdomain_regions.hpp): the faces of the
+// subdomain's own segments, a point inside each, and the region of the
+// input face that point lies in.
+#include "mesh/subdomain_regions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "madd/predicates.hpp"
+#include "madd/triangulation.hpp"
+#include "mesh/merge.hpp"
+
+namespace madd::detail {
+
+namespace {
+
+// Per triangle of the whole domain's boundary and interior pieces: 1 + the
+// index of the region whose face holds it, 0 for none (the triangulator's
+// own -A flood on the region numbers).
+Triangulation labelled_domain(const Decomposition& d) {
+  Pslg p;
+  p.points = d.points;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    if (!d.is_separator(j)) p.segments.push_back(d.segments[j]);
+  p.holes = d.holes;
+  p.regions = d.regions;
+  for (std::size_t r = 0; r < p.regions.size(); ++r) p.regions[r].attribute = static_cast<double>(r + 1);
+  TriangulateOptions options;
+  options.region_attributes = true;
+  return triangulate(p, options);
+}
+
+// One point strictly inside each face of subdomain k's segments: the
+// centroid of the face's largest triangle (ties: the lowest), far from its
+// edges as triangles go.
+std::vector<Point> face_points(const Decomposition& d, std::uint32_t k) {
+  const Triangulation tri = triangulate(local_domain(d, k).pslg);
+  const auto n = static_cast<std::uint32_t>(tri.triangles.size());
+  const auto area = [&](std::uint32_t t) {
+    const auto& c = tri.triangles[t];
+    return triangle_area(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]);
+  };
+  std::vector<std::uint32_t> face(n, no_index), stack;
+  std::vector<Point> out;
+  for (std::uint32_t t0 = 0; t0 < n; ++t0) {
+    if (face[t0] != no_index) continue;
+    face[t0] = static_cast<std::uint32_t>(out.size());
+    std::uint32_t best = t0;
+    stack.assign(1, t0);
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      if (area(t) > area(best) || (area(t) == area(best) && t < best)) best = t;
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t u = tri.neighbours[t][i];
+        if (u == no_index || tri.is_constrained(t, i) || face[u] != no_index) continue;
+        face[u] = face[t0];
+        stack.push_back(u);
+      }
+    }
+    const auto& c = tri.triangles[best];
+    out.push_back(triangle_centroid(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]));
+  }
+  return out;
+}
+
+// The label of the triangle of `tri` holding each query point (closed
+// triangles; the lowest triangle wins), 0 where none does. The queries are
+// bucketed in a grid, so each triangle tests only those near it.
+std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector<Point>& queries) {
+  std::vector<std::uint32_t> out(queries.size(), 0);
+  std::vector<std::uint8_t> found(queries.size(), 0);
+  if (queries.empty()) return out;
+  double x0 = queries[0].x, y0 = queries[0].y, x1 = x0, y1 = y0;
+  for (const Point q : queries) {
+    x0 = std::min(x0, q.x);
+    y0 = std::min(y0, q.y);
+    x1 = std::max(x1, q.x);
+    y1 = std::max(y1, q.y);
+  }
+  const auto side = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(queries.size())), 1.0, 256.0));
+  const double w = std::max(x1 - x0, 1e-300) / side, h = std::max(y1 - y0, 1e-300) / side;
+  const auto cell = [&](double v, double origin, double size) {
+    return static_cast<std::uint32_t>(std::clamp(std::floor((v - origin) / size), 0.0, static_cast<double>(side - 1)));
+  };
+  std::vector<std::vector<std::uint32_t>> bucket(std::size_t{side} * side);
+  for (std::uint32_t q = 0; q < queries.size(); ++q)
+    bucket[std::size_t{cell(queries[q].y, y0, h)} * side + cell(queries[q].x, x0, w)].push_back(q);
+  for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
+    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
+    const double lx = std::min({a.x, b.x, c.x}), hx = std::max({a.x, b.x, c.x});
+    const double ly = std::min({a.y, b.y, c.y}), hy = std::max({a.y, b.y, c.y});
+    if (hx < x0 || lx > x1 || hy < y0 || ly > y1) continue;
+    for (std::uint32_t r = cell(ly, y0, h); r <= cell(hy, y0, h); ++r)
+      for (std::uint32_t col = cell(lx, x0, w); col <= cell(hx, x0, w); ++col)
+        for (const std::uint32_t q : bucket[std::size_t{r} * side + col]) {
+          if (found[q]) continue;
+          const Point p = queries[q];
+          if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) {
+            found[q] = 1;
+            out[q] = static_cast<std::uint32_t>(tri.attributes[t]);
+          }
+        }
+  }
+  return out;
+}
+
+} // namespace
+
+std::vector<std::vector<Region>> subdomain_regions(const Decomposition& d) {
+  std::vector<std::vector<Region>> out(d.subdomains.size());
+  if (d.regions.empty()) return out;
+  std::vector<Point> queries;
+  std::vector<std::uint32_t> owner;
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
+    for (const Point p : face_points(d, k)) {
+      queries.push_back(p);
+      owner.push_back(k);
+    }
+  const std::vector<std::uint32_t> labels = labels_at(labelled_domain(d), queries);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    if (labels[q] == 0) continue;
+    const Region& r = d.regions[labels[q] - 1];
+    out[owner[q]].push_back({queries[q], r.attribute, r.max_area});
+  }
+  return out;
+}
+
+} // namespace madd::detail
