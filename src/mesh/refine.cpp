@@ -26,6 +26,7 @@
 #include <unordered_set>
 
 #include "madd/error.hpp"
+#include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/refinement_mesh.hpp"
 #include "quality/mesh_angle.hpp"
@@ -93,7 +94,8 @@ private:
   const RefineSettings& settings_;
   const std::vector<double>& label_area_;
   double beta_ = 1.0;  // circumradius / shortest edge bound: 1 / (2 sin theta)
-  std::vector<std::uint8_t> sharp_;  // per input vertex: two boundary pieces meet there below 60 degrees
+  std::vector<std::uint8_t> sharp_;  // per input vertex: two pieces meet there below 60 degrees
+  std::vector<std::uint8_t> sharp_arm_;  // per segment end (2 s at a, 2 s + 1 at b): it bounds a sector below 60 degrees
   // Per input vertex: the unit of the shells boundary subsegments are split
   // in around it (0: none; see find_sharp_corners).
   std::vector<double> shell_unit_;
@@ -112,7 +114,8 @@ private:
 
 // The sectors around input vertex corners: each sector is the fan of
 // triangle corners at one vertex between two consecutive segments there
-// (across unconstrained edges only); calls sector(v, angle) once per sector.
+// (across unconstrained edges only); calls sector(v, angle, arms) once per
+// sector, arms the segments bounding it (two, or one at a dangling end).
 template <class Sector>
 void for_each_sector(const RefinementMesh& m, Sector&& sector) {
   std::vector<std::uint8_t> seen(3 * std::size_t{m.slot_count()}, 0);
@@ -123,6 +126,7 @@ void for_each_sector(const RefinementMesh& m, Sector&& sector) {
       const std::uint32_t v = m.corner(t0, static_cast<int>(i0));
       if (v >= m.input_vertex_count() || seen[3 * t0 + i0]) continue;
       double angle = 0;
+      std::uint32_t arms[2] = {no_index, no_index};
       seen[3 * t0 + i0] = 1;
       stack.assign(1, 3 * t0 + i0);
       while (!stack.empty()) {
@@ -134,7 +138,11 @@ void for_each_sector(const RefinementMesh& m, Sector&& sector) {
         // The two edges of t at v: opposite its other two corners.
         for (const std::uint32_t e : {(i + 1) % 3, (i + 2) % 3}) {
           const std::uint32_t h = 3 * t + e;
-          if (m.segment_of(h) != no_index || m.twin(h) == no_index) continue;
+          if (m.segment_of(h) != no_index) {
+            (arms[0] == no_index ? arms[0] : arms[1]) = m.segment_of(h);
+            continue;
+          }
+          if (m.twin(h) == no_index) continue;
           const std::uint32_t u = m.twin(h) / 3;
           std::uint32_t j = 0;
           while (m.corner(u, static_cast<int>(j)) != v) ++j;
@@ -143,7 +151,7 @@ void for_each_sector(const RefinementMesh& m, Sector&& sector) {
           stack.push_back(3 * u + j);
         }
       }
-      sector(v, angle);
+      sector(v, angle, arms);
     }
   }
 }
@@ -169,8 +177,12 @@ void Refiner::find_sharp_corners() {
   constexpr double straight = 179.0 * std::numbers::pi / 180.0;
   std::vector<double> smallest(n, std::numeric_limits<double>::infinity());
   std::vector<std::uint8_t> bent(n, 0);
-  for_each_sector(m_, [&](std::uint32_t v, double angle) {
+  sharp_arm_.assign(2 * m_.segment_count(), 0);
+  for_each_sector(m_, [&](std::uint32_t v, double angle, const std::uint32_t* arms) {
     smallest[v] = std::min(smallest[v], angle);
+    if (angle < sharp_corner_deg * std::numbers::pi / 180.0)
+      for (int k = 0; k < 2; ++k)
+        if (arms[k] != no_index) sharp_arm_[2 * arms[k] + (m_.segment(arms[k]).b == v ? 1 : 0)] = 1;
     if (angle < straight || angle > 2 * std::numbers::pi - straight) bent[v] = 1;
   });
   // Shells go around every real corner, not only sharp ones: with plain
@@ -234,8 +246,12 @@ Reason Refiner::input_angle_rule(std::uint32_t t, const TriangleShape& s) const 
   };
   std::uint32_t xa = no_index, xb = no_index, ya = no_index, yb = no_index;
   if (!corner_of(x, xa, xb) || !corner_of(y, ya, yb)) return Reason::none;
+  // x and y must lie on the two arms of the sharp sector (the angle x w y
+  // below 60 degrees): where three or more segments meet at w, two pieces
+  // at a wide angle there are no sharp corner.
   for (const std::uint32_t w : {xa, xb}) {
     if (w >= sharp_.size() || !sharp_[w] || (w != ya && w != yb)) continue;
+    if (angle_at(m_.point(w), m_.point(x), m_.point(y)) >= sharp_corner_deg * std::numbers::pi / 180.0) continue;
     const double dx = distance(m_.point(w), m_.point(x)), dy = distance(m_.point(w), m_.point(y));
     if (std::abs(dx - dy) <= 0.05 * std::max(dx, dy)) return Reason::input_angle;
   }
@@ -262,10 +278,14 @@ Point Refiner::insertion_point(std::uint32_t t, const TriangleShape& s) const {
 }
 
 // The subsegment has an end at a sharp corner (an end of its segment where
-// two pieces meet below 60 degrees).
+// it bounds a sector below 60 degrees; where three or more pieces meet, the
+// others there are no sharp corner).
 bool Refiner::at_sharp_corner(std::uint32_t h) const {
-  const RefinementSegment& s = m_.segment(m_.segment_of(h));
-  const auto sharp_end = [&](std::uint32_t v) { return (v == s.a || v == s.b) && v < sharp_.size() && sharp_[v]; };
+  const std::uint32_t sid = m_.segment_of(h);
+  const RefinementSegment& s = m_.segment(sid);
+  const auto sharp_end = [&](std::uint32_t v) {
+    return (v == s.a && sharp_arm_[2 * sid] != 0) || (v == s.b && sharp_arm_[2 * sid + 1] != 0);
+  };
   return sharp_end(m_.origin(h)) || sharp_end(m_.dest(h));
 }
 
@@ -360,6 +380,14 @@ void Refiner::try_triangle(std::uint32_t t) {
     reason_[t] = Reason::precision;
     return;
   } else {
+    // p on a segment edge of its triangle (a right triangle's circumcentre
+    // on its hypotenuse): inside that subsegment's diametral circle, so it
+    // encroaches (the cavity could not be star-shaped from p anyway).
+    for (std::uint32_t h = 3 * w.triangle; h < 3 * w.triangle + 3; ++h)
+      if (m_.segment_of(h) != no_index && orient2d(m_.point(m_.origin(h)), m_.point(m_.dest(h)), p) == 0)
+        encroached.push_back(h);
+  }
+  if (w.triangle != no_index && encroached.empty()) {
     if (!m_.prepare(w.triangle, p)) {
       reason_[t] = Reason::precision;
       return;
