@@ -178,6 +178,18 @@ TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 
     check_owners(parts);
     // The isolated vertices are in the part of the share meshing subdomain 1, under their own ids.
     for (const madd::MeshPart& part : parts) {
+      // The part's .ele: a third attribute, the region attribute of each triangle.
+      std::istringstream ele(madd::format_part_ele(part));
+      std::size_t count = 0, corners = 0, attributes = 0;
+      ele >> count >> corners >> attributes;
+      CHECK(count == part.mesh.triangles.size());
+      CHECK(attributes == 3);
+      for (std::size_t t = 0; t < count; ++t) {
+        double id = 0, a = 0, b = 0, c = 0, k = 0, global = 0, region = 0;
+        ele >> id >> a >> b >> c >> k >> global >> region;
+        CHECK(region == whole.triangle_attribute[part.triangle_ids[t]]);
+      }
+      CHECK(madd::format_parts_pvtu({"p-0.vtu"}, true).find("Name=\"region_attribute\"") != std::string::npos);
       const bool has_one = part.owner[1] == part.share;
       for (const std::uint64_t v : {15u, 16u})
         CHECK(has_one == (std::find(part.point_ids.begin(), part.point_ids.end(), v) != part.point_ids.end()));
