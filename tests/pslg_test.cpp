@@ -57,12 +57,17 @@ TEST_CASE("validate_pslg accepts what a domain may not hold: interior, dangling 
   const madd::Pslg p = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}, {2, 0}, {3, 1}},
                                    {{4, 5, 0}, {7, 8, 0}});
   CHECK(!pslg_error(p));
+  // As a domain, all but the polyline outside are interior constraints.
   try {
     madd::validate(p);
-    FAIL("a domain with a touching segment");
+    FAIL("a domain with a segment outside it");
   } catch (const madd::InvalidInputError& e) {
-    CHECK(e.problem() == InputProblem::isolated_vertex);  // vertex 7 (0.25, 0.75) comes first
+    CHECK(e.problem() == InputProblem::open_boundary);
+    CHECK(e.ids() == std::vector<std::int64_t>{8});  // vertex 8 (2, 0), a loose end of the polyline
   }
+  const madd::Pslg inside = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}}, {{4, 5, 0}});
+  CHECK_NOTHROW(madd::validate(inside));
+  CHECK(madd::domain_area(inside) == 1.0);
 }
 
 TEST_CASE("validate_pslg refuses crossings and overlaps unless asked, naming both segments in the file's base") {
@@ -172,23 +177,17 @@ TEST_CASE("summarize_pslg on random lone points and segments agrees with brute f
   }
 }
 
-TEST_CASE("decompose() and mesh() refuse a PSLG with interior segments or isolated vertices, naming them") {
-  // Until the decomposition takes interior constraints (issue 16).
+TEST_CASE("decompose() takes interior segments and isolated vertices, and keeps each inside one subdomain") {
   madd::Pslg lone = square_with({{0.5, 0.5}}, {});
   madd::Pslg interior = square_with({}, {{0, 2, 0}});
-  for (const auto& [pslg, problem, id] : {std::tuple{lone, InputProblem::isolated_vertex, 5},
-                                          std::tuple{interior, InputProblem::interior_segment, 5}}) {
-    CHECK(!pslg_error(pslg));  // triangulate takes it
-    try {
-      (void)madd::decompose(pslg, {});
-      FAIL("decompose took a PSLG that is not a domain");
-    } catch (const madd::InvalidInputError& e) {
-      CHECK(e.problem() == problem);
-      CHECK(e.ids().front() == id);
-    }
-    madd::MeshOptions options;
-    options.decomposition.subdomains = 2;
-    CHECK_THROWS_AS((void)madd::mesh(pslg, options), madd::InvalidInputError);
+  for (const madd::Pslg& pslg : {lone, interior}) {
+    madd::DecomposeOptions options;
+    options.subdomains = 3;
+    const madd::Decomposition d = madd::decompose(pslg, options);
+    CHECK(madd::verify_decomposition(d, pslg, 3).ok());
+    std::size_t kept = 0;
+    for (const madd::Subdomain& s : d.subdomains) kept += s.interior_points.size() + s.interior_segments.size();
+    CHECK(kept >= 1);
   }
 }
 

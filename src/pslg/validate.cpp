@@ -145,19 +145,12 @@ void check_zero_length(const Pslg& p, const Reporter& r) {
   }
 }
 
-std::vector<std::uint32_t> check_segments_and_degrees(const Pslg& p, const Reporter& r) {
-  check_zero_length(p, r);
+std::vector<std::uint32_t> vertex_degrees(const Pslg& p) {
   std::vector<std::uint32_t> degree(p.points.size(), 0);
   for (const Segment& seg : p.segments) {
     ++degree[seg.a];
     ++degree[seg.b];
   }
-  for (std::uint32_t v = 0; v < p.points.size(); ++v)
-    if (degree[v] == 0)
-      r.fail(InputProblem::isolated_vertex,
-             r.vertex(v) + " is on no segment; isolated vertices are not supported by decompose and mesh "
-                           "(madd triangulate takes them; docs/formats.md)",
-             {r.id(v)}, {p.points[v]}, Item::point, v);
   return degree;
 }
 
@@ -180,76 +173,60 @@ void check_holes_on_segments(const Pslg& p, const detail::SegmentGrid& grid, con
   }
 }
 
-// With exactly one kept face `domain`, every segment must have it on exactly one side.
-void check_bounds_domain(const Pslg& p, const detail::FaceMap& fm, std::uint32_t domain,
-                         const std::vector<std::uint32_t>& hole_of_face, const Reporter& r) {
-  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
-    const std::uint32_t f = fm.face_of_half_edge(2 * s), g = fm.face_of_half_edge(2 * s + 1);
-    if (f == domain && g == domain)
-      r.fail(InputProblem::interior_segment, r.segment(s) + " has the domain on both sides", {r.id(s)},
-             {p.points[p.segments[s].a]}, Item::segment, s);
-    if (f == domain || g == domain) continue;
-    const std::uint32_t other = f == no_index ? g : f;
-    if ((f == no_index || g == no_index) && other != no_index && hole_of_face[other] != no_index) {
-      const std::uint32_t h = hole_of_face[other];
-      r.fail(InputProblem::hole_outside_domain,
-             r.hole(h) + " lies outside the domain, in the region bounded by " + r.segment(s),
-             {r.id(h), r.id(s)}, {p.holes[h]}, Item::hole, h);
-    }
-    r.fail(InputProblem::interior_segment,
-           r.segment(s) + " does not bound the domain: the regions on both sides of it are removed",
-           {r.id(s)}, {p.points[p.segments[s].a]}, Item::segment, s);
-  }
-}
-
-// The domain is what Triangle keeps after flooding from the outside and from
-// every hole point: it must be exactly one face of the segment graph, and
-// every segment must have it on exactly one side (docs/formats.md, "The domain").
-void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<std::uint32_t>& degree,
-                   const Reporter& r) {
-  std::vector<std::uint32_t> hole_of_face(fm.ring_count(), no_index);
-  for (std::uint32_t h = 0; h < p.holes.size(); ++h) {
-    const std::uint32_t f = fm.hole_face[h];
-    if (f == no_index)
-      r.fail(InputProblem::hole_outside_domain, r.hole(h) + " lies outside every boundary", {r.id(h)},
-             {p.holes[h]}, Item::hole, h);
-    if (hole_of_face[f] == no_index) hole_of_face[f] = h;
-  }
-  const std::vector<bool> kept = detail::kept_faces(fm);
-  const auto sides = [&](std::uint32_t s) {
-    return std::pair{fm.face_of_half_edge(2 * s), fm.face_of_half_edge(2 * s + 1)};
-  };
-  const auto is_kept = [&](std::uint32_t f) { return f != no_index && kept[f]; };
-  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
-    const auto [f, g] = sides(s);
-    if (f != g && is_kept(f) && is_kept(g))
-      r.fail(InputProblem::interior_segment,
-             r.segment(s) + " has the domain on both sides; interior segments (as in Triangle's face.poly) "
-                            "are not supported by decompose and mesh (madd triangulate takes them)",
-             {r.id(s)}, {p.points[p.segments[s].a], p.points[p.segments[s].b]}, Item::segment, s);
-  }
-  for (std::uint32_t v = 0; v < p.points.size(); ++v)
+// A piece with the domain on neither side: a boundary left open (a vertex
+// of odd degree on it), a stray segment outside, or a ring whose both sides
+// the hole points remove.
+[[noreturn]] void fail_outside_piece(const Pslg& p, const detail::DomainPieces& dp, std::uint32_t k,
+                                     const std::vector<std::uint32_t>& degree, const std::vector<std::uint32_t>& hole_of_face,
+                                     const Reporter& r) {
+  const std::uint32_t s = dp.resolved.source_segment[k];
+  // A loose end first (degree 1), then a fork (odd degree).
+  std::uint32_t ends[2] = {p.segments[s].a, p.segments[s].b};
+  if (degree[ends[1]] < degree[ends[0]]) std::swap(ends[0], ends[1]);
+  for (const std::uint32_t v : ends)
     if (degree[v] % 2 != 0)
       r.fail(InputProblem::open_boundary,
              r.vertex(v) + " is an endpoint of " + std::to_string(degree[v]) +
-                 " segment(s), an odd number: the boundary is not closed there",
+                 " segment(s), an odd number, with the domain on neither side: the boundary is not closed there",
              {r.id(v)}, {p.points[v]}, Item::point, v);
-  std::vector<std::uint32_t> parts; // first segment bounding each kept face
-  std::vector<bool> seen(fm.ring_count(), false);
-  for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
-    for (std::uint32_t f : {sides(s).first, sides(s).second}) {
-      if (is_kept(f) && !seen[f]) {
-        seen[f] = true;
-        parts.push_back(s);
-      }
-    }
+  const std::uint32_t f = dp.faces.face_of_half_edge(2 * k), g = dp.faces.face_of_half_edge(2 * k + 1);
+  const std::uint32_t other = f == no_index ? g : f;
+  if ((f == no_index || g == no_index) && other != no_index && hole_of_face[other] != no_index) {
+    const std::uint32_t h = hole_of_face[other];
+    r.fail(InputProblem::hole_outside_domain,
+           r.hole(h) + " lies outside the domain, in the region bounded by " + r.segment(s), {r.id(h), r.id(s)},
+           {p.holes[h]}, Item::hole, h);
   }
-  if (parts.empty()) {
-    std::uint32_t h = 0;
-    while (h + 1 < p.holes.size() && hole_of_face[fm.hole_face[h]] != h) ++h;
-    r.fail(InputProblem::empty_domain,
-           "the hole points remove every region bounded by the segments; " + r.hole(h) + " removes one of them",
-           {r.id(h)}, {p.holes[h]}, Item::hole, h);
+  r.fail(InputProblem::interior_segment,
+         r.segment(s) + " does not bound the domain: the regions on both sides of it are removed", {r.id(s)},
+         {p.points[p.segments[s].a]}, Item::segment, s);
+}
+
+// The kept faces joined across the pieces that have the domain on both
+// sides must be one: the domain is connected (docs/formats.md, "The domain").
+void check_connected(const Pslg& p, const detail::DomainPieces& dp, const Reporter& r) {
+  const std::uint32_t faces = dp.faces.ring_count();
+  std::vector<std::uint32_t> parent(faces);
+  for (std::uint32_t f = 0; f < faces; ++f) parent[f] = f;
+  const auto root = [&](std::uint32_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  const auto pieces = static_cast<std::uint32_t>(dp.resolved.pslg.segments.size());
+  for (std::uint32_t k = 0; k < pieces; ++k) {
+    if (dp.domain_sides(k) != 3U) continue;
+    const std::uint32_t a = root(dp.faces.face_of_half_edge(2 * k)), b = root(dp.faces.face_of_half_edge(2 * k + 1));
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+  std::vector<std::uint32_t> first_piece(faces, no_index);  // per part: the first piece bounding it
+  std::vector<std::uint32_t> parts;
+  for (std::uint32_t k = 0; k < pieces; ++k) {
+    for (const std::uint32_t h : {2 * k, 2 * k + 1}) {
+      const std::uint32_t f = dp.faces.face_of_half_edge(h);
+      if (!dp.is_kept(f) || first_piece[root(f)] != no_index) continue;
+      first_piece[root(f)] = k;
+      parts.push_back(dp.resolved.source_segment[k]);
+    }
   }
   if (parts.size() > 1)
     r.fail(InputProblem::disconnected_domain,
@@ -257,8 +234,52 @@ void check_regions(const Pslg& p, const detail::FaceMap& fm, const std::vector<s
                " bounds one, " + r.segment(parts[0]) + " another",
            {r.id(parts[1]), r.id(parts[0])}, {p.points[p.segments[parts[1]].a], p.points[p.segments[parts[0]].a]},
            Item::segment, parts[1]);
-  const std::uint32_t domain = is_kept(sides(parts[0]).first) ? sides(parts[0]).first : sides(parts[0]).second;
-  check_bounds_domain(p, fm, domain, hole_of_face, r);
+}
+
+// The domain is what Triangle keeps after flooding from the outside and from
+// every hole point: the bounded faces of the segment graph holding no hole
+// point. Every segment must have it on at least one side (on both: an
+// interior segment), it must be connected across the interior segments, and
+// every isolated vertex must lie in it (docs/formats.md, "The domain").
+void check_regions(const Pslg& p, const detail::DomainPieces& dp, const std::vector<std::uint32_t>& degree,
+                   const Reporter& r) {
+  const detail::FaceMap& fm = dp.faces;
+  std::vector<std::uint32_t> hole_of_face(fm.ring_count(), no_index);
+  for (std::uint32_t h = 0; h < dp.real_holes; ++h) {
+    const std::uint32_t f = fm.hole_face[h];
+    if (f == no_index)
+      r.fail(InputProblem::hole_outside_domain, r.hole(h) + " lies outside every boundary", {r.id(h)},
+             {p.holes[h]}, Item::hole, h);
+    if (hole_of_face[f] == no_index) hole_of_face[f] = h;
+  }
+  const auto pieces = static_cast<std::uint32_t>(dp.resolved.pslg.segments.size());
+  bool any_kept = false;
+  for (std::uint32_t k = 0; k < pieces && !any_kept; ++k) any_kept = dp.domain_sides(k) != 0U;
+  if (!any_kept) {
+    for (std::uint32_t v = 0; v < p.points.size(); ++v)
+      if (degree[v] % 2 != 0)
+        r.fail(InputProblem::open_boundary,
+               r.vertex(v) + " is an endpoint of " + std::to_string(degree[v]) +
+                   " segment(s), an odd number: the boundary is not closed there",
+               {r.id(v)}, {p.points[v]}, Item::point, v);
+    std::uint32_t h = 0;
+    while (h + 1 < dp.real_holes && hole_of_face[fm.hole_face[h]] != h) ++h;
+    if (dp.real_holes == 0)
+      r.fail(InputProblem::empty_domain, "the segments enclose no region", {}, {}, Item::segment, 0);
+    r.fail(InputProblem::empty_domain,
+           "the hole points remove every region bounded by the segments; " + r.hole(h) + " removes one of them",
+           {r.id(h)}, {p.holes[h]}, Item::hole, h);
+  }
+  check_connected(p, dp, r);
+  for (std::uint32_t k = 0; k < pieces; ++k)
+    if (dp.domain_sides(k) == 0U) fail_outside_piece(p, dp, k, degree, hole_of_face, r);
+  for (std::size_t i = 0; i < dp.isolated.size(); ++i) {
+    const std::uint32_t v = dp.isolated[i];
+    if (!dp.is_kept(dp.isolated_face(i)))
+      r.fail(InputProblem::isolated_vertex,
+             r.vertex(v) + " is on no segment and lies outside the domain (madd triangulate takes it)", {r.id(v)},
+             {p.points[v]}, Item::point, v);
+  }
 }
 
 // Crossings and overlaps, the first in file order; a vertex lying inside a
@@ -303,22 +324,23 @@ void validate(const Pslg& pslg, const SourceMap& source, const ValidateOptions& 
     throw InvalidInputError(InputProblem::empty_domain, "there are no segments, so there is no domain", {}, {},
                             source.path, 0, 0);
   check_duplicates(pslg, r);
-  const std::vector<std::uint32_t> degree = check_segments_and_degrees(pslg, r);
+  check_zero_length(pslg, r);
   const detail::SegmentGrid grid(pslg.points, pslg.segments);
-  check_intersections(pslg, grid, r);
+  // Crossings and overlaps are errors; a vertex inside a segment splits it.
+  const auto conflict = detail::find_segment_conflict(pslg, grid, true);
+  const bool touches = conflict && conflict->contact.kind == Contact::touch;
+  if (conflict && !touches) check_intersections(pslg, grid, r);
+  if (touches) check_pslg_intersections(pslg, grid, r);
   check_holes_on_segments(pslg, grid, r);
-  check_regions(pslg, detail::build_face_map(pslg, grid), degree, r);
+  check_regions(pslg, detail::trace_domain_pieces(pslg, touches), vertex_degrees(pslg), r);
 }
 
 double domain_area(const Pslg& pslg) {
   if (pslg.segments.empty()) return 0.0;
-  const detail::SegmentGrid grid(pslg.points, pslg.segments);
-  const detail::FaceMap fm = detail::build_face_map(pslg, grid);
-  const std::vector<bool> kept = detail::kept_faces(fm);
+  const detail::DomainPieces dp = detail::trace_domain_pieces(pslg, detail::has_vertex_inside_segment(pslg));
   double area = 0.0;
-  for (std::uint32_t ring = 0; ring < fm.ring_count(); ++ring) {
-    const std::uint32_t face = fm.face_of_ring[ring];
-    if (face != no_index && kept[face]) area += fm.ring_area[ring];
+  for (std::uint32_t ring = 0; ring < dp.faces.ring_count(); ++ring) {
+    if (dp.is_kept(dp.faces.face_of_ring[ring])) area += dp.faces.ring_area[ring];
   }
   return area;
 }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "madd/intersections.hpp"
 #include "madd/pslg.hpp"
 #include "kernel/segment_grid.hpp"
 
@@ -59,5 +60,34 @@ FaceMap build_face_map(const Pslg& pslg, const SegmentGrid& grid);
 
 // Per ring (= per bounded face): true when no hole point lies in the face.
 std::vector<bool> kept_faces(const FaceMap& faces);
+
+// The segment graph of a domain as decompose() sees it (docs/formats.md,
+// "Interior segments"): the segments split at every vertex lying inside one
+// (no new points), each piece with the sides the domain is on, and the
+// vertices on no segment with the face each lies in. The domain is the union
+// of the bounded faces holding no hole point. Precondition: no crossings,
+// overlaps, duplicate points or zero-length segments.
+struct DomainPieces {
+  ResolvedPslg resolved;                // resolved.pslg.holes: the input's, then one per isolated vertex
+  FaceMap faces;                        // of resolved.pslg
+  std::vector<bool> kept;               // per face (ring id): part of the domain
+  std::vector<std::uint32_t> isolated;  // input vertices on no segment, ascending
+  std::size_t real_holes = 0;           // hole points that are the input's
+
+  bool is_kept(std::uint32_t face) const { return face != no_index && kept[face]; }
+  // Bit 0: the domain lies left of piece k run a -> b; bit 1: left of b -> a.
+  unsigned domain_sides(std::uint32_t k) const {
+    return (is_kept(faces.face_of_half_edge(2 * k)) ? 1U : 0U) | (is_kept(faces.face_of_half_edge(2 * k + 1)) ? 2U : 0U);
+  }
+  // The face isolated vertex isolated[i] lies in (no_index: outside every ring).
+  std::uint32_t isolated_face(std::size_t i) const { return faces.hole_face[real_holes + i]; }
+};
+// `split_at_vertices`: some vertex lies inside a segment (else the segments
+// are taken as they are, saving the search).
+DomainPieces trace_domain_pieces(const Pslg& domain, bool split_at_vertices);
+
+// True when some vertex lies inside a segment (a touch): what
+// trace_domain_pieces must be told. Precondition as find_segment_conflict.
+bool has_vertex_inside_segment(const Pslg& pslg);
 
 } // namespace madd::detail
