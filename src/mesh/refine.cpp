@@ -419,12 +419,15 @@ void Refiner::try_triangle(std::uint32_t t) {
   }
   bool split_any = false, separator = false;
   const double shortest = std::sqrt(s.l2[s.shortest]);
+  const bool skinny = too_skinny(s);
   for (const Encroached& e : list) {
     if (!e.splittable) {
       separator = true;
       continue;
     }
-    if (e.sharp && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
+    // Shewchuk's rule is for skinny triangles: one bad only by its size
+    // still splits the arm (its size bound ends that).
+    if (e.sharp && skinny && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
     split_any |= split_subsegment(e.a, e.b);
   }
   if (split_any) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
@@ -31,21 +32,32 @@ Triangulation labelled_domain(const Decomposition& d) {
   return triangulate(p, options);
 }
 
-// One point strictly inside each face of subdomain k's segments: the
-// centroid of the face's largest triangle (ties: the lowest), far from its
-// edges as triangles go.
-std::vector<Point> face_points(const Decomposition& d, std::uint32_t k) {
-  const Triangulation tri = triangulate(local_domain(d, k).pslg);
+// Subdomain k's own triangulation (its rings, interior pieces and isolated
+// vertices), the face of each triangle (flooded across unconstrained edges)
+// and one point strictly inside each face: the centroid of the face's
+// largest triangle (ties: the lowest), far from its edges as triangles go.
+struct Faces {
+  LocalDomain local;
+  Triangulation tri;
+  std::vector<std::uint32_t> face;  // per triangle
+  std::vector<Point> point;         // per face
+};
+
+Faces faces_of(const Decomposition& d, std::uint32_t k) {
+  Faces out;
+  out.local = local_domain(d, k);
+  out.tri = triangulate(out.local.pslg);
+  const Triangulation& tri = out.tri;
   const auto n = static_cast<std::uint32_t>(tri.triangles.size());
   const auto area = [&](std::uint32_t t) {
     const auto& c = tri.triangles[t];
     return triangle_area(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]);
   };
-  std::vector<std::uint32_t> face(n, no_index), stack;
-  std::vector<Point> out;
+  out.face.assign(n, no_index);
+  std::vector<std::uint32_t> stack;
   for (std::uint32_t t0 = 0; t0 < n; ++t0) {
-    if (face[t0] != no_index) continue;
-    face[t0] = static_cast<std::uint32_t>(out.size());
+    if (out.face[t0] != no_index) continue;
+    out.face[t0] = static_cast<std::uint32_t>(out.point.size());
     std::uint32_t best = t0;
     stack.assign(1, t0);
     while (!stack.empty()) {
@@ -54,13 +66,13 @@ std::vector<Point> face_points(const Decomposition& d, std::uint32_t k) {
       if (area(t) > area(best) || (area(t) == area(best) && t < best)) best = t;
       for (int i = 0; i < 3; ++i) {
         const std::uint32_t u = tri.neighbours[t][i];
-        if (u == no_index || tri.is_constrained(t, i) || face[u] != no_index) continue;
-        face[u] = face[t0];
+        if (u == no_index || tri.is_constrained(t, i) || out.face[u] != no_index) continue;
+        out.face[u] = out.face[t0];
         stack.push_back(u);
       }
     }
     const auto& c = tri.triangles[best];
-    out.push_back(triangle_centroid(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]));
+    out.point.push_back(triangle_centroid(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]));
   }
   return out;
 }
@@ -108,21 +120,37 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
 
 } // namespace
 
-std::vector<std::vector<Region>> subdomain_regions(const Decomposition& d) {
-  std::vector<std::vector<Region>> out(d.subdomains.size());
+RegionView region_view(const Decomposition& d) {
+  RegionView out;
+  out.regions.resize(d.subdomains.size());
+  out.segment_area.assign(d.segments.size(), std::numeric_limits<double>::infinity());
   if (d.regions.empty()) return out;
+  std::vector<Faces> faces;
   std::vector<Point> queries;
-  std::vector<std::uint32_t> owner;
-  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
-    for (const Point p : face_points(d, k)) {
-      queries.push_back(p);
-      owner.push_back(k);
-    }
+  std::vector<std::uint32_t> first;  // per subdomain: its first query
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    faces.push_back(faces_of(d, k));
+    first.push_back(static_cast<std::uint32_t>(queries.size()));
+    queries.insert(queries.end(), faces.back().point.begin(), faces.back().point.end());
+  }
   const std::vector<std::uint32_t> labels = labels_at(labelled_domain(d), queries);
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    if (labels[q] == 0) continue;
-    const Region& r = d.regions[labels[q] - 1];
-    out[owner[q]].push_back({queries[q], r.attribute, r.max_area});
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    const Faces& f = faces[k];
+    for (std::size_t p = 0; p < f.point.size(); ++p) {
+      const std::uint32_t label = labels[first[k] + p];
+      if (label == 0) continue;
+      const Region& r = d.regions[label - 1];
+      out.regions[k].push_back({f.point[p], r.attribute, r.max_area});
+    }
+    // Each segment edge of the triangulation bounds the face of its triangle.
+    for (std::uint32_t t = 0; t < f.tri.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t s = f.tri.segment_of[t][i];
+        const std::uint32_t label = labels[first[k] + f.face[t]];
+        if (s == no_index || label == 0 || !(d.regions[label - 1].max_area > 0)) continue;
+        double& bound = out.segment_area[f.local.piece[s]];
+        bound = std::min(bound, d.regions[label - 1].max_area);
+      }
   }
   return out;
 }

@@ -15,11 +15,20 @@
 
 namespace madd::detail {
 
-// Per subdomain of the (discretised) decomposition: its regions, as above;
-// all empty when d.regions is. The region of a face is decided once, on the
-// constrained triangulation of every boundary and interior piece of d, by
-// Triangle's rule (of two region points in one face the later wins).
-// Deterministic.
-std::vector<std::vector<Region>> subdomain_regions(const Decomposition& d);
+struct RegionView {
+  // Per subdomain: its regions, as above.
+  std::vector<std::vector<Region>> regions;
+  // Per segment of d: the smallest max_area (> 0) of the regions on its two
+  // sides, +infinity for none: the regional size bound discretise splits it
+  // for (the decoupling holds for the triangles next to it only if it does).
+  std::vector<double> segment_area;
+};
+
+// The regions of every subdomain of `d` and the regional bound along every
+// segment; no regions and no bounds when d.regions is empty. The region of
+// a face is decided once, on the constrained triangulation of every
+// boundary and interior piece of d, by Triangle's rule (of two region
+// points in one face the later wins). Deterministic.
+RegionView region_view(const Decomposition& d);
 
 } // namespace madd::detail
