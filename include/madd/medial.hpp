@@ -33,6 +33,12 @@ struct BoundaryLinks {
   // the triangles around the point into one G'_D vertex, a large part of the
   // face in a triangulation without interior points, and unbalance the split.
   bool no_end = false;
+  // The loose end of an interior segment (prev == next: its neighbour along
+  // it). A separator may pass through it: two cut partial separators, each
+  // at >= Phi0 from the segment, and >= Phi0 apart on the side without it
+  // (pinch_conflicts). Keeping separators off it instead would leave the fan
+  // of triangles around it uncrossable, as no_end does.
+  bool tip = false;
 };
 
 struct MedialOptions {
@@ -48,7 +54,8 @@ double boundary_angle(Point at, Point prev, Point next, Point towards);
 
 // The smallest angle the segment from vertex `at` towards `towards` makes
 // with the boundary or interior segment through `at` (links[at]), as
-// boundary_angle; for a two-sided vertex, on the side `towards` lies on.
+// boundary_angle; for a two-sided vertex, on the side `towards` lies on; for
+// a tip, the angle between the segment and `towards`.
 // Returns -1 where no separator may end (prev == no_index) or outside the
 // wedge; 180 at a no_end vertex (the bisection keeps separators off it).
 double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards);

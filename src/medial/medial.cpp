@@ -36,6 +36,10 @@ double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> 
   const BoundaryLinks& l = links[at];
   if (l.no_end) return 180.0;
   if (l.prev == no_index || l.next == no_index) return -1.0;
+  if (l.tip) {
+    const double a = detail::ccw_angle_deg(points[at], points[l.prev], towards);
+    return a <= 0.0 || a >= 360.0 ? -1.0 : std::min(a, 360.0 - a);
+  }
   const double left = boundary_angle(points[at], points[l.prev], points[l.next], towards);
   if (left >= 0.0 || !l.two_sided) return left;
   return boundary_angle(points[at], points[l.next], points[l.prev], towards);
@@ -43,7 +47,7 @@ double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> 
 
 int link_side(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards) {
   const BoundaryLinks& l = links[at];
-  if (!l.two_sided || l.prev == no_index || l.next == no_index) return 0;
+  if (!l.two_sided || l.tip || l.prev == no_index || l.next == no_index) return 0;
   return boundary_angle(points[at], points[l.prev], points[l.next], towards) >= 0.0 ? 0 : 1;
 }
 

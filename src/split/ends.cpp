@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kernel/angles.hpp"
 #include "kernel/containment.hpp"
 #include "madd/predicates.hpp"
 #include "split/refine.hpp"
@@ -40,6 +41,12 @@ double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<
     const std::uint32_t p = cut[self].end[0] == c ? cut[self].end[1] : cut[self].end[0];
     if (at_c < 0.0 || link_side(g.points, fd.links, c, g.points[x]) != link_side(g.points, fd.links, c, g.points[p]))
       return -1.0;
+    // Through a tip, the move must not sweep over the segment ending there.
+    if (fd.links[c].tip) {
+      const Point along = g.points[fd.links[c].next];
+      const double ap = ccw_angle_deg(g.points[c], along, g.points[p]), ax = ccw_angle_deg(g.points[c], along, g.points[x]);
+      if (std::abs(ap - ax) >= 180.0) return -1.0;
+    }
     a = std::min(a, at_c);
   }
   for (std::size_t k = 0; k < cut.size(); ++k) {
@@ -136,7 +143,8 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
         const std::uint32_t p = cut[k].end[e];
         // An end on an interior segment is a crossing, shared with the partial
         // separator on its other side: it stays.
-        if (p >= fd.refs.size() || fd.links[p].prev == no_index || fd.links[p].two_sided || fd.links[p].no_end)
+        if (p >= fd.refs.size() || fd.links[p].prev == no_index || fd.links[p].two_sided || fd.links[p].no_end ||
+            fd.links[p].tip)
           continue;
         const Move m = best_move(g, fd, s, cut, k, e, w, interior);
         if (m.to == no_index) continue;

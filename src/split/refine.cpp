@@ -48,9 +48,9 @@ namespace {
 // The interior pieces and isolated points of face `f` as working points and
 // constrained edges (docs/algorithm.md, "Interior segments"). A point inside
 // a piece, or a vertex joining exactly two pieces, is two-sided: a separator
-// may cross there. Where the interior segments end, fork or meet the rings,
-// no separator may end (BoundaryLinks::no_end): the angles it would make
-// there are not those of one straight crossing.
+// may cross there; a loose end is a tip, which a separator may pass through
+// (BoundaryLinks::tip). Where interior segments fork or meet the rings no
+// separator may end (BoundaryLinks::no_end).
 void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pin_isolated,
                   std::unordered_map<std::uint32_t, std::uint32_t>& working_of, std::vector<std::uint8_t>& pinched,
                   FaceDomain& out) {
@@ -97,6 +97,11 @@ void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pi
   }
   for (const auto& [w, along] : neighbours) {
     if (w < ring_points) continue;
+    if (along.size() == 1) {
+      out.links[w].prev = out.links[w].next = along[0];
+      out.links[w].tip = true;
+      continue;
+    }
     if (along.size() != 2) {
       no_end.push_back(w);
       continue;

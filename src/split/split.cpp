@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <unordered_map>
 
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
@@ -16,6 +17,7 @@
 #include "split/refine.hpp"
 #include "split/chord.hpp"
 #include "split/locate.hpp"
+#include "kernel/angles.hpp"
 #include "kernel/stopwatch.hpp"
 
 namespace madd::detail {
@@ -67,15 +69,31 @@ bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const M
 // keep together so that the later of the two is not cut.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
                                                                      std::span<const BoundaryLinks> links,
-                                                                     const std::vector<std::uint8_t>& side) {
+                                                                     const std::vector<std::uint8_t>& side,
+                                                                     double min_angle_deg) {
   std::vector<std::uint8_t> used(links.size(), 0);  // bit s: a cut separator ends there on side s
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (const MedialEdge& e : g.edges) {
+  std::unordered_map<std::uint32_t, std::uint32_t> at_tip;  // tip -> the first cut edge through it (index)
+  for (std::uint32_t k = 0; k < g.edges.size(); ++k) {
+    const MedialEdge& e = g.edges[k];
     if (!is_cut(g, side, e)) continue;
     bool clash = false;
     for (const std::uint32_t p : {e.from, e.to}) {
       if (p >= links.size()) continue;
       const std::uint32_t other = p == e.from ? e.to : e.from;
+      if (links[p].tip) {
+        // A separator passes through: a second cut edge must leave the first
+        // >= Phi0 apart on the side away from the segment; a third is a pinch.
+        const auto [it, first] = at_tip.try_emplace(p, k);
+        if (first) continue;
+        const MedialEdge& f = g.edges[it->second];
+        const Point o = g.points[p], along = g.points[links[p].next];
+        const double a1 = detail::ccw_angle_deg(o, along, g.points[f.from == p ? f.to : f.from]);
+        const double a2 = detail::ccw_angle_deg(o, along, g.points[other]);
+        clash = clash || (used[p] & 1U) != 0 || std::abs(a1 - a2) < min_angle_deg + 1e-9;
+        used[p] |= 1U;
+        continue;
+      }
       const auto bit = static_cast<std::uint8_t>(1U << link_side(g.points, links, p, g.points[other]));
       clash = clash || (used[p] & bit) != 0 || links[p].no_end;
       used[p] |= bit;
@@ -238,8 +256,8 @@ IsolatedIn locate_isolated(const FaceDomain& fd, const Triangulation& tri, const
 // (Sec. 4.3) or run through an isolated point. Returns an empty side vector
 // when no valid bisection is found.
 std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::span<const BoundaryLinks> links,
-                                          const IsolatedIn& isolated_in, double target, std::uint64_t seed,
-                                          double weights[2]) {
+                                          const IsolatedIn& isolated_in, double min_angle_deg, double target,
+                                          std::uint64_t seed, double weights[2]) {
   BisectOptions bo;
   bo.target_fraction = target;
   bo.imbalance_tolerance = 0.02;
@@ -248,7 +266,7 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::span<const 
   for (int attempt = 0; attempt < max_repartitions; ++attempt) {
     Bisection b = bisect(g.contracted, bo);
     if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return {};
-    auto conflicts = pinch_conflicts(g, links, b.side);
+    auto conflicts = pinch_conflicts(g, links, b.side, min_angle_deg);
     isolated_conflicts(g, isolated_in, b.side, conflicts);
     if (conflicts.empty()) {
       weights[0] = b.weight[0];
@@ -272,7 +290,7 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
   std::vector<std::uint8_t> best_side;
   const auto consider = [&](double fraction, std::uint64_t target_seed) {
     double w[2] = {0.0, 0.0};
-    auto side = valid_bisection(g, fd.links, isolated_in, fraction, target_seed, w);
+    auto side = valid_bisection(g, fd.links, isolated_in, options.min_angle_deg, fraction, target_seed, w);
     if (side.empty()) return;
     const double q = balance_quality(plan, w[0], w[1]);
     if (q > out.quality) {

@@ -63,10 +63,12 @@ std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1);
 // Sec. 4.3: pairs of G'_D vertices whose cut separators would pinch a side at
 // one boundary point (empty when the bisection `side` is valid). At a point
 // of an interior segment (BoundaryLinks::two_sided), one cut separator on each
-// side of it is a crossing, not a pinch. `links`: one per working point.
+// side of it is a crossing, not a pinch; at a tip, two cut separators at
+// least Phi0 apart pass through it. `links`: one per working point.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
                                                                      std::span<const BoundaryLinks> links,
-                                                                     const std::vector<std::uint8_t>& side);
+                                                                     const std::vector<std::uint8_t>& side,
+                                                                     double min_angle_deg);
 
 struct FaceDomain;
 
