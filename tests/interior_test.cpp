@@ -188,6 +188,39 @@ TEST_CASE("a separator crossing a lane splits it at the crossing vertex, on both
   CHECK(lane_pieces >= 2);  // crossed at least once
 }
 
+TEST_CASE("separators pass through the loose ends of lanes, which would otherwise wall off their fans") {
+  // A 6 x 3 rectangle with nine short lanes in a grid: in a triangulation with
+  // no interior points the fans around their ends cover most of the face.
+  Pslg p;
+  p.points = {{0, 0}, {6, 0}, {6, 3}, {0, 3}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double x = 1.0 + 2.0 * i, y = 0.5 + 1.0 * j;
+      const auto a = static_cast<std::uint32_t>(p.points.size());
+      p.points.push_back({x - 0.3, y});
+      p.points.push_back({x + 0.3, y + 0.1});
+      p.segments.push_back({a, a + 1, 2});
+    }
+  p.has_segment_markers = true;
+  std::size_t through = 0;
+  for (const std::uint32_t n : {4u, 16u, 64u}) {
+    CAPTURE(n);
+    madd::DecomposeOptions o;
+    o.subdomains = n;
+    const Decomposition d = madd::decompose(p, o);
+    check_interior(d, p, n, 60.0);
+    double largest = 0.0;
+    for (const madd::Subdomain& s : d.subdomains) largest = std::max(largest, s.area);
+    CHECK(largest * n / 18.0 <= 1.25);
+    std::vector<int> separator_ends(d.points.size(), 0);
+    for (std::uint32_t g = 0; g < d.segments.size(); ++g)
+      if (d.is_separator(g)) ++separator_ends[d.segments[g].a], ++separator_ends[d.segments[g].b];
+    for (std::uint32_t v = 4; v < p.points.size(); ++v) through += separator_ends[v] >= 2 ? 1 : 0;
+  }
+  CHECK(through >= 1);  // the rule is exercised
+}
+
 TEST_CASE("a square with a stub from its side and a survey point still halves evenly (the chord fallback)") {
   // The medial separators of a near-square face cut off about a third; the
   // chord that halves it must miss the stub and the point, and may not end
