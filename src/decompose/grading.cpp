@@ -87,9 +87,24 @@ FaceSamples background_samples(const DecomposeOptions& options, const std::vecto
 
 double boundary_weight(const Subdivision& sub, std::uint32_t face, const std::vector<double>& point_weights) {
   double total = 0.0;
+  std::vector<std::uint32_t> counted;
   for (const auto& ring : sub.faces[face].rings) {
     for (std::uint32_t v : ring) total += point_weights[v];
+    if (!sub.faces[face].inner_segments.empty()) counted.insert(counted.end(), ring.begin(), ring.end());
   }
+  // The vertices of the interior segments weigh too, once each, as in the
+  // split's density (split/density.cpp counts every working point that is a vertex).
+  if (sub.faces[face].inner_segments.empty()) return total;
+  std::vector<std::uint32_t> inner;
+  for (const std::uint32_t seg : sub.faces[face].inner_segments) {
+    inner.push_back(sub.segments[seg].a);
+    inner.push_back(sub.segments[seg].b);
+  }
+  std::sort(counted.begin(), counted.end());
+  std::sort(inner.begin(), inner.end());
+  inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
+  for (const std::uint32_t v : inner)
+    if (!std::binary_search(counted.begin(), counted.end(), v)) total += point_weights[v];
   return total;
 }
 
