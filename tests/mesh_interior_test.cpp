@@ -16,6 +16,7 @@
 
 #include "interior_fixture.hpp"
 #include "madd/mesh.hpp"
+#include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh_fixtures.hpp"
@@ -204,4 +205,77 @@ TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.05);
   madd::MeshReport report;
   CHECK_NOTHROW(madd::mesh_decomposition(f.decomposition, f.domain, o, report));
+}
+
+namespace {
+
+madd::Pslg estuary() { return madd::read_domain(MADD_DATA_DIR "/estuary.poly"); }
+
+} // namespace
+
+TEST_CASE("mesh interior: the estuary through mesh(): interior segments kept, survey points as vertices, the loop's region") {
+  const madd::Pslg domain = estuary();
+  madd::MeshOptions o = madd::test::options_for(4, 30, 0.0);
+  const Mesh m = madd::mesh(domain, o);
+  CHECK(m.subdomain_count() == 4);
+  // Every input vertex is a mesh vertex (isolated survey points included).
+  std::vector<int> used(m.points.size(), 0);
+  for (const auto& t : m.triangles)
+    for (const std::uint32_t v : t) used[v] = 1;
+  for (std::uint32_t v = 0; v < domain.points.size(); ++v) CHECK(used[v] == 1);
+  // Every input segment is covered by mesh segments lying on it, their
+  // lengths adding up to its own; those inside the domain have triangles of
+  // one subdomain on both sides.
+  const auto edges = edges_of(m);
+  std::vector<double> covered(domain.segments.size(), 0.0);
+  for (const madd::MeshSegment& s : m.segments) {
+    const std::uint32_t origin = m.decomposition.segment_origin[s.piece];
+    if (origin == madd::no_index) continue;
+    const madd::Segment& in = domain.segments[origin];
+    const Point a = domain.points[in.a], b = domain.points[in.b];
+    CHECK(off_line(a, b, m.points[s.a]) < 1e-12);
+    CHECK(off_line(a, b, m.points[s.b]) < 1e-12);
+    covered[origin] += madd::distance(m.points[s.a], m.points[s.b]);
+    const auto& users = edges.at({std::min(s.a, s.b), std::max(s.a, s.b)});
+    if (users.size() == 2) CHECK(m.triangle_subdomain[users[0]] == m.triangle_subdomain[users[1]]);
+  }
+  std::size_t interior_edges = 0;
+  for (const auto& [e, users] : edges)
+    if (users.size() == 2 && m.triangle_subdomain[users[0]] == m.triangle_subdomain[users[1]])
+      for (const madd::MeshSegment& s : m.segments)
+        interior_edges += std::min(s.a, s.b) == e.first && std::max(s.a, s.b) == e.second;
+  CHECK(interior_edges > 20);
+  for (std::uint32_t i = 0; i < domain.segments.size(); ++i) {
+    const double length = madd::distance(domain.points[domain.segments[i].a], domain.points[domain.segments[i].b]);
+    CHECK(covered[i] == doctest::Approx(length).epsilon(1e-12));
+  }
+  // The loop (input vertices 10, 11, 12: a triangle) holds the region:
+  // attribute 2 and area at most 0.05 inside, attribute 0 outside.
+  const std::vector<Point> loop = {domain.points[10], domain.points[11], domain.points[12]};
+  std::size_t inside = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& c = m.triangles[t];
+    const Point g = madd::triangle_centroid(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
+    const bool in = madd::test::inside_convex(loop, g);
+    inside += in;
+    CHECK(m.triangle_attribute[t] == (in ? 2.0 : 0.0));
+    if (in) CHECK(madd::triangle_area(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <= 0.05 * (1 + 1e-12));
+  }
+  CHECK(inside >= 30);  // area 1.5 in triangles of at most 0.05
+  // Below the bound only at the small input angles (the groyne meets the
+  // levee at 19.8 degrees).
+  CHECK(m.shortfall.total() == m.shortfall.input_angle);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    if (smallest_angle(m, t) < 30 - 1e-9)
+      for (const std::uint32_t v : m.triangles[t]) CHECK(madd::distance(m.points[v], domain.points[20]) < 0.5);
+}
+
+TEST_CASE("mesh interior: the estuary's mesh is the same for 1, 2 and 3 threads") {
+  const madd::Pslg domain = estuary();
+  madd::MeshOptions o = madd::test::options_for(6, 30, 0.02);
+  const Mesh one = madd::mesh(domain, o);
+  o.decomposition.threads = 2;
+  CHECK(one == madd::mesh(domain, o));
+  o.decomposition.threads = 3;
+  CHECK(one == madd::mesh(domain, o));
 }
