@@ -12,10 +12,12 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "interior_fixture.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_output.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/discretise.hpp"
@@ -278,4 +280,26 @@ TEST_CASE("mesh interior: the estuary's mesh is the same for 1, 2 and 3 threads"
   CHECK(one == madd::mesh(domain, o));
   o.decomposition.threads = 3;
   CHECK(one == madd::mesh(domain, o));
+}
+
+TEST_CASE("mesh interior: the .edge file gives interior-segment edges their marker, separators 0") {
+  const Mesh m = mesh_fixture(30, 0.05, 1);
+  const std::vector<std::uint32_t> owner = madd::interior_segment_owners(m.decomposition);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> want;  // 1-based vertex ids
+  for (const madd::MeshSegment& s : m.segments)
+    if (owner[s.piece] != madd::no_index || m.decomposition.is_separator(s.piece))
+      want[{std::min(s.a, s.b) + 1, std::max(s.a, s.b) + 1}] = s.marker;
+  std::istringstream in(madd::format_mesh_edge(m, 1));
+  std::size_t count = 0, markers = 0, found = 0;
+  in >> count >> markers;
+  for (std::size_t e = 0; e < count; ++e) {
+    std::uint32_t id = 0, a = 0, b = 0;
+    int marker = 0;
+    in >> id >> a >> b >> marker;
+    const auto it = want.find({std::min(a, b), std::max(a, b)});
+    if (it == want.end()) continue;
+    CHECK(marker == it->second);
+    ++found;
+  }
+  CHECK(found == want.size());
 }

@@ -117,6 +117,13 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
         t += std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0;
       }
     }
+    // An interior piece grades the mesh on both its sides: twice the layer
+    // of a boundary piece (not fitted; interior segments were not in the fit).
+    for (const std::uint32_t j : s.interior_segments) {
+      const Point a = d.points[d.segments[j].a], b = d.points[d.segments[j].b];
+      const double local = size.area_at(midpoint(a, b));
+      t += 2.0 * (std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0);
+    }
     out.push_back(t);
   }
   return out;
