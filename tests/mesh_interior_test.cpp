@@ -21,6 +21,8 @@
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/discretise.hpp"
+#include "mesh/size_field.hpp"
+#include "mesh/work.hpp"
 #include "mesh_fixtures.hpp"
 
 namespace {
@@ -302,4 +304,21 @@ TEST_CASE("mesh interior: the .edge file gives interior-segment edges their mark
     ++found;
   }
   CHECK(found == want.size());
+}
+
+TEST_CASE("mesh interior: the work estimate counts a region's finer bound (the Steiner point budget follows it)") {
+  const madd::test::InteriorFixture f = madd::test::interior_fixture();
+  const madd::MeshSizeOptions none;
+  const madd::detail::SizeField field(none);
+  const std::vector<double> work = madd::detail::expected_triangles(madd::discretise(f.decomposition, none), field);
+  REQUIRE(work.size() == 2);
+  // The loop's unit of area at 0.002: some 775 triangles in subdomain 1,
+  // where the size bound alone (none) expects a few along the pieces.
+  CHECK(work[1] > 500);
+  CHECK(work[1] > 5 * work[0]);
+  // And what it was refined to agrees within a factor of two.
+  const Mesh m = mesh_fixture(30, 0.0, 1);
+  const double made = m.subdomain_first_triangle[2] - m.subdomain_first_triangle[1];
+  CHECK(made > 0.5 * work[1]);
+  CHECK(made < 2.0 * work[1]);
 }
