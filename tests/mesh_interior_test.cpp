@@ -410,3 +410,28 @@ TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 
   }
   CHECK(decomposed >= 2);
 }
+
+TEST_CASE("mesh interior: a Y junction of interior segments with a 10-degree sector terminates; below the bound only inside that sector") {
+  madd::Pslg p;
+  p.first_index = 0;
+  const double a10 = 10.0 * std::numbers::pi / 180.0;
+  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 2}, {3.2, 2}, {2 + 1.2 * std::cos(a10), 2 + 1.2 * std::sin(a10)}, {1.2, 2.8}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {4, 6, 2}, {4, 7, 2}};
+  madd::validate(p);
+  for (const double q : {28.0, 32.0}) {
+    CAPTURE(q);
+    const Mesh m = madd::mesh(p, madd::test::options_for(1, q, 0.0));
+    CHECK(m.shortfall.total() == m.shortfall.input_angle);
+    CHECK(m.shortfall.total() > 0);
+    CHECK(m.triangles.size() < 20000);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (smallest_angle(m, t) >= q - 1e-9) continue;
+      const auto& c = m.triangles[t];
+      const Point g = madd::triangle_centroid(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
+      const double direction = std::atan2(g.y - 2, g.x - 2);
+      CHECK(direction > 0);
+      CHECK(direction < a10);
+      CHECK(madd::distance(g, {2, 2}) < 1.2);
+    }
+  }
+}
