@@ -435,3 +435,26 @@ TEST_CASE("mesh interior: a Y junction of interior segments with a 10-degree sec
     }
   }
 }
+
+TEST_CASE("mesh interior: an interior segment leaving the boundary at 0.3 degrees terminates") {
+  madd::Pslg p;
+  p.first_index = 0;
+  const double tiny = 0.3 * std::numbers::pi / 180.0;
+  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0}, {2 + 1.5 * std::cos(tiny), 1.5 * std::sin(tiny)}};
+  p.segments = {{0, 4, 1}, {4, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}};
+  madd::validate(p);
+  for (const double q : {25.0, 30.0, 33.0}) {
+    CAPTURE(q);
+    const Mesh m = madd::mesh(p, madd::test::options_for(1, q, 0.0));
+    CHECK(m.shortfall.total() == m.shortfall.input_angle);
+    CHECK(m.triangles.size() < 20000);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (smallest_angle(m, t) >= q - 1e-9) continue;
+      for (const std::uint32_t v : m.triangles[t]) {
+        const Point x = m.points[v];
+        CHECK(x.x >= 2 - 1e-12);  // inside the wedge between y = 0 and the segment
+        CHECK(x.y <= (x.x - 2) * std::tan(tiny) + 1e-12);
+      }
+    }
+  }
+}

@@ -250,6 +250,9 @@ Reason Refiner::input_angle_rule(std::uint32_t t, const TriangleShape& s) const 
   };
   std::uint32_t xa = no_index, xb = no_index, ya = no_index, yb = no_index;
   if (!corner_of(x, xa, xb) || !corner_of(y, ya, yb)) return Reason::none;
+  // On one segment, x and y are no two sides of a corner (a short edge along
+  // one arm, far out, is an ordinary edge).
+  if (m_.vertex_segment(x) == m_.vertex_segment(y)) return Reason::none;
   // x and y must lie on the two arms of the sharp sector (the angle x w y
   // below 60 degrees): where three or more segments meet at w, two pieces
   // at a wide angle there are no sharp corner.
