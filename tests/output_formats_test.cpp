@@ -4,7 +4,9 @@
 // `gmsh -2` run whose mesh must be conforming across every separator.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/output_formats.hpp"
 #include "madd/poly_io.hpp"
+#include "interior_fixtures.hpp"
 #include "output_formats_test_support.hpp"
 
 namespace {
@@ -75,7 +78,9 @@ void check_geo(const Decomposition& d) {
       ++uses[static_cast<std::size_t>(std::abs(loop[k]) - 1)];
     }
   }
-  for (std::uint32_t j = 0; j < d.segments.size(); ++j) CHECK(uses[j] == (d.is_separator(j) ? 2 : 1));
+  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    CHECK(uses[j] == (d.is_separator(j) ? 2 : owner[j] != no_index ? 0 : 1));  // interior pieces are in no loop
   // Surface k+1 holds subdomain k's rings in order, and is its physical group.
   std::size_t next_loop = 1;
   for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
@@ -83,11 +88,21 @@ void check_geo(const Decomposition& d) {
     for (const std::int64_t l : g.surfaces[k]) CHECK(l == static_cast<std::int64_t>(next_loop++));
     CHECK(g.physical_surfaces.at(static_cast<std::int64_t>(k) + 1) == "subdomain_" + std::to_string(k));
   }
-  // Physical Curves: one per boundary marker, holding exactly its pieces.
+  // Physical Curves: one per boundary marker and one per interior marker, holding exactly their pieces.
   std::map<std::string, std::multiset<std::int64_t>> expected;
   for (std::uint32_t j = 0; j < d.segments.size(); ++j)
-    if (!d.is_separator(j)) expected["boundary_" + std::to_string(d.segments[j].marker)].insert(j + 1);
+    if (!d.is_separator(j))
+      expected[(owner[j] == no_index ? "boundary_" : "interior_") + std::to_string(d.segments[j].marker)].insert(j + 1);
   CHECK(g.physical_curves == expected);
+  // Interior segments and isolated points are embedded in their subdomain's surface, and only there.
+  std::map<std::int64_t, std::vector<std::int64_t>> lines_in, points_in;
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    const auto tag = static_cast<std::int64_t>(k) + 1;
+    for (const std::uint32_t j : d.subdomains[k].interior_segments) lines_in[tag].push_back(std::int64_t{j} + 1);
+    for (const std::uint32_t p : d.subdomains[k].interior_points) points_in[tag].push_back(std::int64_t{p} + 1);
+  }
+  CHECK(g.embedded_lines == lines_in);
+  CHECK(g.embedded_points == points_in);
 }
 
 TEST_SUITE("output_formats") {
@@ -154,16 +169,34 @@ TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
     const VtkPolyData v = parse_vtk(format_vtk(*d));
     REQUIRE(v.points.size() == d->points.size());
     for (std::size_t i = 0; i < v.points.size(); ++i) CHECK(v.points[i] == d->points[i]);
-    REQUIRE(v.subdomain.size() == v.cells.size());
-    REQUIRE(v.area.size() == v.cells.size());
-    REQUIRE(v.weight.size() == v.cells.size());
+    CHECK(v.vertices.empty());  // no isolated points here
+    // Every segment is one line cell, in order, with its kind, marker and subdomain.
+    REQUIRE(v.lines.size() == d->segments.size());
+    const std::size_t first_triangle = v.lines.size();
+    REQUIRE(v.subdomain.size() == first_triangle + v.cells.size());
+    REQUIRE(v.area.size() == v.subdomain.size());
+    REQUIRE(v.weight.size() == v.subdomain.size());
+    std::vector<long> ring_owner(d->segments.size(), -1);
+    for (std::size_t k = 0; k < d->subdomains.size(); ++k)
+      for (const auto& ring : d->subdomains[k].ring_segments)
+        for (const std::uint32_t j : ring)
+          if (!d->is_separator(j)) ring_owner[j] = static_cast<long>(k);
+    for (std::uint32_t j = 0; j < d->segments.size(); ++j) {
+      CHECK(v.lines[j] == std::pair{d->segments[j].a, d->segments[j].b});
+      CHECK(v.kind[j] == (d->is_separator(j) ? 2 : 1));
+      CHECK(v.marker[j] == d->segments[j].marker);
+      CHECK(v.subdomain[j] == ring_owner[j]);
+    }
     std::vector<double> covered(d->subdomains.size(), 0.0);
     for (std::size_t c = 0; c < v.cells.size(); ++c) {
+      const std::size_t cell = first_triangle + c;
       REQUIRE(v.cells[c].size() == 3);
-      const auto k = static_cast<std::size_t>(v.subdomain[c]);
+      CHECK(v.kind[cell] == 0);
+      CHECK(v.marker[cell] == 0);
+      const auto k = static_cast<std::size_t>(v.subdomain[cell]);
       REQUIRE(k < d->subdomains.size());
-      CHECK(v.area[c] == d->subdomains[k].area);
-      CHECK(v.weight[c] == d->subdomains[k].weight);
+      CHECK(v.area[cell] == d->subdomains[k].area);
+      CHECK(v.weight[cell] == d->subdomains[k].weight);
       const double a = signed_area(v.points[v.cells[c][0]], v.points[v.cells[c][1]], v.points[v.cells[c][2]]);
       CHECK(a > 0);
       covered[k] += a;
@@ -173,6 +206,92 @@ TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
   }
 }
 
+TEST_CASE("interior output: geo embeds interior segments and isolated points, grouped by marker") {
+  const Decomposition d = interior_square().decomposition;
+  check_geo(d);
+  const GeoModel g = parse_geo(format_geo(d));
+  CHECK(g.embedded_lines.at(1) == std::vector<std::int64_t>{8, 9, 10, 11});  // the loop, in subdomain 0
+  CHECK(g.embedded_lines.at(2) == std::vector<std::int64_t>{12});            // the dangling segment
+  CHECK(g.embedded_points.at(2) == std::vector<std::int64_t>{11});           // the isolated point
+  CHECK(g.physical_curves.at("interior_7").size() == 4);
+  CHECK(g.physical_curves.at("interior_1").size() == 1);
+  CHECK(g.physical_curves.count("boundary_7") == 0);
+  // The isolated point's size is its subdomain's shortest segment (the dangling one, 0.3).
+  CHECK(g.points.size() == d.points.size());
+  const std::string text = format_geo(d);
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "Point(11) = {0.75, 0.25, 0, %.17g};", distance(d.points[8], d.points[9]));
+  CHECK(text.find(expected) != std::string::npos);
+}
+
+TEST_CASE("interior output: vtk has the isolated point as a vertex cell, interior pieces as lines") {
+  const Decomposition d = interior_square().decomposition;
+  const VtkPolyData v = parse_vtk(format_vtk(d));
+  REQUIRE(v.vertices == std::vector<std::uint32_t>{10});
+  REQUIRE(v.lines.size() == d.segments.size());
+  const std::size_t lines = 1, triangles = 1 + d.segments.size();
+  CHECK(v.kind[0] == 4);
+  CHECK(v.subdomain[0] == 1);
+  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
+    const long expected_kind = d.is_separator(j) ? 2 : owner[j] != no_index ? 3 : 1;
+    CHECK(v.kind[lines + j] == expected_kind);
+    CHECK(v.marker[lines + j] == d.segments[j].marker);
+    if (owner[j] != no_index) CHECK(v.subdomain[lines + j] == static_cast<long>(owner[j]));
+  }
+  // The triangles of a subdomain cover it and have its interior pieces as edges
+  // and its isolated point as a vertex.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  std::set<std::uint32_t> corners;
+  std::vector<double> covered(2, 0.0);
+  for (std::size_t c = 0; c < v.cells.size(); ++c) {
+    const auto k = static_cast<std::size_t>(v.subdomain[triangles + c]);
+    covered.at(k) += signed_area(v.points[v.cells[c][0]], v.points[v.cells[c][1]], v.points[v.cells[c][2]]);
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = v.cells[c][i], b = v.cells[c][(i + 1) % 3];
+      edges.insert({std::min(a, b), std::max(a, b)});
+      corners.insert(a);
+    }
+  }
+  for (const double a : covered) CHECK(a == doctest::Approx(0.5));
+  for (std::uint32_t j = 7; j < d.segments.size(); ++j)
+    CHECK(edges.count(std::minmax(d.segments[j].a, d.segments[j].b)) == 1);
+  CHECK(corners.count(10) == 1);
+}
+
+TEST_CASE("interior output: geojson has a LineString per interior piece and a Point per isolated point") {
+  const Decomposition d = interior_square().decomposition;
+  const Json root = parse_json(format_geojson(d));
+  const auto& features = root.at("features").items;
+  REQUIRE(features.size() == 2 + 5 + 1);
+  for (std::size_t k = 0; k < 2; ++k) CHECK(features[k].at("geometry").at("type").text == "Polygon");
+  std::size_t lines = 0;
+  for (std::size_t i = 2; i < features.size(); ++i) {
+    const Json& f = features[i];
+    const auto k = static_cast<std::size_t>(f.at("properties").at("subdomain").number);
+    REQUIRE(k < d.subdomains.size());
+    const Json& geometry = f.at("geometry");
+    if (geometry.at("type").text == "LineString") {
+      ++lines;
+      const auto j = static_cast<std::uint32_t>(f.at("properties").at("segment").number) - 1;
+      const auto& sub = d.subdomains[k].interior_segments;
+      CHECK(std::find(sub.begin(), sub.end(), j) != sub.end());
+      CHECK(f.at("properties").at("marker").number == d.segments[j].marker);
+      const auto& at = geometry.at("coordinates").items;
+      REQUIRE(at.size() == 2);
+      CHECK(Point{at[0].items[0].number, at[0].items[1].number} == d.points[d.segments[j].a]);
+      CHECK(Point{at[1].items[0].number, at[1].items[1].number} == d.points[d.segments[j].b]);
+    } else {
+      REQUIRE(geometry.at("type").text == "Point");
+      CHECK(k == 1);
+      CHECK(f.at("properties").at("point").number == 11);
+      const auto& at = geometry.at("coordinates").items;
+      CHECK(Point{at[0].number, at[1].number} == d.points[10]);
+    }
+  }
+  CHECK(lines == 5);
+}
+
 TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
   if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
     MESSAGE("skipped: gmsh is not installed (apt-get install gmsh to run this check)");
@@ -180,7 +299,8 @@ TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
   }
   const fs::path dir = fs::temp_directory_path() / ("madd-geo-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  for (const Decomposition* d : {&key7(), &marked_square()}) {
+  const Decomposition interior = interior_square().decomposition;
+  for (const Decomposition* d : {&key7(), &marked_square(), &interior}) {
     const fs::path geo = dir / "d.geo";
     const fs::path msh = dir / "d.msh";
     // A size well below the separators' lengths, so separators get nodes inside them too.
@@ -196,6 +316,7 @@ TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
     std::stringstream text;
     text << in.rdbuf();
     check_gmsh_mesh(*d, parse_msh22(text.str()));
+    check_gmsh_embedded(*d, parse_msh22(text.str()));
   }
   std::error_code ignored;
   fs::remove_all(dir, ignored);

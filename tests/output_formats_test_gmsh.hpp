@@ -138,4 +138,40 @@ inline void check_gmsh_mesh(const Decomposition& d, const Msh& m) {
   }
 }
 
+// gmsh honoured "Line{...} In Surface" and "Point{...} In Surface": the mesh
+// nodes on each interior segment, in order along it, are joined by triangle
+// edges, and each isolated point is a triangle's node.
+inline void check_gmsh_embedded(const Decomposition& d, const Msh& m) {
+  double span = 0;
+  for (const Point& p : d.points) span = std::max({span, std::abs(p.x), std::abs(p.y)});
+  const double tol = 1e-9 * span;
+  std::set<std::pair<long, long>> edges;
+  std::set<long> corners;
+  for (const MshElement& e : m.elements) {
+    if (e.type != 2) continue;
+    for (int i = 0; i < 3; ++i) {
+      const long u = e.nodes[i], v = e.nodes[(i + 1) % 3];
+      edges.insert({std::min(u, v), std::max(u, v)});
+      corners.insert(u);
+    }
+  }
+  for (const Subdomain& sub : d.subdomains) {
+    for (const std::uint32_t j : sub.interior_segments) {
+      const Point a = d.points[d.segments[j].a], b = d.points[d.segments[j].b];
+      std::vector<std::pair<double, long>> along;
+      for (const auto& [id, p] : m.nodes)
+        if (corners.count(id) && on_segment(p, a, b, tol)) along.push_back({dot(p - a, b - a), id});
+      std::sort(along.begin(), along.end());
+      REQUIRE(along.size() >= 2);
+      for (std::size_t i = 0; i + 1 < along.size(); ++i)
+        CHECK(edges.count({std::min(along[i].second, along[i + 1].second), std::max(along[i].second, along[i + 1].second)}) == 1);
+    }
+    for (const std::uint32_t p : sub.interior_points) {
+      bool found = false;
+      for (const auto& [id, q] : m.nodes) found = found || (corners.count(id) && q == d.points[p]);
+      CHECK(found);
+    }
+  }
+}
+
 } // namespace madd::test

@@ -65,6 +65,8 @@ struct GeoModel {
   std::vector<std::vector<std::int64_t>> surfaces;             // Curve Loop ids
   std::map<std::int64_t, std::string> physical_surfaces;       // tag -> name
   std::map<std::string, std::multiset<std::int64_t>> physical_curves;  // name -> Line ids
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_lines;   // surface -> "Line{...} In Surface"
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_points;  // surface -> "Point{...} In Surface"
 };
 
 inline std::vector<std::string> split_commas(const std::string& s) {
@@ -72,6 +74,29 @@ inline std::vector<std::string> split_commas(const std::string& s) {
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');) out.push_back(trim(item));
   return out;
+}
+
+// The ids of "{a, b, ...}" (no text around the braces).
+inline std::vector<std::int64_t> brace_ids(const std::string& s) {
+  if (s.size() < 2 || s.front() != '{' || s.back() != '}') throw std::runtime_error("bad list: " + s);
+  std::vector<std::int64_t> ids;
+  for (const std::string& v : split_commas(s.substr(1, s.size() - 2))) ids.push_back(static_cast<std::int64_t>(to_number(v)));
+  return ids;
+}
+
+// "Line{...} In Surface{k}" or "Point{...} In Surface{k}": true when st is one.
+inline bool parse_embedded(const std::string& st, GeoModel& g) {
+  const auto in = st.find(" In Surface");
+  if (in == std::string::npos) return false;
+  const std::string head = trim(st.substr(0, in)), tail = trim(st.substr(in + 11));
+  const bool line = head.rfind("Line", 0) == 0;
+  if (!line && head.rfind("Point", 0) != 0) throw std::runtime_error("bad embedding: " + st);
+  const std::vector<std::int64_t> surface = brace_ids(tail);
+  if (surface.size() != 1) throw std::runtime_error("bad embedding: " + st);
+  auto& list = (line ? g.embedded_lines : g.embedded_points)[surface[0]];
+  if (!list.empty()) throw std::runtime_error("embedded twice: " + st);
+  list = brace_ids(trim(head.substr(line ? 4 : 5)));
+  return true;
 }
 
 inline GeoModel parse_geo(const std::string& text) {
@@ -82,7 +107,7 @@ inline GeoModel parse_geo(const std::string& text) {
   std::stringstream statements(code);
   for (std::string st; std::getline(statements, st, ';');) {
     st = trim(st);
-    if (st.empty()) continue;
+    if (st.empty() || parse_embedded(st, g)) continue;
     const auto open = st.find('('), close = st.find(')'), lb = st.find('{'), rb = st.find('}');
     if (open == std::string::npos || close < open || lb < close || rb < lb || rb + 1 != st.size())
       throw std::runtime_error("bad statement: " + st);
@@ -245,16 +270,40 @@ private:
 inline Json parse_json(const std::string& text) { return JsonParser(text).document(); }
 
 // ---- legacy VTK POLYDATA as format_vtk writes it ----
+// Cells in POLYDATA's order: vertices, lines, polygons; the cell data of all.
 struct VtkPolyData {
   std::vector<Point> points;
-  std::vector<std::vector<std::uint32_t>> cells;
-  std::vector<long> subdomain;
+  std::vector<std::uint32_t> vertices;                       // VERTICES (one point each)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;  // LINES (two points each)
+  std::vector<std::vector<std::uint32_t>> cells;             // POLYGONS
+  std::vector<long> subdomain;                               // per cell, vertices first
   std::vector<double> area, weight;
+  std::vector<long> kind, marker;
 };
 
 inline void expect_word(std::istream& in, const std::string& word) {
   std::string w;
   if (!(in >> w) || w != word) throw std::runtime_error("VTK: expected " + word + ", got " + w);
+}
+
+// One cell section: "<keyword> n size", then n cells of `arity` points
+// (0: any), whose integers must add up to size.
+inline std::vector<std::vector<std::uint32_t>> read_vtk_cells(std::istream& in, std::size_t points, std::size_t arity) {
+  std::size_t n = 0, size = 0, integers = 0;
+  in >> n >> size;
+  std::vector<std::vector<std::uint32_t>> out;
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t k = 0;
+    in >> k;
+    if (!in || (arity != 0 && k != arity)) throw std::runtime_error("VTK: bad cell size");
+    std::vector<std::uint32_t> cell(k);
+    for (auto& p : cell)
+      if (!(in >> p) || p >= points) throw std::runtime_error("VTK: bad cell");
+    integers += k + 1;
+    out.push_back(cell);
+  }
+  if (integers != size) throw std::runtime_error("VTK: section size does not match");
+  return out;
 }
 
 inline VtkPolyData parse_vtk(const std::string& text) {
@@ -265,7 +314,7 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   std::getline(in, line);
   if (line.empty() || line.size() > 255) throw std::runtime_error("VTK: bad title");
   VtkPolyData v;
-  std::size_t n = 0, cells = 0, size = 0;
+  std::size_t n = 0;
   expect_word(in, "ASCII");
   expect_word(in, "DATASET");
   expect_word(in, "POLYDATA");
@@ -278,19 +327,17 @@ inline VtkPolyData parse_vtk(const std::string& text) {
     if (!in || z != 0) throw std::runtime_error("VTK: bad point");
     v.points.push_back({x, y});
   }
-  expect_word(in, "POLYGONS");
-  in >> cells >> size;
-  std::size_t integers = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    std::size_t k = 0;
-    in >> k;
-    std::vector<std::uint32_t> cell(k);
-    for (auto& p : cell)
-      if (!(in >> p) || p >= n) throw std::runtime_error("VTK: bad cell");
-    integers += k + 1;
-    v.cells.push_back(cell);
+  std::string word;
+  in >> word;
+  if (word == "VERTICES") {
+    for (const auto& c : read_vtk_cells(in, n, 1)) v.vertices.push_back(c[0]);
+    in >> word;
   }
-  if (integers != size) throw std::runtime_error("VTK: POLYGONS size does not match");
+  if (word != "LINES") throw std::runtime_error("VTK: expected LINES, got " + word);
+  for (const auto& c : read_vtk_cells(in, n, 2)) v.lines.push_back({c[0], c[1]});
+  expect_word(in, "POLYGONS");
+  v.cells = read_vtk_cells(in, n, 0);
+  const std::size_t cells = v.vertices.size() + v.lines.size() + v.cells.size();
   expect_word(in, "CELL_DATA");
   std::size_t data = 0;
   in >> data;
@@ -302,22 +349,26 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   expect_word(in, "LOOKUP_TABLE");
   expect_word(in, "default");
   for (std::size_t c = 0; c < cells; ++c) {
-    long k = -1;
+    long k = -2;
     if (!(in >> k)) throw std::runtime_error("VTK: short subdomain");
     v.subdomain.push_back(k);
   }
   expect_word(in, "FIELD");
   expect_word(in, "FieldData");
-  expect_word(in, "2");
-  for (const std::string name : {"area", "weight"}) {
+  expect_word(in, "4");
+  for (const std::string name : {"area", "weight", "kind", "marker"}) {
+    const bool real = name == "area" || name == "weight";
     expect_word(in, name);
     expect_word(in, "1");
     expect_word(in, std::to_string(cells));
-    expect_word(in, "double");
+    expect_word(in, real ? "double" : "int");
     for (std::size_t c = 0; c < cells; ++c) {
       double x = 0;
-      if (!(in >> x)) throw std::runtime_error("VTK: short " + name);
-      (name == "area" ? v.area : v.weight).push_back(x);
+      long i = 0;
+      if (!(real ? static_cast<bool>(in >> x) : static_cast<bool>(in >> i))) throw std::runtime_error("VTK: short " + name);
+      if (name == "area") v.area.push_back(x);
+      else if (name == "weight") v.weight.push_back(x);
+      else (name == "kind" ? v.kind : v.marker).push_back(i);
     }
   }
   std::string rest;

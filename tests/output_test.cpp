@@ -16,6 +16,7 @@
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
+#include "interior_fixtures.hpp"
 #include "metrics_fixtures.hpp"
 #include "scratch_files.hpp"
 
@@ -83,6 +84,26 @@ Decomposition parse_subdomain_file(const std::string& text) {
     for (auto& h : d.subdomains[k].hole_points) in >> h.x >> h.y;
   }
   REQUIRE(!in.fail());
+  // Section 5, interior constraints, is there only when some subdomain has some.
+  if (in >> n) {
+    REQUIRE(n == d.subdomains.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      in >> k;
+      REQUIRE(k == i);
+      for (auto* ids : {&d.subdomains[k].interior_segments, &d.subdomains[k].interior_points}) {
+        std::size_t m = 0;
+        in >> m;
+        ids->resize(m);
+        for (auto& id : *ids) {
+          in >> id;
+          --id;
+        }
+      }
+    }
+    REQUIRE(!in.fail());
+    std::string rest;
+    REQUIRE(!(in >> rest));
+  }
   return d;
 }
 
@@ -214,6 +235,21 @@ TEST_CASE("output 3: the subdomain file parses back to the same decomposition") 
       CHECK(back.subdomains[k].weight == d.subdomains[k].weight);
       CHECK(back.subdomains[k].hole_points == d.subdomains[k].hole_points);
     }
+  }
+}
+
+TEST_CASE("output 3: interior segments and isolated points in section 5, only when there are some") {
+  for (const test::Fixture& f : test::all_fixtures())
+    CHECK(format_subdomain_file(f.decomposition).find("section 5") == std::string::npos);
+  const Decomposition d = test::interior_square().decomposition;
+  const Decomposition back = parse_subdomain_file(format_subdomain_file(d));
+  CHECK(back.points == d.points);
+  CHECK(back.segments == d.segments);
+  REQUIRE(back.subdomains.size() == d.subdomains.size());
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    CHECK(back.subdomains[k].ring_segments == d.subdomains[k].ring_segments);
+    CHECK(back.subdomains[k].interior_segments == d.subdomains[k].interior_segments);
+    CHECK(back.subdomains[k].interior_points == d.subdomains[k].interior_points);
   }
 }
 

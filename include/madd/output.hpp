@@ -14,14 +14,21 @@
 namespace madd {
 
 // Output 1: the whole subdivision as one Triangle .poly (1-based ids, %.17g):
-// every point, every segment (boundary pieces keep their marker, separators 0),
-// the original holes, and one region per subdomain at its interior_point with
-// attribute = subdomain number and max area -1, so `triangle -pA` labels triangles.
+// every point, every segment (boundary and interior pieces keep their marker,
+// separators 0), the original holes, and one region per subdomain at its
+// interior_point with attribute = subdomain number and max area -1, so
+// `triangle -pA` labels triangles. A subdomain that interior segments cut
+// into several faces gets a region in each; when the decomposition has the
+// input's regions, each face gets the attribute and max area of the input
+// region covering it instead, and a comment naming its subdomain
+// (docs/formats.md, "Interior segments in the outputs").
 std::string format_decomposition_poly(const Decomposition& decomposition, std::string_view header_comment = {});
 
 // Output 2, one file: subdomain `k` as a standalone .poly (1-based ids, its
-// ring vertices and segments with their global markers, one hole point per
-// hole ring). Shared points are written with the same %.17g text everywhere.
+// ring vertices and segments with their global markers, then its interior
+// segments and isolated points, one hole point per hole ring, and, when the
+// decomposition has the input's regions, one region per face as output 1).
+// Shared points are written with the same %.17g text everywhere.
 // Precondition: k < decomposition.subdomains.size().
 std::string format_subdomain_poly(const Decomposition& decomposition, std::uint32_t k);
 
@@ -40,7 +47,9 @@ void add_split(OutputSet& outputs, const Decomposition& decomposition, const std
 
 // Output 3: the paper's subdomain file (Sec. 6): points, segments with
 // markers, subdomains (number, area, weight, bounding segment ids ring by
-// ring), and each subdomain's hole points. Layout in docs/formats.md.
+// ring), and each subdomain's hole points; then, only when there are some, a
+// fifth section with each subdomain's interior segments and isolated points.
+// Layout in docs/formats.md.
 std::string format_subdomain_file(const Decomposition& decomposition);
 
 struct SvgOptions {
@@ -53,8 +62,8 @@ struct SvgOptions {
 void check_options(const SvgOptions& options);
 
 // Output 4: an SVG picture: one <path> per subdomain (fill-rule evenodd, so
-// holes stay empty), the original boundary thick, separators thin, y pointing
-// up as in the input. Size is linear in the decomposition (compact numbers).
+// holes stay empty), the original boundary thick, separators thin, interior
+// segments dashed and isolated points as dots, y pointing up as in the input. Size is linear in the decomposition (compact numbers).
 std::string format_svg(const Decomposition& decomposition, const SvgOptions& options = {});
 
 // Output 5: every figure of `m` as one JSON object (NaN figures as null).

@@ -20,23 +20,33 @@ struct GeoOptions {
 // Point(i+1) per point, Line(j+1) per segment (each written once, so
 // neighbouring surfaces share it and `gmsh -2` meshes conformingly), one Curve
 // Loop per ring, Plane Surface(k+1) per subdomain k (outer loop, then holes),
-// Physical Surface("subdomain_<k>", k+1), and Physical Curve("boundary_<m>")
-// per boundary marker m (tag m when m > 0, else chosen by gmsh).
+// its interior segments and isolated points embedded in it (Line{...} In
+// Surface, Point{...} In Surface), Physical Surface("subdomain_<k>", k+1),
+// Physical Curve("boundary_<m>") per boundary marker m (tag m when m > 0,
+// else chosen by gmsh) and Physical Curve("interior_<m>") per interior
+// segment marker (tag chosen by gmsh).
 std::string format_geo(const Decomposition& decomposition, const GeoOptions& options = {});
 
 // A legacy VTK (version 3.0, ASCII) POLYDATA file: every point, then the
-// subdomains as cells. VTK polygons cannot have holes and concave ones are
-// rendered by guesswork, so each subdomain is written as the triangles of its
-// constrained Delaunay triangulation (madd::triangulate over its rings; no
-// new points), each with its CELL_DATA: SCALARS subdomain (int), and FIELD
-// arrays area and weight (FIELD, so VTK's reader loads all three).
+// isolated points as VERTICES, every segment as LINES, and the subdomains as
+// POLYGONS. VTK polygons cannot have holes and concave ones are rendered by
+// guesswork, so each subdomain is written as the triangles of its
+// constrained Delaunay triangulation (madd::triangulate over its rings and
+// interior segments; no new points). CELL_DATA of every cell: SCALARS
+// subdomain (int; -1 for a separator), and FIELD arrays area and weight
+// (its subdomain's; FIELD, so VTK's reader loads them all), kind (0 triangle,
+// 1 boundary piece, 2 separator, 3 interior segment, 4 isolated point) and
+// marker (the segment's, else 0).
 // Triangles of neighbouring subdomains share the points of their separator.
 // Throws what madd::triangulate throws if a subdomain is not a valid polygon.
 std::string format_vtk(const Decomposition& decomposition);
 
 // An RFC 7946 GeoJSON FeatureCollection: one Polygon Feature per subdomain,
 // outer ring counter-clockwise then hole rings clockwise, each ring closed by
-// repeating its first position; properties {"id": k, "area", "weight"}.
+// repeating its first position; properties {"id": k, "area", "weight"}. Then
+// one LineString per interior segment piece, properties {"subdomain",
+// "segment" (1-based id in output 1), "marker"}, and one Point per isolated
+// point, properties {"subdomain", "point" (1-based id in output 1)}.
 // Coordinates are the plane's x and y, in the shortest text that reads back
 // exactly (std::to_chars), not longitude and latitude.
 std::string format_geojson(const Decomposition& decomposition);

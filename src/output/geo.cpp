@@ -16,7 +16,9 @@ namespace madd {
 namespace {
 
 // The size written at each point: the fixed size, or the shortest segment at
-// the point (points on no segment get the shortest segment of all).
+// the point. An isolated point gets the shortest segment of its subdomain
+// (the resolution there; the shortest of all would refine far from it), a
+// point on no segment and in no subdomain the shortest of all.
 std::vector<double> point_sizes(const Decomposition& d, double fixed) {
   if (fixed > 0.0) return std::vector<double>(d.points.size(), fixed);
   constexpr double unset = std::numeric_limits<double>::infinity();
@@ -29,6 +31,16 @@ std::vector<double> point_sizes(const Decomposition& d, double fixed) {
     shortest = std::min(shortest, len);
   }
   if (shortest == unset) shortest = 1.0;
+  for (const Subdomain& sub : d.subdomains) {
+    if (sub.interior_points.empty()) continue;
+    double local = unset;
+    for (const auto& ring : sub.ring_segments)
+      for (const std::uint32_t s : ring) local = std::min(local, distance(d.points[d.segments[s].a], d.points[d.segments[s].b]));
+    for (const std::uint32_t s : sub.interior_segments)
+      local = std::min(local, distance(d.points[d.segments[s].a], d.points[d.segments[s].b]));
+    for (const std::uint32_t p : sub.interior_points)
+      if (size[p] == unset) size[p] = local;
+  }
   for (double& v : size)
     if (v == unset) v = shortest;
   return size;
@@ -81,6 +93,22 @@ void append_points_and_lines(std::string& out, const Decomposition& d, const Geo
   }
 }
 
+// "Line{...} In Surface{tag};" (or Point): gmsh meshes the surface with
+// these as edges (vertices) of its triangles, as Triangle keeps interior
+// segments and isolated vertices of a .poly.
+void append_embedded(std::string& out, const char* kind, const std::vector<std::uint32_t>& ids, std::int64_t tag) {
+  if (ids.empty()) return;
+  std::vector<std::int64_t> one_based(ids.begin(), ids.end());
+  for (std::int64_t& id : one_based) ++id;
+  out += kind;
+  append_id_list(out, one_based);
+  out.pop_back();  // the list's "};\n" becomes "} In Surface{tag};\n"
+  out.pop_back();
+  out += " In Surface{";
+  detail::append_int(out, tag);
+  out += "};\n";
+}
+
 // One Curve Loop per ring (numbered on from 1 over all subdomains) and one
 // Plane Surface plus its Physical Surface per subdomain.
 void append_surfaces(std::string& out, const Decomposition& d) {
@@ -100,6 +128,8 @@ void append_surfaces(std::string& out, const Decomposition& d) {
     detail::append_int(out, tag);
     out += ") = ";
     append_id_list(out, loops);
+    append_embedded(out, "Line", s.interior_segments, tag);
+    append_embedded(out, "Point", s.interior_points, tag);
     out += "Physical Surface(\"subdomain_";
     detail::append_int(out, static_cast<std::int64_t>(k));
     out += "\", ";
@@ -110,27 +140,36 @@ void append_surfaces(std::string& out, const Decomposition& d) {
   }
 }
 
-// Physical Curves of the original boundary, one per marker. gmsh needs
-// positive tags, so a marker m > 0 is tag m; the others are left to gmsh,
-// which numbers them after every explicit tag written before them.
-void append_boundary_groups(std::string& out, const Decomposition& d) {
-  std::map<int, std::vector<std::int64_t>> by_marker;
-  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
-    if (!d.is_separator(j)) by_marker[d.segments[j].marker].push_back(static_cast<std::int64_t>(j) + 1);
-  for (const bool positive : {true, false}) {
-    for (const auto& [marker, lines] : by_marker) {
-      if ((marker > 0) != positive) continue;
-      out += "Physical Curve(\"boundary_";
-      detail::append_int(out, marker);
-      out += '"';
-      if (positive) {
-        out += ", ";
-        detail::append_int(out, marker);
-      }
-      out += ") = ";
-      append_id_list(out, lines);
-    }
+// Physical Curves of the input's segments, one per marker and kind: the
+// boundary pieces as "boundary_<m>", the interior pieces as "interior_<m>".
+// gmsh needs positive tags, so a boundary marker m > 0 is tag m; the others,
+// and every interior group (whose markers may repeat the boundary's), are
+// left to gmsh, which numbers them after every explicit tag written before them.
+void append_curve_groups(std::string& out, const Decomposition& d) {
+  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
+  std::map<int, std::vector<std::int64_t>> boundary, interior;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
+    if (d.is_separator(j)) continue;
+    (owner[j] == no_index ? boundary : interior)[d.segments[j].marker].push_back(static_cast<std::int64_t>(j) + 1);
   }
+  const auto append_group = [&](const char* kind, int marker, const std::vector<std::int64_t>& lines, bool tagged) {
+    out += "Physical Curve(\"";
+    out += kind;
+    out += '_';
+    detail::append_int(out, marker);
+    out += '"';
+    if (tagged) {
+      out += ", ";
+      detail::append_int(out, marker);
+    }
+    out += ") = ";
+    append_id_list(out, lines);
+  };
+  for (const auto& [marker, lines] : boundary)
+    if (marker > 0) append_group("boundary", marker, lines, true);
+  for (const auto& [marker, lines] : boundary)
+    if (marker <= 0) append_group("boundary", marker, lines, false);
+  for (const auto& [marker, lines] : interior) append_group("interior", marker, lines, false);
 }
 
 } // namespace
@@ -140,9 +179,12 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
   detail::append_int(out, static_cast<std::int64_t>(decomposition.subdomains.size()));
   out += " subdomains; Plane Surface k+1 and Physical Surface \"subdomain_k\" (tag k+1) are subdomain k,\n"
          "// Physical Curve \"boundary_m\" holds the original boundary with marker m. Mesh: gmsh -2 FILE.geo\n";
+  if (std::any_of(decomposition.subdomains.begin(), decomposition.subdomains.end(),
+                  [](const Subdomain& s) { return !s.interior_segments.empty() || !s.interior_points.empty(); }))
+    out += "// Interior segments are Lines In Surface, in Physical Curve \"interior_m\" by marker; isolated points Points In Surface.\n";
   append_points_and_lines(out, decomposition, options);
   append_surfaces(out, decomposition);
-  append_boundary_groups(out, decomposition);
+  append_curve_groups(out, decomposition);
   return out;
 }
 

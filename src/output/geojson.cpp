@@ -35,6 +35,37 @@ void append_polygon(std::string& out, const Decomposition& d, const Subdomain& s
   out += "]}";
 }
 
+// The interior constraints after the polygons, so feature k is still
+// subdomain k: one LineString per interior piece (its id in output 1, its
+// marker, its subdomain), one Point per isolated point (its id in output 1).
+void append_interior_features(std::string& out, const Decomposition& d) {
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    const Subdomain& s = d.subdomains[k];
+    for (const std::uint32_t j : s.interior_segments) {
+      out += ",\n{\"type\":\"Feature\",\"properties\":{\"subdomain\":";
+      detail::append_int(out, static_cast<std::int64_t>(k));
+      out += ",\"segment\":";
+      detail::append_int(out, std::int64_t{j} + 1);
+      out += ",\"marker\":";
+      detail::append_int(out, d.segments[j].marker);
+      out += "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
+      append_position(out, d.points[d.segments[j].a]);
+      out += ',';
+      append_position(out, d.points[d.segments[j].b]);
+      out += "]}}";
+    }
+    for (const std::uint32_t p : s.interior_points) {
+      out += ",\n{\"type\":\"Feature\",\"properties\":{\"subdomain\":";
+      detail::append_int(out, static_cast<std::int64_t>(k));
+      out += ",\"point\":";
+      detail::append_int(out, std::int64_t{p} + 1);
+      out += "},\"geometry\":{\"type\":\"Point\",\"coordinates\":";
+      append_position(out, d.points[p]);
+      out += "}}";
+    }
+  }
+}
+
 } // namespace
 
 std::string format_geojson(const Decomposition& decomposition) {
@@ -52,6 +83,7 @@ std::string format_geojson(const Decomposition& decomposition) {
     append_polygon(out, decomposition, s);
     out += '}';
   }
+  append_interior_features(out, decomposition);
   out += "\n]}\n";
   return out;
 }

@@ -5,6 +5,8 @@
 
 #include "madd/output.hpp"
 #include "kernel/number_format.hpp"
+#include "output/faces.hpp"
+#include "output/subdomain_poly.hpp"
 
 namespace madd {
 
@@ -43,14 +45,63 @@ void append_holes(std::string& out, const std::vector<Point>& holes) {
   }
 }
 
+// The regions section of output 1 (only_subdomain == no_index) or of output 2
+// (the faces of that subdomain), as docs/formats.md, "Interior segments in the
+// outputs", describes: without input regions, output 1 labels every face with
+// its subdomain number and output 2 writes none; with them, every face gets
+// the attribute and area bound of the input region that covers it (0 and -1,
+// what Triangle gives a triangle no region reaches, where none does).
+void append_regions(std::string& out, const Decomposition& d, const std::vector<detail::DecompositionFace>& faces,
+                    std::uint32_t only_subdomain) {
+  const bool input_regions = !d.regions.empty();
+  if (!input_regions && only_subdomain != no_index) return;
+  std::vector<const detail::DecompositionFace*> chosen;
+  for (const detail::DecompositionFace& f : faces)
+    if (only_subdomain == no_index || f.subdomain == only_subdomain) chosen.push_back(&f);
+  if (input_regions) {
+    out += "# regions: the input region covering each part of the subdomain";
+    out += only_subdomain == no_index ? "s" : "";
+    out += " between interior segments (0, -1: none)\n";
+  } else if (chosen.size() == d.subdomains.size()) {
+    out += "# regions: one per subdomain, attribute = subdomain number, no area bound\n";
+  } else {
+    out += "# regions: one per part of a subdomain between its interior segments, attribute = subdomain number, no area bound\n";
+  }
+  append_int(out, static_cast<std::int64_t>(chosen.size()));
+  out += '\n';
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const detail::DecompositionFace& f = *chosen[i];
+    append_point_line(out, i + 1, f.point);
+    out += ' ';
+    if (!input_regions) {
+      append_int(out, f.subdomain);
+      out += " -1\n";
+      continue;
+    }
+    const Region none{f.point, 0.0, -1.0};
+    const Region& r = f.region == no_index ? none : d.regions[f.region];
+    append_g17(out, r.attribute);
+    out += ' ';
+    append_g17(out, r.max_area);
+    out += "  # subdomain ";
+    append_int(out, f.subdomain);
+    if (f.region != no_index) {
+      out += ", input region ";
+      append_int(out, std::int64_t{f.region} + 1);
+    }
+    out += '\n';
+  }
+}
+
 } // namespace
 
 std::string format_decomposition_poly(const Decomposition& d, std::string_view header_comment) {
   std::string out;
   out.reserve(64 * (d.points.size() + d.segments.size()) + 256);
   append_comment(out, header_comment);
-  out += "# madd decomposition: " + std::to_string(d.subdomains.size()) +
-         " subdomains; separators have marker 0; region attribute = subdomain number\n";
+  out += "# madd decomposition: " + std::to_string(d.subdomains.size()) + " subdomains; separators have marker 0; ";
+  out += d.regions.empty() ? "region attribute = subdomain number\n"
+                           : "regions carry the input's attributes and area bounds, each line names its subdomain\n";
   append_int(out, static_cast<std::int64_t>(d.points.size()));
   out += " 2 0 0\n";
   for (std::size_t p = 0; p < d.points.size(); ++p) {
@@ -71,30 +122,31 @@ std::string format_decomposition_poly(const Decomposition& d, std::string_view h
     out += '\n';
   }
   append_holes(out, d.holes);
-  out += "# regions: one per subdomain, attribute = subdomain number, no area bound\n";
-  append_int(out, static_cast<std::int64_t>(d.subdomains.size()));
-  out += '\n';
-  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
-    append_point_line(out, k + 1, d.subdomains[k].interior_point);
-    out += ' ';
-    append_int(out, static_cast<std::int64_t>(k));
-    out += " -1\n";
-  }
+  append_regions(out, d, detail::decomposition_faces(d), no_index);
   return out;
 }
 
-std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
+std::string detail::format_subdomain_poly(const Decomposition& d, std::uint32_t k,
+                                         const std::vector<DecompositionFace>& faces) {
   const Subdomain& sub = d.subdomains.at(k);
-  // Local 1-based ids in order of first appearance; a vertex shared by two
-  // rings (a hole touching the outer ring) is written once.
+  // Local 1-based ids in order of first appearance: ring vertices (a vertex
+  // shared by two rings, a hole touching the outer ring, is written once),
+  // then the other ends of interior segments, then the isolated points.
   std::unordered_map<std::uint32_t, std::uint32_t> local;
   std::vector<std::uint32_t> order;
-  std::size_t segment_count = 0;
+  const auto add = [&](std::uint32_t p) {
+    if (local.emplace(p, static_cast<std::uint32_t>(order.size() + 1)).second) order.push_back(p);
+  };
+  std::size_t segment_count = sub.interior_segments.size();
   for (const auto& ring : sub.rings) {
     segment_count += ring.size();
-    for (std::uint32_t p : ring)
-      if (local.emplace(p, static_cast<std::uint32_t>(order.size() + 1)).second) order.push_back(p);
+    for (std::uint32_t p : ring) add(p);
   }
+  for (const std::uint32_t s : sub.interior_segments) {
+    add(d.segments[s].a);
+    add(d.segments[s].b);
+  }
+  for (const std::uint32_t p : sub.interior_points) add(p);
   std::string out;
   out.reserve(64 * (order.size() + segment_count) + 256);
   out += "# madd subdomain " + std::to_string(k) + " of " + std::to_string(d.subdomains.size()) + ", area ";
@@ -102,6 +154,9 @@ std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
   out += ", weight ";
   append_g17(out, sub.weight);
   out += "\n# separators have marker 0\n";
+  if (!sub.interior_segments.empty() || !sub.interior_points.empty())
+    out += "# after the rings: " + std::to_string(sub.interior_segments.size()) + " interior segments, " +
+           std::to_string(sub.interior_points.size()) + " isolated points\n";
   append_int(out, static_cast<std::int64_t>(order.size()));
   out += " 2 0 0\n";
   for (std::size_t i = 0; i < order.size(); ++i) {
@@ -111,21 +166,32 @@ std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
   append_int(out, static_cast<std::int64_t>(segment_count));
   out += " 1\n";
   std::int64_t id = 0;
+  const auto append_segment = [&](std::uint32_t a, std::uint32_t b, int marker) {
+    append_int(out, ++id);
+    out += ' ';
+    append_int(out, local[a]);
+    out += ' ';
+    append_int(out, local[b]);
+    out += ' ';
+    append_int(out, marker);
+    out += '\n';
+  };
   for (std::size_t r = 0; r < sub.rings.size(); ++r) {
     const auto& ring = sub.rings[r];
-    for (std::size_t j = 0; j < ring.size(); ++j) {
-      append_int(out, ++id);
-      out += ' ';
-      append_int(out, local[ring[j]]);
-      out += ' ';
-      append_int(out, local[ring[(j + 1) % ring.size()]]);
-      out += ' ';
-      append_int(out, d.segments[sub.ring_segments[r][j]].marker);
-      out += '\n';
-    }
+    for (std::size_t j = 0; j < ring.size(); ++j)
+      append_segment(ring[j], ring[(j + 1) % ring.size()], d.segments[sub.ring_segments[r][j]].marker);
   }
+  for (const std::uint32_t s : sub.interior_segments) append_segment(d.segments[s].a, d.segments[s].b, d.segments[s].marker);
   append_holes(out, sub.hole_points);
+  append_regions(out, d, faces, k);
   return out;
+}
+
+std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
+  (void)d.subdomains.at(k);
+  // Faces are only needed for the input's regions (none: no triangulation).
+  return detail::format_subdomain_poly(d, k, d.regions.empty() ? std::vector<detail::DecompositionFace>{}
+                                                               : detail::decomposition_faces(d));
 }
 
 std::string split_file_name(std::string_view stem, std::uint32_t k, std::uint32_t count) {

@@ -6,6 +6,8 @@
 
 #include "madd/atomic_write.hpp"
 #include "madd/output.hpp"
+#include "output/faces.hpp"
+#include "output/subdomain_poly.hpp"
 
 namespace madd {
 
@@ -27,7 +29,11 @@ void add_split(OutputSet& outputs, const Decomposition& d, const std::string& di
   const auto count = static_cast<std::uint32_t>(d.subdomains.size());
   std::vector<std::pair<std::string, std::string>> files;
   files.reserve(count);
-  for (std::uint32_t k = 0; k < count; ++k) files.emplace_back(split_file_name(stem, k, count), format_subdomain_poly(d, k));
+  // The faces (for the input's regions) once for all files.
+  const std::vector<detail::DecompositionFace> faces =
+      d.regions.empty() ? std::vector<detail::DecompositionFace>{} : detail::decomposition_faces(d);
+  for (std::uint32_t k = 0; k < count; ++k)
+    files.emplace_back(split_file_name(stem, k, count), detail::format_subdomain_poly(d, k, faces));
   outputs.add_directory(dir, std::move(files),
                         [stem = std::string(stem)](const std::string& name) { return is_split_name(name, stem); });
 }

@@ -1,6 +1,9 @@
 // Output 3: the paper's subdomain file (Sec. 6: "points, segments, subdomains
 // defined by segments, and a set of holes for each subdomain"). The exact
-// layout is documented in docs/formats.md.
+// layout is documented in docs/formats.md; section 5 (interior segments and
+// isolated points per subdomain) is written only when there are some.
+#include <algorithm>
+
 #include "madd/output.hpp"
 #include "kernel/number_format.hpp"
 
@@ -28,6 +31,33 @@ void append_subdomain_line(std::string& out, std::size_t k, const Subdomain& sub
     }
   }
   out += '\n';
+}
+
+// Section 5, only when some subdomain has interior constraints, so that the
+// file of a domain without any is the four sections readers already know:
+// per subdomain its interior segments (ids of section 2) and its isolated
+// points (ids of section 1).
+void append_interior_section(std::string& out, const Decomposition& d) {
+  const bool any = std::any_of(d.subdomains.begin(), d.subdomains.end(), [](const Subdomain& s) {
+    return !s.interior_segments.empty() || !s.interior_points.empty();
+  });
+  if (!any) return;
+  out += "# section 5: interior constraints per subdomain: number #segments segment ids #points point ids\n";
+  append_int(out, static_cast<std::int64_t>(d.subdomains.size()));
+  out += '\n';
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
+    const Subdomain& sub = d.subdomains[k];
+    append_int(out, static_cast<std::int64_t>(k));
+    for (const auto* ids : {&sub.interior_segments, &sub.interior_points}) {
+      out += "  ";
+      append_int(out, static_cast<std::int64_t>(ids->size()));
+      for (const std::uint32_t i : *ids) {
+        out += ' ';
+        append_int(out, std::int64_t{i} + 1);
+      }
+    }
+    out += '\n';
+  }
 }
 
 } // namespace
@@ -81,6 +111,7 @@ std::string format_subdomain_file(const Decomposition& d) {
     }
     out += '\n';
   }
+  append_interior_section(out, d);
   return out;
 }
 

@@ -126,6 +126,61 @@ void append_edges(std::string& boundary, std::string& separators, const Decompos
     }
 }
 
+// The interior segments as one path, a piece that starts where the last one
+// ended continuing its polyline (the pieces of an input polyline come in order).
+std::string interior_path(const Decomposition& d, const View& view) {
+  std::string out;
+  std::uint32_t end = no_index;
+  for (const Subdomain& sub : d.subdomains)
+    for (const std::uint32_t j : sub.interior_segments) {
+      const Segment& s = d.segments[j];
+      const bool forward = s.a == end, backward = !forward && s.b == end;
+      if (!forward && !backward) {
+        out += 'M';
+        append_xy(out, view, d.points[s.a]);
+        out += 'L';
+        end = s.a;
+      } else {
+        out += ' ';
+      }
+      end = end == s.a ? s.b : s.a;
+      append_xy(out, view, d.points[end]);
+    }
+  return out;
+}
+
+// Interior segments dashed in dark blue over the edges (a colour no fill
+// has: the fills are light), isolated points as dots of the same colour;
+// both sized like the boundary line, `thick`.
+void append_interior(std::string& out, const Decomposition& d, const View& view, double thick) {
+  const std::string path = interior_path(d, view);
+  if (!path.empty()) {
+    out += "<path fill=\"none\" stroke=\"#0a2f8c\" stroke-width=\"";
+    append_px(out, thick);
+    out += "\" stroke-dasharray=\"";
+    append_px(out, 4 * thick);
+    out += ' ';
+    append_px(out, 2 * thick);
+    out += "\" stroke-linejoin=\"round\" d=\"" + path + "\"/>\n";
+  }
+  bool any = false;
+  for (const Subdomain& sub : d.subdomains)
+    for (const std::uint32_t p : sub.interior_points) {
+      if (!any) {
+        out += "<g fill=\"#0a2f8c\" stroke=\"none\">\n";
+      }
+      any = true;
+      out += "<circle cx=\"";
+      append_px(out, view.x(d.points[p].x));
+      out += "\" cy=\"";
+      append_px(out, view.y(d.points[p].y));
+      out += "\" r=\"";
+      append_px(out, 3 * thick);
+      out += "\"/>\n";
+    }
+  if (any) out += "</g>\n";
+}
+
 // Where to write subdomain k's number: its area centroid when that lies
 // strictly inside it (it looks centred), otherwise its interior point.
 Point label_point(const Decomposition& d, const Subdomain& sub) {
@@ -217,6 +272,7 @@ std::string format_svg(const Decomposition& d, const SvgOptions& options) {
   out += "<path stroke=\"#000\" stroke-width=\"";
   append_px(out, thick);
   out += "\" d=\"" + boundary + "\"/>\n</g>\n";
+  append_interior(out, d, view, thick);
   append_annotations(out, d, view, options);
   out += "</svg>\n";
   return out;

@@ -2,7 +2,9 @@
 // VTK's POLYGON cell has no holes and ParaView triangulates concave polygons
 // heuristically, so each subdomain is written as its own constrained Delaunay
 // triangles: exact shape, holes kept, and cells of one subdomain share its
-// cell data so "Threshold" or "Color by subdomain" work per subdomain.
+// cell data so "Threshold" or "Color by subdomain" work per subdomain. Every
+// segment is a line cell too, and every isolated point a vertex cell, told
+// apart by the "kind" array, so the lines can be shown over the triangles.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -36,6 +38,11 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, const Subdomai
   for (const auto& ring : s.rings)
     for (std::size_t k = 0; k < ring.size(); ++k)
       local.segments.push_back({local_index(ring[k]), local_index(ring[(k + 1) % ring.size()]), 1});
+  // Interior segments and isolated points are edges and vertices of the
+  // triangles too, so the cells conform to what the mesher will keep.
+  for (const std::uint32_t j : s.interior_segments)
+    local.segments.push_back({local_index(d.segments[j].a), local_index(d.segments[j].b), 1});
+  for (const std::uint32_t p : s.interior_points) local_index(p);
   local.holes = s.hole_points;
   const Triangulation tri = triangulate(local);
   std::vector<Triangle> out;
@@ -44,33 +51,85 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, const Subdomai
   return out;
 }
 
-// One array of a FIELD block: "name 1 count double", then one value per cell.
-void append_field_array(std::string& out, const char* name, const std::vector<std::size_t>& owner,
-                        const std::vector<double>& value_of_subdomain) {
+// What a cell is (the "kind" cell array, docs/formats.md).
+enum CellKind : int { subdomain_triangle = 0, boundary_piece = 1, separator_piece = 2, interior_piece = 3, isolated_point = 4 };
+
+// The cells in the order legacy POLYDATA numbers them (VERTICES, LINES,
+// POLYGONS), with the cell data of each.
+struct Cells {
+  std::vector<std::uint32_t> vertices;               // isolated points
+  std::vector<std::uint32_t> lines;                  // every segment, by index
+  std::vector<Triangle> triangles;
+  std::vector<std::int64_t> subdomain;               // -1: a separator, in two subdomains
+  std::vector<int> kind, marker;
+  std::size_t size() const { return subdomain.size(); }
+};
+
+Cells collect_cells(const Decomposition& d) {
+  Cells c;
+  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
+  std::vector<std::int64_t> segment_subdomain(d.segments.size(), -1);
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k)
+    for (const auto& ring : d.subdomains[k].ring_segments)
+      for (const std::uint32_t j : ring)
+        if (!d.is_separator(j)) segment_subdomain[j] = static_cast<std::int64_t>(k);
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k)
+    for (const std::uint32_t p : d.subdomains[k].interior_points) {
+      c.vertices.push_back(p);
+      c.subdomain.push_back(static_cast<std::int64_t>(k));
+      c.kind.push_back(isolated_point);
+      c.marker.push_back(0);
+    }
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
+    c.lines.push_back(j);
+    const bool interior = owner[j] != no_index;
+    c.subdomain.push_back(interior ? std::int64_t{owner[j]} : segment_subdomain[j]);
+    c.kind.push_back(d.is_separator(j) ? separator_piece : interior ? interior_piece : boundary_piece);
+    c.marker.push_back(d.segments[j].marker);
+  }
+  for (std::size_t k = 0; k < d.subdomains.size(); ++k)
+    for (const Triangle& t : subdomain_triangles(d, d.subdomains[k])) {
+      c.triangles.push_back(t);
+      c.subdomain.push_back(static_cast<std::int64_t>(k));
+      c.kind.push_back(subdomain_triangle);
+      c.marker.push_back(0);
+    }
+  return c;
+}
+
+// One array of a FIELD block: "name 1 count type", then one value per cell.
+template <class T, class F>
+void append_field_array(std::string& out, const char* name, const char* type, const std::vector<T>& values, F&& write) {
   out += name;
   out += " 1 ";
-  detail::append_int(out, static_cast<std::int64_t>(owner.size()));
-  out += " double\n";
-  for (const std::size_t k : owner) {
-    detail::append_g17(out, value_of_subdomain[k]);
+  detail::append_int(out, static_cast<std::int64_t>(values.size()));
+  out += ' ';
+  out += type;
+  out += '\n';
+  for (const T& v : values) {
+    write(v);
     out += '\n';
   }
+}
+
+// "KEYWORD cells size": size counts every integer of the section.
+void append_section(std::string& out, const char* keyword, std::size_t cells, std::size_t per_cell) {
+  out += keyword;
+  out += ' ';
+  detail::append_int(out, static_cast<std::int64_t>(cells));
+  out += ' ';
+  detail::append_int(out, static_cast<std::int64_t>(cells * (per_cell + 1)));
+  out += '\n';
 }
 
 } // namespace
 
 std::string format_vtk(const Decomposition& decomposition) {
   const Decomposition& d = decomposition;
-  std::vector<Triangle> cells;
-  std::vector<std::size_t> owner;  // subdomain of each cell
-  for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
-    const std::vector<Triangle> tris = subdomain_triangles(d, d.subdomains[k]);
-    cells.insert(cells.end(), tris.begin(), tris.end());
-    owner.insert(owner.end(), tris.size(), k);
-  }
+  const Cells cells = collect_cells(d);
   std::string out = "# vtk DataFile Version 3.0\nmadd decomposition, ";
   detail::append_int(out, static_cast<std::int64_t>(d.subdomains.size()));
-  out += " subdomains as triangles\nASCII\nDATASET POLYDATA\nPOINTS ";
+  out += " subdomains as triangles, segments as lines\nASCII\nDATASET POLYDATA\nPOINTS ";
   detail::append_int(out, static_cast<std::int64_t>(d.points.size()));
   out += " double\n";
   for (const Point& p : d.points) {
@@ -79,13 +138,24 @@ std::string format_vtk(const Decomposition& decomposition) {
     detail::append_g17(out, p.y);
     out += " 0\n";
   }
-  // The size after POLYGONS counts every integer of the section: 4 per triangle.
-  out += "POLYGONS ";
-  detail::append_int(out, static_cast<std::int64_t>(cells.size()));
-  out += ' ';
-  detail::append_int(out, static_cast<std::int64_t>(cells.size() * 4));
-  out += '\n';
-  for (const Triangle& t : cells) {
+  if (!cells.vertices.empty()) {
+    append_section(out, "VERTICES", cells.vertices.size(), 1);
+    for (const std::uint32_t p : cells.vertices) {
+      out += "1 ";
+      detail::append_int(out, p);
+      out += '\n';
+    }
+  }
+  append_section(out, "LINES", cells.lines.size(), 2);
+  for (const std::uint32_t j : cells.lines) {
+    out += "2 ";
+    detail::append_int(out, d.segments[j].a);
+    out += ' ';
+    detail::append_int(out, d.segments[j].b);
+    out += '\n';
+  }
+  append_section(out, "POLYGONS", cells.triangles.size(), 3);
+  for (const Triangle& t : cells.triangles) {
     out += '3';
     for (const std::uint32_t v : t) {
       out += ' ';
@@ -96,20 +166,25 @@ std::string format_vtk(const Decomposition& decomposition) {
   out += "CELL_DATA ";
   detail::append_int(out, static_cast<std::int64_t>(cells.size()));
   out += "\nSCALARS subdomain int 1\nLOOKUP_TABLE default\n";
-  for (const std::size_t k : owner) {
-    detail::append_int(out, static_cast<std::int64_t>(k));
+  for (const std::int64_t k : cells.subdomain) {
+    detail::append_int(out, k);
     out += '\n';
   }
-  std::vector<double> area, weight;
-  for (const Subdomain& s : d.subdomains) {
-    area.push_back(s.area);
-    weight.push_back(s.weight);
-  }
   // VTK's legacy reader keeps only the first SCALARS of a section unless told
-  // otherwise (ReadAllScalars), but always reads FIELD arrays.
-  out += "FIELD FieldData 2\n";
-  append_field_array(out, "area", owner, area);
-  append_field_array(out, "weight", owner, weight);
+  // otherwise (ReadAllScalars), but always reads FIELD arrays. A separator's
+  // area and weight are 0: it belongs to two subdomains.
+  const auto of_subdomain = [&](double Subdomain::*field) {
+    std::vector<double> v;
+    for (const std::int64_t k : cells.subdomain) v.push_back(k < 0 ? 0.0 : d.subdomains[static_cast<std::size_t>(k)].*field);
+    return v;
+  };
+  const auto write_double = [&](double v) { detail::append_g17(out, v); };
+  const auto write_int = [&](int v) { detail::append_int(out, v); };
+  out += "FIELD FieldData 4\n";
+  append_field_array(out, "area", "double", of_subdomain(&Subdomain::area), write_double);
+  append_field_array(out, "weight", "double", of_subdomain(&Subdomain::weight), write_double);
+  append_field_array(out, "kind", "int", cells.kind, write_int);
+  append_field_array(out, "marker", "int", cells.marker, write_int);
   return out;
 }
 
