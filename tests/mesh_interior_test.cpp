@@ -11,13 +11,19 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <random>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "interior_fixture.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_output.hpp"
+#include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/discretise.hpp"
+#include "mesh/size_field.hpp"
+#include "mesh/work.hpp"
 #include "mesh_fixtures.hpp"
 
 namespace {
@@ -204,4 +210,251 @@ TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.05);
   madd::MeshReport report;
   CHECK_NOTHROW(madd::mesh_decomposition(f.decomposition, f.domain, o, report));
+}
+
+namespace {
+
+madd::Pslg estuary() { return madd::read_domain(MADD_DATA_DIR "/estuary.poly"); }
+
+} // namespace
+
+TEST_CASE("mesh interior: the estuary through mesh(): interior segments kept, survey points as vertices, the loop's region") {
+  const madd::Pslg domain = estuary();
+  madd::MeshOptions o = madd::test::options_for(4, 30, 0.0);
+  const Mesh m = madd::mesh(domain, o);
+  CHECK(m.subdomain_count() == 4);
+  // Every input vertex is a mesh vertex (isolated survey points included).
+  std::vector<int> used(m.points.size(), 0);
+  for (const auto& t : m.triangles)
+    for (const std::uint32_t v : t) used[v] = 1;
+  for (std::uint32_t v = 0; v < domain.points.size(); ++v) CHECK(used[v] == 1);
+  // Every input segment is covered by mesh segments lying on it, their
+  // lengths adding up to its own; those inside the domain have triangles of
+  // one subdomain on both sides.
+  const auto edges = edges_of(m);
+  std::vector<double> covered(domain.segments.size(), 0.0);
+  for (const madd::MeshSegment& s : m.segments) {
+    const std::uint32_t origin = m.decomposition.segment_origin[s.piece];
+    if (origin == madd::no_index) continue;
+    const madd::Segment& in = domain.segments[origin];
+    const Point a = domain.points[in.a], b = domain.points[in.b];
+    CHECK(off_line(a, b, m.points[s.a]) < 1e-12);
+    CHECK(off_line(a, b, m.points[s.b]) < 1e-12);
+    covered[origin] += madd::distance(m.points[s.a], m.points[s.b]);
+    const auto& users = edges.at({std::min(s.a, s.b), std::max(s.a, s.b)});
+    if (users.size() == 2) CHECK(m.triangle_subdomain[users[0]] == m.triangle_subdomain[users[1]]);
+  }
+  std::size_t interior_edges = 0;
+  for (const auto& [e, users] : edges)
+    if (users.size() == 2 && m.triangle_subdomain[users[0]] == m.triangle_subdomain[users[1]])
+      for (const madd::MeshSegment& s : m.segments)
+        interior_edges += std::min(s.a, s.b) == e.first && std::max(s.a, s.b) == e.second;
+  CHECK(interior_edges > 20);
+  for (std::uint32_t i = 0; i < domain.segments.size(); ++i) {
+    const double length = madd::distance(domain.points[domain.segments[i].a], domain.points[domain.segments[i].b]);
+    CHECK(covered[i] == doctest::Approx(length).epsilon(1e-12));
+  }
+  // The loop (input vertices 10, 11, 12: a triangle) holds the region:
+  // attribute 2 and area at most 0.05 inside, attribute 0 outside.
+  const std::vector<Point> loop = {domain.points[10], domain.points[11], domain.points[12]};
+  std::size_t inside = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& c = m.triangles[t];
+    const Point g = madd::triangle_centroid(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
+    const bool in = madd::test::inside_convex(loop, g);
+    inside += in;
+    CHECK(m.triangle_attribute[t] == (in ? 2.0 : 0.0));
+    if (in) CHECK(madd::triangle_area(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <= 0.05 * (1 + 1e-12));
+  }
+  CHECK(inside >= 30);  // area 1.5 in triangles of at most 0.05
+  // Below the bound only at the small input angles (the groyne meets the
+  // levee at 19.8 degrees).
+  CHECK(m.shortfall.total() == m.shortfall.input_angle);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    if (smallest_angle(m, t) < 30 - 1e-9)
+      for (const std::uint32_t v : m.triangles[t]) CHECK(madd::distance(m.points[v], domain.points[20]) < 0.5);
+}
+
+TEST_CASE("mesh interior: the estuary's mesh is the same for 1, 2 and 3 threads") {
+  const madd::Pslg domain = estuary();
+  madd::MeshOptions o = madd::test::options_for(6, 30, 0.02);
+  const Mesh one = madd::mesh(domain, o);
+  o.decomposition.threads = 2;
+  CHECK(one == madd::mesh(domain, o));
+  o.decomposition.threads = 3;
+  CHECK(one == madd::mesh(domain, o));
+}
+
+TEST_CASE("mesh interior: the .edge file gives interior-segment edges their marker, separators 0") {
+  const Mesh m = mesh_fixture(30, 0.05, 1);
+  const std::vector<std::uint32_t> owner = madd::interior_segment_owners(m.decomposition);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> want;  // 1-based vertex ids
+  for (const madd::MeshSegment& s : m.segments)
+    if (owner[s.piece] != madd::no_index || m.decomposition.is_separator(s.piece))
+      want[{std::min(s.a, s.b) + 1, std::max(s.a, s.b) + 1}] = s.marker;
+  std::istringstream in(madd::format_mesh_edge(m, 1));
+  std::size_t count = 0, markers = 0, found = 0;
+  in >> count >> markers;
+  for (std::size_t e = 0; e < count; ++e) {
+    std::uint32_t id = 0, a = 0, b = 0;
+    int marker = 0;
+    in >> id >> a >> b >> marker;
+    const auto it = want.find({std::min(a, b), std::max(a, b)});
+    if (it == want.end()) continue;
+    CHECK(marker == it->second);
+    ++found;
+  }
+  CHECK(found == want.size());
+}
+
+TEST_CASE("mesh interior: the work estimate counts a region's finer bound (the Steiner point budget follows it)") {
+  const madd::test::InteriorFixture f = madd::test::interior_fixture();
+  const madd::MeshSizeOptions none;
+  const madd::detail::SizeField field(none);
+  const std::vector<double> work = madd::detail::expected_triangles(madd::discretise(f.decomposition, none), field);
+  REQUIRE(work.size() == 2);
+  // The loop's unit of area at 0.002: some 775 triangles in subdomain 1,
+  // where the size bound alone (none) expects a few along the pieces.
+  CHECK(work[1] > 500);
+  CHECK(work[1] > 5 * work[0]);
+  // And what it was refined to agrees within a factor of two.
+  const Mesh m = mesh_fixture(30, 0.0, 1);
+  const double made = m.subdomain_first_triangle[2] - m.subdomain_first_triangle[1];
+  CHECK(made > 0.5 * work[1]);
+  CHECK(made < 2.0 * work[1]);
+}
+
+namespace {
+
+double segment_distance(Point a, Point b, Point c, Point d) {
+  const auto point_segment = [](Point p, Point u, Point v) {
+    const Point uv = v - u;
+    const double t = std::clamp(madd::dot(p - u, uv) / madd::dot(uv, uv), 0.0, 1.0);
+    return madd::distance(p, u + t * uv);
+  };
+  const bool crosses = madd::orient2d(a, b, c) * madd::orient2d(a, b, d) < 0 && madd::orient2d(c, d, a) * madd::orient2d(c, d, b) < 0;
+  if (crosses) return 0.0;
+  return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
+}
+
+// The square [0, 10]^2 with `count` random disjoint interior segments (at
+// least 0.2 apart and from the boundary), three isolated vertices and two
+// region points (the later's attribute wins: the segments close no face).
+madd::Pslg random_interior_domain(std::uint32_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  madd::Pslg p;
+  p.first_index = 0;
+  p.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  std::vector<std::pair<Point, Point>> placed;
+  while (static_cast<int>(placed.size()) < count) {
+    const Point c{1 + 8 * u(rng), 1 + 8 * u(rng)};
+    const double angle = 2 * std::numbers::pi * u(rng), half = 0.25 + 0.75 * u(rng);
+    const Point d{half * std::cos(angle), half * std::sin(angle)};
+    const Point a = c - d, b = c + d;
+    bool ok = std::min({a.x, a.y, b.x, b.y}) > 0.2 && std::max({a.x, a.y, b.x, b.y}) < 9.8;
+    for (const auto& s : placed) ok = ok && segment_distance(a, b, s.first, s.second) > 0.2;
+    if (!ok) continue;
+    placed.emplace_back(a, b);
+    const auto i = static_cast<std::uint32_t>(p.points.size());
+    p.points.push_back(a);
+    p.points.push_back(b);
+    p.segments.push_back({i, i + 1, 2 + static_cast<int>(placed.size())});
+  }
+  for (int k = 0; k < 3;) {
+    const Point q{0.5 + 9 * u(rng), 0.5 + 9 * u(rng)};
+    bool ok = true;
+    for (const auto& s : placed) ok = ok && segment_distance(q, q, s.first, s.second) > 0.2;
+    if (!ok) continue;
+    p.points.push_back(q);
+    ++k;
+  }
+  p.has_segment_markers = true;
+  p.regions = {{{0.1, 0.1}, 7.0, 0.05}, {{9.9, 9.9}, 4.0 + seed, 0.5}};
+  return p;
+}
+
+} // namespace
+
+TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 and 3, q 30: verified, every attribute the later region's") {
+  int decomposed = 0;
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+    for (const std::uint32_t n : {1u, 3u}) {
+      CAPTURE(seed);
+      CAPTURE(n);
+      const madd::Pslg domain = random_interior_domain(seed, n == 1 ? 8 : 4);
+      madd::validate(domain);
+      madd::MeshOptions o = madd::test::options_for(n, 30, 0.0);
+      Mesh m;
+      try {
+        m = madd::mesh(domain, o);  // verify_mesh runs inside: InternalError on any broken invariant
+      } catch (const madd::DecompositionError& e) {
+        REQUIRE(n > 1);  // one subdomain needs no separator
+        MESSAGE("not decomposed: " << std::string(e.what()));  // the decomposition's limits, not the mesher's
+        continue;
+      }
+      decomposed += n > 1;
+      CHECK(m.shortfall.total() == 0);  // disjoint segments: no small input angle anywhere
+      for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        CHECK(m.triangle_attribute[t] == 4.0 + seed);
+        const auto& c = m.triangles[t];
+        CHECK(madd::triangle_area(m.points[c[0]], m.points[c[1]], m.points[c[2]]) <= 0.5 * (1 + 1e-12));
+      }
+      // Every input vertex a mesh vertex.
+      std::vector<int> used(m.points.size(), 0);
+      for (const auto& t : m.triangles)
+        for (const std::uint32_t v : t) used[v] = 1;
+      for (std::uint32_t v = 0; v < domain.points.size(); ++v) CHECK(used[v] == 1);
+    }
+  }
+  CHECK(decomposed >= 2);
+}
+
+TEST_CASE("mesh interior: a Y junction of interior segments with a 10-degree sector terminates; below the bound only inside that sector") {
+  madd::Pslg p;
+  p.first_index = 0;
+  const double a10 = 10.0 * std::numbers::pi / 180.0;
+  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 2}, {3.2, 2}, {2 + 1.2 * std::cos(a10), 2 + 1.2 * std::sin(a10)}, {1.2, 2.8}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {4, 6, 2}, {4, 7, 2}};
+  madd::validate(p);
+  for (const double q : {28.0, 32.0}) {
+    CAPTURE(q);
+    const Mesh m = madd::mesh(p, madd::test::options_for(1, q, 0.0));
+    CHECK(m.shortfall.total() == m.shortfall.input_angle);
+    CHECK(m.shortfall.total() > 0);
+    CHECK(m.triangles.size() < 20000);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (smallest_angle(m, t) >= q - 1e-9) continue;
+      const auto& c = m.triangles[t];
+      const Point g = madd::triangle_centroid(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
+      const double direction = std::atan2(g.y - 2, g.x - 2);
+      CHECK(direction > 0);
+      CHECK(direction < a10);
+      CHECK(madd::distance(g, {2, 2}) < 1.2);
+    }
+  }
+}
+
+TEST_CASE("mesh interior: an interior segment leaving the boundary at 0.3 degrees terminates") {
+  madd::Pslg p;
+  p.first_index = 0;
+  const double tiny = 0.3 * std::numbers::pi / 180.0;
+  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0}, {2 + 1.5 * std::cos(tiny), 1.5 * std::sin(tiny)}};
+  p.segments = {{0, 4, 1}, {4, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}};
+  madd::validate(p);
+  for (const double q : {25.0, 30.0, 33.0}) {
+    CAPTURE(q);
+    const Mesh m = madd::mesh(p, madd::test::options_for(1, q, 0.0));
+    CHECK(m.shortfall.total() == m.shortfall.input_angle);
+    CHECK(m.triangles.size() < 20000);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (smallest_angle(m, t) >= q - 1e-9) continue;
+      for (const std::uint32_t v : m.triangles[t]) {
+        const Point x = m.points[v];
+        CHECK(x.x >= 2 - 1e-12);  // inside the wedge between y = 0 and the segment
+        CHECK(x.y <= (x.x - 2) * std::tan(tiny) + 1e-12);
+      }
+    }
+  }
 }

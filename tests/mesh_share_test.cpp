@@ -197,6 +197,19 @@ TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 
   }
 }
 
+TEST_CASE("mesh_share: 2 and 3 shares of the estuary (interior segments, survey points, a region) make mesh()'s mesh") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/estuary.poly");
+  madd::MeshOptions o = madd::test::options_for(6, 30, 0.05);
+  const madd::Mesh whole = madd::mesh(domain, o);
+  for (const std::uint32_t shares : {2u, 3u}) {
+    CAPTURE(shares);
+    int rounds = 0;
+    const std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, shares, rounds);
+    check_union_is(whole, parts);
+    check_owners(parts);
+  }
+}
+
 TEST_CASE("assign_shares: every share gets work, none more than the largest subdomain above the mean") {
   const std::vector<double> work{5, 1, 9, 3, 3, 7, 2, 8, 4, 6};
   for (std::uint32_t shares = 1; shares <= 4; ++shares) {

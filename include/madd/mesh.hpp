@@ -1,8 +1,8 @@
 #pragma once
 // Meshing the subdomains (docs/mesh.md): the Delaunay decoupling of
 // Linardakis and Chrisochoides (SIAM J. Sci. Comput. 27(4), 2006), which the
-// MADD decomposition exists for. Every separator and boundary piece is split
-// once, globally, to the local target size (discretise), then each subdomain
+// MADD decomposition exists for. Every separator, boundary and interior
+// piece is split once, globally, to the local target size (discretise), then each subdomain
 // is refined on its own, with no communication, by Ruppert/Chew Delaunay
 // refinement with Ungor's off-centres, never splitting a separator; the
 // subdomain meshes share their separator vertices by construction, so their

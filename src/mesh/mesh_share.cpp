@@ -9,6 +9,7 @@
 #include <numeric>
 #include <string>
 #include <thread>
+#include <unordered_map>
 
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
@@ -102,8 +103,9 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const st
   // Interior pieces follow the ring segments, in order; isolated vertices
   // are the local points of their global ids.
   for (std::uint32_t& j : s.interior_segments) j = next++;
-  for (std::uint32_t& v : s.interior_points)
-    v = static_cast<std::uint32_t>(std::find(local.to_global.begin(), local.to_global.end(), v) - local.to_global.begin());
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
+  for (std::uint32_t v = 0; v < local.to_global.size(); ++v) local_of.emplace(local.to_global[v], v);
+  for (std::uint32_t& v : s.interior_points) v = local_of.at(v);
   std::sort(s.interior_points.begin(), s.interior_points.end());
   dk.subdomains.push_back(std::move(s));
   return out;

@@ -4,19 +4,23 @@
 // vertex (one strictly inside its diametral circle) is split; then each bad
 // triangle (smallest angle below the bound, or area above the size bound)
 // gets a new vertex at its circumcentre or, when that is far, at Ungor's
-// off-centre. A new vertex that would encroach a boundary subsegment is not
-// inserted: the subsegment is split instead and the triangle tried again. One
+// off-centre. A new vertex that would encroach a boundary or interior
+// subsegment (an interior one is split on both its sides; it belongs to
+// this subdomain alone) is not inserted: the subsegment is split instead
+// and the triangle tried again. One
 // that would encroach a separator is not inserted either, and the triangle
 // stays (the decoupling, docs/mesh.md, makes that rare; it is counted).
 //
-// Small input angles (Shewchuk 2002, Miller-Pav-Walkington 2003): a boundary
-// subsegment at a sharp corner (two segments meeting below 60 degrees) is
+// Small input angles (Shewchuk 2002, Miller-Pav-Walkington 2003): a
+// subsegment at a sharp corner (an arm of a sector below 60 degrees between
+// two segments at a vertex) is
 // split at a power of two from the corner, so the splits of the two sides are
 // concentric shells; a triangle whose small angle is an input angle, or whose
 // short edge joins the two sides of a sharp corner at one distance, is left
 // alone; and a split of a subsegment at a sharp corner that would make it
 // shorter than the short edge of the triangle asking for it is refused
-// (Shewchuk's "Terminator"), which is what makes refinement terminate there.
+// when the triangle is skinny (Shewchuk's "Terminator"), which is what
+// makes refinement terminate there.
 #include "mesh/refine.hpp"
 
 #include <algorithm>
@@ -246,6 +250,9 @@ Reason Refiner::input_angle_rule(std::uint32_t t, const TriangleShape& s) const 
   };
   std::uint32_t xa = no_index, xb = no_index, ya = no_index, yb = no_index;
   if (!corner_of(x, xa, xb) || !corner_of(y, ya, yb)) return Reason::none;
+  // On one segment, x and y are no two sides of a corner (a short edge along
+  // one arm, far out, is an ordinary edge).
+  if (m_.vertex_segment(x) == m_.vertex_segment(y)) return Reason::none;
   // x and y must lie on the two arms of the sharp sector (the angle x w y
   // below 60 degrees): where three or more segments meet at w, two pieces
   // at a wide angle there are no sharp corner.

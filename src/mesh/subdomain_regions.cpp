@@ -123,6 +123,7 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
 RegionView region_view(const Decomposition& d) {
   RegionView out;
   out.regions.resize(d.subdomains.size());
+  out.bounded_faces.resize(d.subdomains.size());
   out.segment_area.assign(d.segments.size(), std::numeric_limits<double>::infinity());
   if (d.regions.empty()) return out;
   std::vector<Faces> faces;
@@ -141,6 +142,16 @@ RegionView region_view(const Decomposition& d) {
       if (label == 0) continue;
       const Region& r = d.regions[label - 1];
       out.regions[k].push_back({f.point[p], r.attribute, r.max_area});
+    }
+    std::vector<double> face_area(f.point.size(), 0.0);
+    for (std::uint32_t t = 0; t < f.tri.triangles.size(); ++t) {
+      const auto& c = f.tri.triangles[t];
+      face_area[f.face[t]] += triangle_area(f.tri.points[c[0]], f.tri.points[c[1]], f.tri.points[c[2]]);
+    }
+    for (std::size_t p = 0; p < f.point.size(); ++p) {
+      const std::uint32_t label = labels[first[k] + p];
+      if (label != 0 && d.regions[label - 1].max_area > 0)
+        out.bounded_faces[k].emplace_back(face_area[p], d.regions[label - 1].max_area);
     }
     // Each segment edge of the triangulation bounds the face of its triangle.
     for (std::uint32_t t = 0; t < f.tri.triangles.size(); ++t)

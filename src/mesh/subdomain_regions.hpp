@@ -8,6 +8,7 @@
 // its own segments (rings and interior pieces) that lies in a region, with
 // that region's attribute and area bound. Flooding those inside the
 // subdomain gives every triangle the region the whole-domain flood gives it.
+#include <utility>
 #include <vector>
 
 #include "madd/decomposition.hpp"
@@ -22,6 +23,10 @@ struct RegionView {
   // sides, +infinity for none: the regional size bound discretise splits it
   // for (the decoupling holds for the triangles next to it only if it does).
   std::vector<double> segment_area;
+  // Per subdomain: (area, max_area) of each of its faces in a region with
+  // max_area > 0, for the work estimate (a region's bound can make a
+  // subdomain far finer than the size bound alone says).
+  std::vector<std::vector<std::pair<double, double>>> bounded_faces;
 };
 
 // The regions of every subdomain of `d` and the regional bound along every

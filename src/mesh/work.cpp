@@ -20,6 +20,7 @@
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/merge.hpp"
+#include "mesh/subdomain_regions.hpp"
 
 namespace madd::detail {
 
@@ -103,11 +104,20 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
   std::vector<double> out;
   out.reserve(d.subdomains.size());
   const bool uniform = !size.options().area_function && size.options().background_areas.empty();
+  const RegionView regions = region_view(d);
   for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
     const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) : 0.0;
     if (!uniform) t = varying_interior(d, sub, size);
+    // A face held to a region's finer bound: its triangles at that bound
+    // instead (with a varying size bound, on top of the estimate: an upper
+    // bound, which is the safer side for the Steiner point budget).
+    for (const auto& face : regions.bounded_faces[sub]) {
+      if (!(face.second < bound)) continue;
+      if (uniform && std::isfinite(bound)) t -= face.first / (kappa * bound);
+      t += face.first / (kappa * face.second);
+    }
     for (std::size_t r = 0; r < s.rings.size(); ++r) {
       for (std::size_t k = 0; k < s.rings[r].size(); ++k) {
         if (d.is_separator(s.ring_segments[r][k])) continue;
@@ -116,6 +126,13 @@ std::vector<double> expected_triangles(const Decomposition& d, const SizeField& 
         // Without a size bound every boundary piece is about one triangle.
         t += std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0;
       }
+    }
+    // An interior piece grades the mesh on both its sides: twice the layer
+    // of a boundary piece (not fitted; interior segments were not in the fit).
+    for (const std::uint32_t j : s.interior_segments) {
+      const Point a = d.points[d.segments[j].a], b = d.points[d.segments[j].b];
+      const double local = size.area_at(midpoint(a, b));
+      t += 2.0 * (std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0);
     }
     out.push_back(t);
   }
