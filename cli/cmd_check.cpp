@@ -69,6 +69,16 @@ void print_summary(const std::string& path, const Pslg& pslg) {
   std::printf("%s: valid domain\n", path.c_str());
   std::printf("  vertices          %zu\n", pslg.points.size());
   std::printf("  segments          %zu\n", pslg.segments.size());
+  // Interior constraints, where a vertex is not on exactly two segments (a
+  // closed interior loop alone is not told apart from the rings here).
+  std::vector<std::uint32_t> degree(pslg.points.size(), 0);
+  for (const Segment& seg : pslg.segments) ++degree[seg.a], ++degree[seg.b];
+  if (std::any_of(degree.begin(), degree.end(), [](std::uint32_t d) { return d != 2; })) {
+    const PslgSummary inner = summarize_pslg(pslg);
+    std::printf("  interior segments %zu (%zu dangling ends, %zu vertices on segments)\n", inner.interior_segments,
+                inner.dangling_ends, inner.vertices_inside_segments);
+    std::printf("  isolated vertices %zu\n", inner.isolated_vertices);
+  }
   std::printf("  holes             %zu\n", pslg.holes.size());
   std::printf("  regions           %zu\n", pslg.regions.size());
   std::printf("  attributes        %u per vertex\n", pslg.attributes_per_point);

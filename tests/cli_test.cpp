@@ -371,8 +371,8 @@ TEST_CASE("check describes a PSLG; decompose and mesh refuse it with a located e
     const Result r = run_madd(dir, std::string(command) + " " + estuary + " -n 2 -o out");
     CHECK(r.code == 3);
     CHECK(line_count(r.err) == 1);
-    // The first vertex on no segment: 22 (2, 4), on line 27 of the file.
-    CHECK(has(r.err, "estuary.poly:27:1: vertex 22 (2, 4) is on no segment"));
+    // The survey point in the hole, 25 (1.25, 1.75), on line 30 of the file.
+    CHECK(has(r.err, "estuary.poly:30:1: vertex 25 (1.25, 1.75) is on no segment and lies outside the domain"));
     CHECK(fs::is_empty(dir.path));
   }
   // A crossing is bad input for check as well.

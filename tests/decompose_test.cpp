@@ -96,6 +96,24 @@ void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32
     for (const auto& ring : s.rings) own += ring_area(d, ring);
     CHECK(s.area == doctest::Approx(own).epsilon(1e-12));
   }
+  // Interior pieces: in no ring, in one subdomain; every separator meeting
+  // one at a vertex makes an angle >= Phi0 with it.
+  std::vector<int> interior(d.segments.size(), 0);
+  std::map<std::uint32_t, std::vector<std::uint32_t>> separators_at;  // vertex -> far ends
+  for (std::uint32_t seg = 0; seg < d.segments.size(); ++seg) {
+    if (!d.is_separator(seg)) continue;
+    separators_at[d.segments[seg].a].push_back(d.segments[seg].b);
+    separators_at[d.segments[seg].b].push_back(d.segments[seg].a);
+  }
+  for (const madd::Subdomain& s : d.subdomains) {
+    for (const std::uint32_t seg : s.interior_segments) {
+      ++interior[seg];
+      for (const auto& [at, far] : {std::pair{d.segments[seg].a, d.segments[seg].b}, std::pair{d.segments[seg].b, d.segments[seg].a}}) {
+        for (const std::uint32_t w : separators_at[at])
+          CHECK(madd::degrees(madd::angle_at(d.points[at], d.points[far], d.points[w])) >= phi - 1e-7);
+      }
+    }
+  }
   for (std::uint32_t seg = 0; seg < d.segments.size(); ++seg) {
     const auto& u = uses[seg];
     if (d.is_separator(seg)) {
@@ -104,7 +122,7 @@ void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32
       CHECK(u[0] == -u[1]);
     } else {
       CHECK(d.segments[seg].marker != 0);
-      CHECK(u.size() == 1);
+      CHECK(u.size() + interior[seg] == 1);
     }
   }
   CHECK(total == doctest::Approx(madd::domain_area(domain)).epsilon(1e-9));

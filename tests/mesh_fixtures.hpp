@@ -14,6 +14,7 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 
 namespace madd::test {
@@ -48,6 +49,35 @@ inline Pslg subdomain_pslg(const Decomposition& d, const Subdomain& s, std::vect
   return p;
 }
 
+// Per triangle of `m`: the attribute of the input region its centroid lies
+// in, by Triangle's -A on the decomposition's boundary and interior pieces
+// (madd::triangulate), the centroid located by brute force; 0 in none.
+inline std::vector<double> region_attributes_by_centroid(const Decomposition& d, const Mesh& m) {
+  Pslg whole;
+  whole.points = d.points;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    if (!d.is_separator(j)) whole.segments.push_back(d.segments[j]);
+  whole.holes = d.holes;
+  whole.regions = d.regions;
+  TriangulateOptions a;
+  a.region_attributes = true;
+  const Triangulation t = triangulate(whole, a);
+  std::vector<double> out;
+  for (const auto& tri : m.triangles) {
+    const Point g = triangle_centroid(m.points[tri[0]], m.points[tri[1]], m.points[tri[2]]);
+    double attribute = 0.0;
+    for (std::size_t u = 0; u < t.triangles.size(); ++u) {
+      const Point p = t.points[t.triangles[u][0]], q = t.points[t.triangles[u][1]], r = t.points[t.triangles[u][2]];
+      if (orient2d(p, q, g) >= 0 && orient2d(q, r, g) >= 0 && orient2d(r, p, g) >= 0) {
+        attribute = t.attributes[u];
+        break;
+      }
+    }
+    out.push_back(attribute);
+  }
+  return out;
+}
+
 // Every subdomain triangulated without Steiner points, merged into one Mesh
 // (min_angle_deg 0: nothing is promised about angles).
 inline Mesh mesh_without_steiner_points(const Decomposition& d) {
@@ -75,6 +105,7 @@ inline Mesh mesh_without_steiner_points(const Decomposition& d) {
     }
     m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
   }
+  if (!d.regions.empty()) m.triangle_attribute = region_attributes_by_centroid(d, m);
   // Neighbours by matching each directed edge with its reverse.
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_triangle;
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {

@@ -100,10 +100,11 @@ struct TriangleMesh {
   std::vector<std::int64_t> point_attribute;  // the split pieces' global ids
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::int64_t> triangle_attribute;
+  std::vector<double> region_attribute;  // the second attribute, with regions
 };
 
 TriangleMesh read_triangle_mesh(const std::string& node, const std::string& ele, unsigned first_index,
-                                bool with_global_ids) {
+                                bool with_global_ids, bool with_regions) {
   TriangleMesh m;
   const TriangleTable nodes = parse_triangle_table(node, 4, with_global_ids ? 5 : 4, first_index);
   CHECK(nodes.header == std::vector<std::int64_t>{static_cast<std::int64_t>(nodes.rows.size()), 2,
@@ -114,8 +115,8 @@ TriangleMesh read_triangle_mesh(const std::string& node, const std::string& ele,
     if (with_global_ids) m.point_attribute.push_back(integer_of(row[2]));
     m.markers.push_back(static_cast<int>(integer_of(row.back())));
   }
-  const TriangleTable eles = parse_triangle_table(ele, 3, 5, first_index);
-  CHECK(eles.header == std::vector<std::int64_t>{static_cast<std::int64_t>(eles.rows.size()), 3, 1});
+  const TriangleTable eles = parse_triangle_table(ele, 3, with_regions ? 6 : 5, first_index);
+  CHECK(eles.header == std::vector<std::int64_t>{static_cast<std::int64_t>(eles.rows.size()), 3, with_regions ? 2 : 1});
   for (const auto& row : eles.rows) {
     std::array<std::uint32_t, 3> t{};
     for (std::size_t i = 0; i < 3; ++i) {
@@ -124,6 +125,7 @@ TriangleMesh read_triangle_mesh(const std::string& node, const std::string& ele,
     }
     m.triangles.push_back(t);
     m.triangle_attribute.push_back(integer_of(row[3]));
+    if (with_regions) m.region_attribute.push_back(real_of(row[4]));
   }
   return m;
 }
@@ -135,7 +137,8 @@ TEST_CASE("mesh .node and .ele: every triangle's vertices read back to the mesh'
     for (const unsigned first_index : {0u, 1u}) {
       CAPTURE(first_index);
       const TriangleMesh back =
-          read_triangle_mesh(format_mesh_node(*mesh, first_index), format_mesh_ele(*mesh, first_index), first_index, false);
+          read_triangle_mesh(format_mesh_node(*mesh, first_index), format_mesh_ele(*mesh, first_index), first_index, false,
+                             !mesh->decomposition.regions.empty());
       REQUIRE(back.points.size() == mesh->points.size());
       CHECK(back.points == mesh->points);  // %.17g reads back exactly
       CHECK(back.markers == mesh->point_markers);
@@ -145,6 +148,7 @@ TEST_CASE("mesh .node and .ele: every triangle's vertices read back to the mesh'
         CHECK(signed_area(back.points[back.triangles[t][0]], back.points[back.triangles[t][1]],
                           back.points[back.triangles[t][2]]) > 0);  // counter-clockwise, as Triangle writes
         CHECK(back.triangle_attribute[t] == mesh->triangle_subdomain[t]);
+        if (!mesh->decomposition.regions.empty()) CHECK(back.region_attribute[t] == mesh->triangle_attribute[t]);
       }
     }
   }
@@ -267,6 +271,14 @@ TEST_CASE("mesh .msh 4.1: nodes exact, triangles in order, physical groups cover
       }
     }
     CHECK(triangles == mesh->triangles.size());
+    // With regions, one element data view of every triangle's region attribute.
+    CHECK(m.element_data.size() == (mesh->decomposition.regions.empty() ? 0u : 1u));
+    if (!mesh->decomposition.regions.empty()) {
+      const auto& view = m.element_data.at("region_attribute");
+      REQUIRE(view.size() == mesh->triangles.size());
+      for (std::size_t t = 0; t < mesh->triangles.size(); ++t)
+        CHECK(view.at(static_cast<std::int64_t>(t) + 1) == mesh->triangle_attribute[t]);
+    }
     for (std::uint32_t k = 0; k < mesh->subdomain_count(); ++k)
       CHECK(per_subdomain[k] == mesh->subdomain_first_triangle[k + 1] - mesh->subdomain_first_triangle[k]);
     // The lines of each marker are exactly its boundary edges.
@@ -321,6 +333,14 @@ TEST_CASE("mesh .vtu: points exact, connectivity, offsets, types, subdomain and 
     REQUIRE(subdomain.values.size() == mesh->triangles.size());
     for (std::size_t t = 0; t < mesh->triangles.size(); ++t)
       CHECK(integer_of(subdomain.values[t]) == mesh->triangle_subdomain[t]);
+    if (!mesh->decomposition.regions.empty()) {  // the pipe has a region
+      const XmlArray& region = v.array("CellData", "region_attribute");
+      CHECK(region.attributes.at("type") == "Float64");
+      REQUIRE(region.values.size() == mesh->triangles.size());
+      for (std::size_t t = 0; t < mesh->triangles.size(); ++t) CHECK(real_of(region.values[t]) == mesh->triangle_attribute[t]);
+    } else {
+      CHECK_THROWS(v.array("CellData", "region_attribute"));
+    }
     const XmlArray& marker = v.array("PointData", "marker");
     CHECK(marker.attributes.at("type") == "Int32");
     REQUIRE(marker.values.size() == mesh->points.size());
@@ -340,15 +360,16 @@ TEST_CASE("split mesh: the pieces' local-to-global maps give back the mesh, sepa
         for (const char* ext : {".node", ".ele"}) expected_names.insert(split_mesh_file_name("m", k, n, ext));
       CHECK(tmp.names(tmp.path / "parts") == expected_names);
       // The whole mesh's coordinate text, to compare the pieces' with.
+      const bool regions = !mesh->decomposition.regions.empty();
       const TriangleMesh whole = read_triangle_mesh(format_mesh_node(*mesh, first_index),
-                                                    format_mesh_ele(*mesh, first_index), first_index, false);
+                                                    format_mesh_ele(*mesh, first_index), first_index, false, regions);
       std::map<std::int64_t, std::set<std::uint32_t>> pieces_of;  // global vertex -> pieces holding it
       std::vector<std::array<std::uint32_t, 3>> all;
       for (std::uint32_t k = 0; k < n; ++k) {
         const fs::path dir = tmp.path / "parts";
         const TriangleMesh piece = read_triangle_mesh(read_text(dir / split_mesh_file_name("m", k, n, ".node")),
                                                       read_text(dir / split_mesh_file_name("m", k, n, ".ele")),
-                                                      first_index, true);
+                                                      first_index, true, regions);
         std::vector<std::uint32_t> to_global;
         for (std::size_t i = 0; i < piece.points.size(); ++i) {
           const std::uint32_t g = index_of(std::to_string(piece.point_attribute[i]), first_index);
@@ -367,6 +388,7 @@ TEST_CASE("split mesh: the pieces' local-to-global maps give back the mesh, sepa
           const std::array<std::uint32_t, 3> global{to_global[local[0]], to_global[local[1]], to_global[local[2]]};
           CHECK(global == mesh->triangles[first + t]);
           CHECK(piece.triangle_attribute[t] == k);
+          if (regions) CHECK(piece.region_attribute[t] == mesh->triangle_attribute[first + t]);
           all.push_back(global);
         }
       }

@@ -92,6 +92,8 @@ struct Msh41 {
   std::map<std::int64_t, Point> nodes;
   std::map<std::int64_t, std::pair<int, std::int64_t>> node_entity;  // node tag -> (dim, tag)
   std::vector<Msh41Element> elements;
+  // $ElementData views by name: element tag -> the one value.
+  std::map<std::string, std::map<std::int64_t, double>> element_data;
 };
 
 class Msh41Reader {
@@ -113,6 +115,7 @@ public:
       else if (section[0] == "$Entities") entities(m);
       else if (section[0] == "$Nodes") nodes(m);
       else if (section[0] == "$Elements") elements(m);
+      else if (section[0] == "$ElementData") element_data(m);
       else fail("unexpected section " + section[0]);
     }
     if (!seen_nodes_ || !seen_elements_) fail("$Nodes or $Elements missing");
@@ -136,6 +139,29 @@ private:
   }
   void expect(const std::string& word) {
     if (next() != std::vector<std::string>{word}) fail("expected " + word);
+  }
+
+  // One string tag (the quoted name), one real tag (time), three integer
+  // tags (step, 1 component, count), then "element-tag value" lines, each
+  // element once and known.
+  void element_data(Msh41& m) {
+    if (integers(1)[0] != 1) fail("element data: one string tag expected");
+    const std::string& quoted = lines_.at(at_++);
+    if (quoted.size() < 2 || quoted.front() != '"' || quoted.back() != '"') fail("element data: a quoted name expected");
+    const std::string name = quoted.substr(1, quoted.size() - 2);
+    if (integers(1)[0] != 1) fail("element data: one real tag expected");
+    real_of(next().at(0));
+    if (integers(1)[0] != 3) fail("element data: three integer tags expected");
+    integers(1);
+    if (integers(1)[0] != 1) fail("element data: one component expected");
+    const std::int64_t count = integers(1)[0];
+    auto& view = m.element_data[name];
+    for (std::int64_t i = 0; i < count; ++i) {
+      const auto w = next();
+      if (w.size() != 2) fail("element data: tag and value expected");
+      if (!view.emplace(integer_of(w[0]), real_of(w[1])).second) fail("element data: an element twice");
+    }
+    expect("$EndElementData");
   }
 
   void physical_names(Msh41& m) {

@@ -17,6 +17,7 @@
 #include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
+#include "interior_fixture.hpp"
 #include "mesh_fixtures.hpp"
 
 namespace {
@@ -73,10 +74,9 @@ madd::ShareExchange exchange_for(Meeting& meeting, std::uint32_t share, int& rou
   return x;
 }
 
-std::vector<madd::MeshPart> mesh_in_shares(const madd::Pslg& domain, const madd::MeshOptions& o, std::uint32_t shares,
-                                           int& rounds_with_splits) {
-  std::vector<madd::PhaseTime> phases;
-  const madd::Decomposition d = madd::decompose_for_mesh(domain, o, phases);
+std::vector<madd::MeshPart> mesh_decomposition_in_shares(const madd::Decomposition& d, const madd::Pslg& domain,
+                                                         const madd::MeshOptions& o, std::uint32_t shares,
+                                                         int& rounds_with_splits) {
   Meeting meeting(shares);
   std::vector<madd::MeshPart> parts(shares);
   std::vector<std::thread> threads;
@@ -87,6 +87,13 @@ std::vector<madd::MeshPart> mesh_in_shares(const madd::Pslg& domain, const madd:
     });
   for (std::thread& t : threads) t.join();
   return parts;
+}
+
+std::vector<madd::MeshPart> mesh_in_shares(const madd::Pslg& domain, const madd::MeshOptions& o, std::uint32_t shares,
+                                           int& rounds_with_splits) {
+  std::vector<madd::PhaseTime> phases;
+  const madd::Decomposition d = madd::decompose_for_mesh(domain, o, phases);
+  return mesh_decomposition_in_shares(d, domain, o, shares, rounds_with_splits);
 }
 
 // Every part's vertices and triangles are mesh()'s under their global ids,
@@ -110,6 +117,7 @@ void check_union_is(const madd::Mesh& whole, const std::vector<madd::MeshPart>& 
       ++seen[g];
       for (int i = 0; i < 3; ++i) CHECK(part.point_ids[m.triangles[t][i]] == whole.triangles[g][i]);
       CHECK(m.triangle_subdomain[t] == whole.triangle_subdomain[g]);
+      if (!whole.triangle_attribute.empty()) CHECK(m.triangle_attribute.at(t) == whole.triangle_attribute[g]);
       CHECK(part.owner[m.triangle_subdomain[t]] == part.share);
     }
   }
@@ -154,6 +162,39 @@ TEST_CASE("mesh_share: separator pieces split between rounds are agreed on by ev
   const std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, 3, rounds);
   CHECK(rounds > 0);  // the case this test is for: a split agreed between rounds
   check_union_is(whole, parts);
+}
+
+TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 and 2 shares make mesh()'s mesh") {
+  const madd::test::InteriorFixture f = madd::test::interior_fixture();
+  madd::MeshOptions o = madd::test::options_for(2, 30, 0.01);
+  madd::MeshReport report;
+  const madd::Mesh whole = madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+  REQUIRE(!whole.triangle_attribute.empty());
+  for (const std::uint32_t shares : {1u, 2u}) {
+    CAPTURE(shares);
+    int rounds = 0;
+    const std::vector<madd::MeshPart> parts = mesh_decomposition_in_shares(f.decomposition, f.domain, o, shares, rounds);
+    check_union_is(whole, parts);
+    check_owners(parts);
+    // The isolated vertices are in the part of the share meshing subdomain 1, under their own ids.
+    for (const madd::MeshPart& part : parts) {
+      // The part's .ele: a third attribute, the region attribute of each triangle.
+      std::istringstream ele(madd::format_part_ele(part));
+      std::size_t count = 0, corners = 0, attributes = 0;
+      ele >> count >> corners >> attributes;
+      CHECK(count == part.mesh.triangles.size());
+      CHECK(attributes == 3);
+      for (std::size_t t = 0; t < count; ++t) {
+        double id = 0, a = 0, b = 0, c = 0, k = 0, global = 0, region = 0;
+        ele >> id >> a >> b >> c >> k >> global >> region;
+        CHECK(region == whole.triangle_attribute[part.triangle_ids[t]]);
+      }
+      CHECK(madd::format_parts_pvtu({"p-0.vtu"}, true).find("Name=\"region_attribute\"") != std::string::npos);
+      const bool has_one = part.owner[1] == part.share;
+      for (const std::uint64_t v : {15u, 16u})
+        CHECK(has_one == (std::find(part.point_ids.begin(), part.point_ids.end(), v) != part.point_ids.end()));
+    }
+  }
 }
 
 TEST_CASE("assign_shares: every share gets work, none more than the largest subdomain above the mean") {

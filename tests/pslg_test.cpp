@@ -177,23 +177,17 @@ TEST_CASE("summarize_pslg on random lone points and segments agrees with brute f
   }
 }
 
-TEST_CASE("decompose() and mesh() refuse a PSLG with interior segments or isolated vertices, naming them") {
-  // Until the decomposition takes interior constraints (issue 16).
+TEST_CASE("decompose() takes interior segments and isolated vertices, and keeps each inside one subdomain") {
   madd::Pslg lone = square_with({{0.5, 0.5}}, {});
   madd::Pslg interior = square_with({}, {{0, 2, 0}});
-  for (const auto& [pslg, problem, id] : {std::tuple{lone, InputProblem::isolated_vertex, 5},
-                                          std::tuple{interior, InputProblem::interior_segment, 5}}) {
-    CHECK(!pslg_error(pslg));  // triangulate takes it
-    try {
-      (void)madd::decompose(pslg, {});
-      FAIL("decompose took a PSLG that is not a domain");
-    } catch (const madd::InvalidInputError& e) {
-      CHECK(e.problem() == problem);
-      CHECK(e.ids().front() == id);
-    }
-    madd::MeshOptions options;
-    options.decomposition.subdomains = 2;
-    CHECK_THROWS_AS((void)madd::mesh(pslg, options), madd::InvalidInputError);
+  for (const madd::Pslg& pslg : {lone, interior}) {
+    madd::DecomposeOptions options;
+    options.subdomains = 3;
+    const madd::Decomposition d = madd::decompose(pslg, options);
+    CHECK(madd::verify_decomposition(d, pslg, 3).ok());
+    std::size_t kept = 0;
+    for (const madd::Subdomain& s : d.subdomains) kept += s.interior_points.size() + s.interior_segments.size();
+    CHECK(kept >= 1);
   }
 }
 

@@ -64,9 +64,12 @@ bool on_segment(Point a, Point b, Point q) {
 bool conflict(const madd::Pslg& p, const madd::Segment& s, const madd::Segment& t) {
   const Point a = p.points[s.a], b = p.points[s.b], c = p.points[t.a], d = p.points[t.b];
   // An endpoint of one lying on the other, unless it is a shared endpoint
-  // whose other ends are not on the other segment.
-  if ((!(t.a == s.a || t.a == s.b) && on_segment(a, b, c)) || (!(t.b == s.a || t.b == s.b) && on_segment(a, b, d)) ||
-      (!(s.a == t.a || s.a == t.b) && on_segment(c, d, a)) || (!(s.b == t.a || s.b == t.b) && on_segment(c, d, b)))
+  // whose other ends are not on the other segment: an overlap when the two
+  // are collinear; else a vertex inside a segment, which splits it (allowed).
+  const bool collinear = madd::orient2d(a, b, c) == 0.0 && madd::orient2d(a, b, d) == 0.0;
+  if (collinear &&
+      ((!(t.a == s.a || t.a == s.b) && on_segment(a, b, c)) || (!(t.b == s.a || t.b == s.b) && on_segment(a, b, d)) ||
+       (!(s.a == t.a || s.a == t.b) && on_segment(c, d, a)) || (!(s.b == t.a || s.b == t.b) && on_segment(c, d, b))))
     return true;
   if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return true;
   const double o1 = madd::orient2d(a, b, c), o2 = madd::orient2d(a, b, d);
@@ -222,13 +225,12 @@ TEST_CASE("each failure class is reported with ids in the file's base") {
     CHECK(e->problem() == InputProblem::duplicate_vertex);
     CHECK(e->ids() == std::vector<std::int64_t>{4, 0});
   }
-  SUBCASE("vertex in the interior of a segment") {
+  SUBCASE("vertex in the interior of a segment: a triangle touching the square there") {
     madd::Pslg p = square;
     add_loop(p, {{0.5, 0.0}, {0.6, -1}, {0.4, -1}});
     const auto e = error_of(p);
     REQUIRE(e);
-    CHECK(e->problem() == InputProblem::segments_intersect);
-    CHECK(e->points() == std::vector<Point>{{0.5, 0.0}});
+    CHECK(e->problem() == InputProblem::disconnected_domain);  // the side is split there; they meet at one point
   }
   SUBCASE("hole on a vertex") {
     madd::Pslg p = square;
@@ -285,14 +287,16 @@ TEST_CASE("each failure class is reported with ids in the file's base") {
     p.points[3].x = -0.0;
     CHECK_NOTHROW(madd::validate(p));
   }
-  SUBCASE("dangling chain") {
+  SUBCASE("dangling chain: inside, an interior segment; outside, an open boundary") {
     madd::Pslg p = square;
     p.points.push_back({0.5, 0.5});
     p.segments.push_back({0, 4, 0});
+    CHECK(!error_of(p));
+    p.points.back() = {-0.5, -0.5};
     const auto e = error_of(p);
     REQUIRE(e);
     CHECK(e->problem() == InputProblem::open_boundary);
-    CHECK(e->ids() == std::vector<std::int64_t>{1});
+    CHECK(e->ids() == std::vector<std::int64_t>{5});  // the loose end
   }
 }
 

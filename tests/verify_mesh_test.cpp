@@ -19,6 +19,7 @@
 #include "madd/mesh.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
+#include "interior_fixture.hpp"
 #include "mesh_fixtures.hpp"
 #include "quality/area_bound.hpp"
 
@@ -627,6 +628,119 @@ TEST_CASE("area_bound_at: the sample grid agrees with a scan") {
   const madd::detail::NearestSample one(sets[4]);
   CHECK(one.nearest({std::numeric_limits<double>::quiet_NaN(), 0.0}) == no_index);
   CHECK(one.nearest({-5.0, 1e6}) == 0);
+}
+
+// The hand-made domain with interior segments, isolated vertices and
+// regions (tests/interior_fixture.hpp), meshed once (q 30, a 0.02).
+struct InteriorMesh {
+  madd::test::InteriorFixture f = madd::test::interior_fixture();
+  MeshSizeOptions size = [] {
+    MeshSizeOptions s;
+    s.max_area = 0.02;
+    return s;
+  }();
+  Mesh mesh = [this] {
+    madd::MeshOptions o = madd::test::options_for(2, 30, 0.02);
+    madd::MeshReport report;
+    return madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+  }();
+};
+
+const InteriorMesh& interior_mesh() {
+  static const InteriorMesh m;
+  return m;
+}
+
+// A mesh segment on an interior piece, and the edge's two triangles.
+struct InteriorEdge {
+  std::uint32_t segment, t, u;
+};
+
+InteriorEdge an_interior_edge(const Mesh& m) {
+  const std::vector<std::uint32_t> owner = madd::interior_segment_owners(m.decomposition);
+  for (std::uint32_t s = 0; s < m.segments.size(); ++s) {
+    if (owner[m.segments[s].piece] == no_index) continue;
+    std::vector<std::uint32_t> users;
+    for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+      const auto& c = m.triangles[t];
+      const bool has_a = std::find(c.begin(), c.end(), m.segments[s].a) != c.end();
+      const bool has_b = std::find(c.begin(), c.end(), m.segments[s].b) != c.end();
+      if (has_a && has_b) users.push_back(t);
+    }
+    REQUIRE(users.size() == 2);
+    return {s, users[0], users[1]};
+  }
+  FAIL("no interior segment");
+  return {};
+}
+
+TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
+  const InteriorMesh& im = interior_mesh();
+  const Mesh& good = im.mesh;
+  const Pslg& domain = im.f.domain;
+  {
+    const madd::Verification v = madd::verify_mesh(good, domain, im.size);
+    show(v);
+    REQUIRE(v.ok());
+  }
+  SUBCASE("an interior piece claimed by the other subdomain") {
+    Mesh m = good;
+    const InteriorEdge e = an_interior_edge(m);
+    const std::uint32_t piece = m.segments[e.segment].piece;
+    const std::uint32_t k = m.triangle_subdomain[e.t];
+    auto& from = m.decomposition.subdomains[k].interior_segments;
+    from.erase(std::find(from.begin(), from.end(), piece));
+    auto& to = m.decomposition.subdomains[1 - k].interior_segments;
+    to.insert(std::lower_bound(to.begin(), to.end(), piece), piece);
+    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    CHECK(mentions(v, "lies inside subdomain " + std::to_string(k)));
+    CHECK(mentions(v, "its piece is interior to subdomain " + std::to_string(1 - k)));
+  }
+  SUBCASE("an interior segment with a triangle on one side only") {
+    Mesh m = good;
+    const InteriorEdge e = an_interior_edge(m);
+    m.triangles.erase(m.triangles.begin() + e.u);
+    m.triangle_subdomain.erase(m.triangle_subdomain.begin() + e.u);
+    m.triangle_attribute.erase(m.triangle_attribute.begin() + e.u);
+    rebuild(m);
+    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    CHECK(mentions(v, "interior segment "));
+    CHECK(mentions(v, "is in one triangle only"));
+  }
+  SUBCASE("an interior piece's chain broken") {
+    Mesh m = good;
+    const InteriorEdge e = an_interior_edge(m);
+    const std::uint32_t piece = m.segments[e.segment].piece;
+    m.segments.erase(m.segments.begin() + e.segment);
+    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    CHECK(mentions(v, "interior piece " + std::to_string(piece) + " "));
+  }
+  SUBCASE("an isolated vertex that is no mesh vertex of its subdomain") {
+    Mesh m = good;
+    m.decomposition.subdomains[0].interior_points.push_back(15);  // a vertex of subdomain 1's triangles only
+    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "isolated input vertex 15 (3, 1.1000000000000001) is no vertex of subdomain 0"));
+  }
+  SUBCASE("a wrong region attribute") {
+    Mesh m = good;
+    const InteriorEdge e = an_interior_edge(m);
+    m.triangle_attribute[e.t] += 1.0;
+    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "triangle " + std::to_string(e.t) + " (subdomain"));
+    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "has region attribute"));
+  }
+  SUBCASE("region attributes missing") {
+    Mesh m = good;
+    m.triangle_attribute.clear();
+    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "triangle_attribute has 0 entries"));
+  }
+  SUBCASE("a regional area bound exceeded") {
+    Mesh m = good;
+    m.decomposition.regions[1].max_area = 0.0005;  // the loop's triangles were made for 0.002
+    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    CHECK(mentions(v, "above the size bound 0.0005"));
+    // Only the loop's region is bounded so: every complaint is about a triangle inside it.
+    for (const std::string& p : v.problems)
+      if (p.rfind("triangle ", 0) == 0) CHECK(p.find("above the size bound 0.0005") != std::string::npos);
+  }
 }
 
 TEST_CASE("verify_mesh: time on a large synthetic mesh") {

@@ -17,10 +17,22 @@ namespace madd {
 // oriented so that the domain is on the left of prev -> vertex -> next.
 // prev == no_index marks a vertex where no separator may end (for example one
 // the boundary passes twice).
+// A vertex inside an interior segment (two_sided) has the domain on both
+// sides: prev and next are its neighbours along the segment, and a separator
+// ending there makes its angles with whichever side it lies on (it crosses
+// the segment there, with one partial separator on each side).
 struct BoundaryLinks {
   std::uint32_t prev = no_index;
   std::uint32_t next = no_index;
   float bonus = 1.0f;  // Sec. 5.1 smoothing factor (< 1 rewards separators ending here)
+  bool two_sided = false;
+  // No separator may end here, and the bisection, not the contraction, sees
+  // to it (a cut partial separator here is a conflict to repartition, like a
+  // pinch, Sec. 4.3): the end of an interior segment, a fork of several, or a
+  // ring vertex one meets. Contracting every edge here instead would fuse all
+  // the triangles around the point into one G'_D vertex, a large part of the
+  // face in a triangulation without interior points, and unbalance the split.
+  bool no_end = false;
 };
 
 struct MedialOptions {
@@ -33,6 +45,17 @@ struct MedialOptions {
 // ring edges to prev and next. Returns -1 when `towards` is not strictly
 // inside the domain's wedge at `at`. Orientation signs are exact.
 double boundary_angle(Point at, Point prev, Point next, Point towards);
+
+// The smallest angle the segment from vertex `at` towards `towards` makes
+// with the boundary or interior segment through `at` (links[at]), as
+// boundary_angle; for a two-sided vertex, on the side `towards` lies on.
+// Returns -1 where no separator may end (prev == no_index) or outside the
+// wedge; 180 at a no_end vertex (the bisection keeps separators off it).
+double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards);
+
+// Which side of the segment through a two-sided vertex `towards` lies on:
+// 0 left of prev -> at -> next, 1 right; always 0 for a boundary vertex.
+int link_side(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards);
 
 // Per-triangle result of the junction test (Sec. 3, properties 1-3).
 struct JunctionTest {

@@ -22,7 +22,9 @@ namespace madd {
 
 // The size bounds and the angle bound of a mesh. A triangle is too large
 // when its area exceeds the smallest of max_area, area_function at its
-// centroid and the background area there (each when set).
+// centroid and the background area there (each when set), and the max_area
+// of the input region it lies in (Region::max_area > 0; Triangle's -a with
+// regional constraints).
 struct MeshSizeOptions {
   double min_angle_deg = 30.0;  // -q: every triangle's smallest angle at least this, away from small input angles
   double max_area = 0.0;        // -a: 0 = no bound
@@ -66,8 +68,10 @@ struct MeshOptions {
 };
 
 // One mesh edge on a segment of the discretised decomposition: a boundary
-// edge (in one triangle; the input's marker, never 0) or a separator edge
-// (in one triangle of each of its two subdomains; marker 0).
+// edge (in one triangle; the input's marker, never 0), an interior-segment
+// edge (in two triangles of the one subdomain the piece is interior to; the
+// input's marker, never 0) or a separator edge (in one triangle of each of
+// its two subdomains; marker 0).
 struct MeshSegment {
   std::uint32_t a = 0;
   std::uint32_t b = 0;
@@ -93,9 +97,9 @@ struct Mesh {
   // mesh's first points, same indices).
   Decomposition decomposition;
   std::vector<Point> points;
-  // Triangle's rule: the marker of the boundary segment a point lies on
-  // (the larger at a corner of two), 0 for points inside the domain or only
-  // on separators.
+  // Triangle's rule: the marker of the boundary or interior segment a point
+  // lies on (the larger where several meet), 0 for points inside the domain
+  // (isolated input vertices included) or only on separators.
   std::vector<int> point_markers;
   // Counter-clockwise, grouped by subdomain: the triangles of subdomain k are
   // [subdomain_first_triangle[k], subdomain_first_triangle[k + 1]).
@@ -104,8 +108,16 @@ struct Mesh {
   // separators too; no_index on the domain boundary.
   std::vector<std::array<std::uint32_t, 3>> neighbours;
   std::vector<std::uint32_t> triangle_subdomain;
+  // Triangle's -A (docs/mesh.md, "Interior constraints and regions"): with
+  // regions in the input (decomposition.regions not empty), per triangle the
+  // attribute of the region whose face holds it (the face flooded from the
+  // region point without crossing a boundary or interior segment; separators
+  // are crossed; of two region points in one face the later wins), 0 in no
+  // region. Empty when the input has no regions.
+  std::vector<double> triangle_attribute;
   std::vector<std::uint32_t> subdomain_first_triangle;  // N + 1 offsets
-  // Every mesh edge on a boundary piece or separator, by piece, then along it.
+  // Every mesh edge on a boundary piece, interior piece or separator, by
+  // piece, then along it.
   std::vector<MeshSegment> segments;
   MeshShortfall shortfall;
   double min_angle_deg = 30.0;  // the bound it was refined to
@@ -160,9 +172,12 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 // triangles cover the domain exactly (areas summed exactly); conforming (every
 // interior edge in two triangles, no vertex inside another triangle's edge, each
 // separator matched edge for edge by its two subdomains, each boundary piece
-// covered by boundary edges); each subdomain's triangulation constrained
-// Delaunay (exact incircle across every unconstrained edge); every triangle
-// within the size bound; and every triangle's smallest angle at least the
+// covered by boundary edges, each interior piece by a chain of edges with
+// triangles of its subdomain on both sides); every isolated input vertex a
+// mesh vertex of its subdomain; each subdomain's triangulation constrained
+// Delaunay (exact incircle across every unconstrained edge); the region
+// attributes those of a flood from the region points; every triangle within
+// the size bound and its region's area bound; and every triangle's smallest angle at least the
 // bound minus 1e-9 degrees, except those counted in mesh.shortfall (their
 // number must match). Never throws on a malformed mesh: it reports problems.
 Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size);

@@ -19,7 +19,8 @@ namespace madd {
 std::string format_part_node(const MeshPart& part, unsigned first_index = 1);
 
 // PREFIX-R.ele: "<#triangles> 3 2", then "id a b c k global": local vertex ids,
-// counter-clockwise; the subdomain k and the triangle's global id as attributes.
+// counter-clockwise; the subdomain k and the triangle's global id as
+// attributes; with regions in the input "3 3" and the region attribute third.
 std::string format_part_ele(const MeshPart& part, unsigned first_index = 1);
 
 // PREFIX-R.vtu: format_mesh_vtu's grid of the part's triangles, with
@@ -28,8 +29,10 @@ std::string format_part_ele(const MeshPart& part, unsigned first_index = 1);
 std::string format_part_vtu(const MeshPart& part);
 
 // PREFIX.pvtu: the parallel VTK file that opens the pieces as one grid;
-// `pieces` are their file names relative to the .pvtu's directory.
-std::string format_parts_pvtu(const std::vector<std::string>& pieces);
+// `pieces` are their file names relative to the .pvtu's directory. With
+// region_attributes (the input has regions) the pieces' Float64
+// "region_attribute" cell array is declared too.
+std::string format_parts_pvtu(const std::vector<std::string>& pieces, bool region_attributes = false);
 
 // "<stem>-<share><extension>", share zero-padded as split_file_name pads it.
 std::string part_file_name(std::string_view stem, std::uint32_t share, std::uint32_t shares,

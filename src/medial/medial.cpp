@@ -26,12 +26,26 @@ double angle_coefficient(double angle_deg, double min_angle_deg) {
 }
 
 double end_angle(const Triangulation& tri, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards) {
-  const BoundaryLinks& l = links[at];
-  if (l.prev == no_index || l.next == no_index) return -1.0;
-  return boundary_angle(tri.points[at], tri.points[l.prev], tri.points[l.next], towards);
+  return link_angle(tri.points, links, at, towards);
 }
 
 } // namespace
+
+double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at,
+                  Point towards) {
+  const BoundaryLinks& l = links[at];
+  if (l.no_end) return 180.0;
+  if (l.prev == no_index || l.next == no_index) return -1.0;
+  const double left = boundary_angle(points[at], points[l.prev], points[l.next], towards);
+  if (left >= 0.0 || !l.two_sided) return left;
+  return boundary_angle(points[at], points[l.next], points[l.prev], towards);
+}
+
+int link_side(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards) {
+  const BoundaryLinks& l = links[at];
+  if (!l.two_sided || l.prev == no_index || l.next == no_index) return 0;
+  return boundary_angle(points[at], points[l.prev], points[l.next], towards) >= 0.0 ? 0 : 1;
+}
 
 double boundary_angle(Point at, Point prev, Point next, Point towards) {
   const double wedge = detail::ccw_angle_deg(at, next, prev);

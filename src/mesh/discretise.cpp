@@ -1,5 +1,5 @@
 // The decoupling step (docs/mesh.md, "Decoupling"): every segment of the
-// decomposition, separator or boundary piece, is split once into pieces no
+// decomposition, separator, boundary or interior piece, is split once into pieces no
 // longer than the local target length
 //
 //   h(p) = min(size_factor * sqrt(A(p)), feature_factor * lfs(p)),
@@ -19,6 +19,7 @@
 #include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
 #include "mesh/size_field.hpp"
+#include "mesh/subdomain_regions.hpp"
 
 namespace madd {
 
@@ -28,13 +29,16 @@ namespace {
 // Parameters in (0, 1) of the split points of segment j, from its lower-index
 // end: the integral of 1/h, sampled and summed by the trapezoid rule, split
 // into equal shares.
-// The target length at p on segment j, before grading from the ends.
-double local_target(Point p, const Segment& s, const SizeField& size, const FeatureDistance& features) {
+// The target length at p on segment j, before grading from the ends;
+// `regional` is the smallest area bound of the regions on j's sides
+// (+infinity for none), one more size bound.
+double local_target(Point p, const Segment& s, const SizeField& size, const FeatureDistance& features, double regional) {
   double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
     const double area = size.area_at(p);
     if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
   }
+  if (std::isfinite(regional)) h = std::min(h, size_factor * std::sqrt(regional));
   return h;
 }
 
@@ -44,12 +48,13 @@ double local_target(Point p, const Segment& s, const SizeField& size, const Feat
 // (whose local feature size ignores the boundary it ends on) meets short
 // boundary pieces, its first pieces are short too, and the triangle between
 // them has no reason to be skinny (docs/mesh.md, "Decoupling").
-std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size, const FeatureDistance& features) {
+std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size, const FeatureDistance& features,
+                                   const std::vector<double>& regional) {
   std::vector<double> out(d.points.size(), std::numeric_limits<double>::infinity());
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     const Segment& s = d.segments[j];
-    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], s, size, features));
-    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], s, size, features));
+    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], s, size, features, regional[j]));
+    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], s, size, features, regional[j]));
   }
   return out;
 }
@@ -59,13 +64,13 @@ std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size
 // separators (see detail::discretise).
 std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const SizeField& size,
                                      const FeatureDistance& features, const std::vector<double>& at_vertex,
-                                     bool graded_from_ends) {
+                                     bool graded_from_ends, double regional) {
   const Segment& s = d.segments[j];
   const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
   const Point a = d.points[lo], b = d.points[hi];
   const double length = distance(a, b);
   const auto target = [&](double t) {
-    const double h = local_target(lerp(a, b, t), s, size, features);
+    const double h = local_target(lerp(a, b, t), s, size, features, regional);
     if (!graded_from_ends) return h;
     return std::min(h, std::min(at_vertex[lo] + grading * t * length, at_vertex[hi] + grading * (1 - t) * length));
   };
@@ -120,8 +125,17 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 Decomposition detail::discretise(const Decomposition& decomposition, const MeshSizeOptions& size,
                                  bool boundary_by_features) {
   const detail::SizeField field(size);
-  const detail::FeatureDistance features(decomposition.points, decomposition.segments);
-  const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features);
+  // The features every piece resolves: every segment (interior ones too, so
+  // that a narrow gap between an interior segment and the shore is resolved)
+  // and every isolated input vertex, as a segment of length 0 (the distance
+  // to it is the distance to the point; it shares no end with any piece).
+  std::vector<Segment> all_features = decomposition.segments;
+  for (const Subdomain& sub : decomposition.subdomains)
+    for (const std::uint32_t v : sub.interior_points) all_features.push_back({v, v, 0});
+  const detail::FeatureDistance features(decomposition.points, all_features);
+  // Regions with an area bound bound the segments beside them too.
+  const std::vector<double> regional = detail::region_view(decomposition).segment_area;
+  const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features, regional);
   // Boundary pieces our refinement may split need only resolve the
   // separators near them (the decoupling); elsewhere it splits them itself.
   std::vector<Segment> separators;
@@ -140,7 +154,7 @@ Decomposition detail::discretise(const Decomposition& decomposition, const MeshS
     std::uint32_t from = lo;
     const bool only_separators = !boundary_by_features && !decomposition.is_separator(j);
     for (const double t : detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features,
-                                                   at_vertex, !only_separators)) {
+                                                   at_vertex, !only_separators, regional[j])) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
@@ -152,8 +166,14 @@ Decomposition detail::discretise(const Decomposition& decomposition, const MeshS
     out.segments.push_back({from, hi, s.marker});
     out.segment_origin.push_back(decomposition.segment_origin[j]);
   }
-  // Rings: each old segment becomes its pieces, in the ring's direction.
+  // Rings: each old segment becomes its pieces, in the ring's direction;
+  // interior segments become their pieces (indices increase with j, so the
+  // list stays sorted).
   for (Subdomain& sub : out.subdomains) {
+    std::vector<std::uint32_t> interior;
+    for (const std::uint32_t j : sub.interior_segments) interior.insert(interior.end(), pieces[j].begin(), pieces[j].end());
+    std::sort(interior.begin(), interior.end());
+    sub.interior_segments = std::move(interior);
     for (std::size_t r = 0; r < sub.rings.size(); ++r) {
       std::vector<std::uint32_t> ring, ring_segments;
       for (std::size_t k = 0; k < sub.rings[r].size(); ++k) {

@@ -9,7 +9,8 @@
 namespace madd::detail {
 
 // madd::discretise when boundary_by_features is true. When false, boundary
-// pieces resolve only the size bound and the separators near them (half
+// and interior pieces (both in one subdomain only) resolve only the size
+// bound and the separators near them (half
 // their distance to the nearest separator): our refinement splits them where
 // a point encroaches them (they are in one subdomain, so that keeps the mesh
 // conforming), as Ruppert's algorithm does, instead of splitting them ahead

@@ -27,6 +27,26 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k) {
       out.splittable.push_back(!d.is_separator(j));
     }
   }
+  // Interior pieces and isolated vertices: constraints inside the rings. A
+  // piece's end is a ring vertex (a segment from the boundary inwards) or
+  // another interior vertex, listed once, after the rings.
+  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
+  for (std::uint32_t v = 0; v < out.to_global.size(); ++v) local_of.emplace(out.to_global[v], v);
+  const auto local_vertex = [&](std::uint32_t g) {
+    const auto [it, added] = local_of.emplace(g, static_cast<std::uint32_t>(out.to_global.size()));
+    if (added) {
+      out.pslg.points.push_back(d.points[g]);
+      out.to_global.push_back(g);
+    }
+    return it->second;
+  };
+  for (const std::uint32_t j : s.interior_segments) {
+    const Segment& g = d.segments[j];
+    out.pslg.segments.push_back({local_vertex(g.a), local_vertex(g.b), g.marker});
+    out.piece.push_back(j);
+    out.splittable.push_back(true);
+  }
+  for (const std::uint32_t v : s.interior_points) local_vertex(v);
   out.pslg.holes = s.hole_points;
   return out;
 }
@@ -43,8 +63,9 @@ std::vector<std::uint32_t> global_ids(const LocalDomain& local, const SubdomainM
   return ids;
 }
 
-// The boundary edges of each split boundary piece, along its local segment:
-// its end, the Steiner points on it by parameter, its other end.
+// The edges of each boundary or interior piece (refinement may split both),
+// along its local segment: its end, the Steiner points on it by parameter,
+// its other end.
 void add_boundary_segments(Mesh& m, const LocalDomain& local, const SubdomainMesh& piece,
                            const std::vector<std::uint32_t>& ids) {
   std::vector<std::tuple<std::uint32_t, double, std::uint32_t>> on;  // (local segment, parameter, vertex)
@@ -116,6 +137,7 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   m.triangles.reserve(triangles);
   m.neighbours.reserve(triangles);
   m.triangle_subdomain.reserve(triangles);
+  if (!d.regions.empty()) m.triangle_attribute.reserve(triangles);
   m.subdomain_first_triangle.push_back(0);
   std::vector<std::vector<MeshSegment>> boundary(d.segments.size());
   std::vector<bool> kept_separator(d.segments.size(), kept == nullptr);
@@ -143,6 +165,12 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
       m.neighbours.push_back({n[0] == no_index ? no_index : base + n[0], n[1] == no_index ? no_index : base + n[1],
                               n[2] == no_index ? no_index : base + n[2]});
       m.triangle_subdomain.push_back(k);
+    }
+    if (!d.regions.empty()) {
+      if (p.triangle_attribute.size() == p.triangles.size())
+        m.triangle_attribute.insert(m.triangle_attribute.end(), p.triangle_attribute.begin(), p.triangle_attribute.end());
+      else
+        m.triangle_attribute.resize(m.triangles.size(), 0.0);  // a subdomain in no region
     }
     m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
     std::vector<MeshSegment> mine;

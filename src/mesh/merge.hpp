@@ -11,11 +11,13 @@
 namespace madd::detail {
 
 // Subdomain k as a standalone domain: its ring vertices (ring by ring, in
-// ring order) and its ring segments, with what refinement and the merge need
-// to map them back.
+// ring order) and its ring segments, then its interior pieces (in the order
+// of Subdomain::interior_segments; their ends not on a ring as new local
+// points in order of first use) and its isolated vertices, with what
+// refinement and the merge need to map them back.
 struct LocalDomain {
   Pslg pslg;
-  std::vector<bool> splittable;         // per local segment: a boundary piece (never a separator)
+  std::vector<bool> splittable;         // per local segment: a boundary or interior piece (never a separator)
   std::vector<std::uint32_t> to_global; // per local point: its point of the decomposition
   std::vector<std::uint32_t> piece;     // per local segment: its segment of the decomposition
 };

@@ -21,6 +21,7 @@
 #include "mesh/refine.hpp"
 #include "mesh/rounds.hpp"
 #include "mesh/size_field.hpp"
+#include "mesh/subdomain_regions.hpp"
 #include "mesh/work.hpp"
 
 namespace madd {
@@ -48,7 +49,8 @@ unsigned thread_count(unsigned asked, std::size_t work) {
 // the last ones to finish are small; results land in their own slots.
 void refine_some(const Decomposition& d, const MeshOptions& options, const detail::SizeField& field,
                  const std::vector<double>& work, const detail::ResourceGuard& guard, MeshReport& report,
-                 const std::vector<std::uint32_t>& todo, std::vector<detail::SubdomainMesh>& out) {
+                 const std::vector<std::uint32_t>& todo, const std::vector<std::vector<Region>>& regions,
+                 std::vector<detail::SubdomainMesh>& out) {
   const auto n = static_cast<std::uint32_t>(todo.size());
   const auto all = static_cast<std::uint32_t>(d.subdomains.size());
   std::vector<std::uint32_t> order = todo;
@@ -73,7 +75,8 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
       const std::uint32_t k = order[i];
       try {
         detail::Stopwatch clock;
-        const detail::LocalDomain local = detail::local_domain(d, k);
+        detail::LocalDomain local = detail::local_domain(d, k);
+        local.pslg.regions = regions[k];
         detail::RefineSettings mine = settings;
         mine.meshed = &done;
         mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
@@ -127,13 +130,16 @@ void throw_failed_check(const Verification& v) {
 
 void refine_in_rounds(Decomposition& d, const MeshOptions& options, const SizeField& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
-                      const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces) {
+                      const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
+                      std::vector<std::vector<Region>>& regions) {
   pieces.assign(d.subdomains.size(), SubdomainMesh{});
+  // Splitting separators later changes no face, so the regions hold for every round.
+  regions = region_view(d).regions;
   std::vector<std::uint32_t> todo;
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
     if (mine[k]) todo.push_back(k);
   for (int round = 0;; ++round) {
-    refine_some(d, options, field, work, guard, report, todo, pieces);
+    refine_some(d, options, field, work, guard, report, todo, regions, pieces);
     if (round == max_separator_rounds) break;
     const std::vector<std::uint32_t> blocking = union_of(blocking_separators(d, todo, pieces));
     if (blocking.empty()) break;
@@ -158,7 +164,8 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
-  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces);
+  std::vector<std::vector<Region>> regions;
+  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces, regions);
   report.phases.push_back({"refine", clock.lap()});
   Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
   report.phases.push_back({"merge", clock.lap()});

@@ -69,17 +69,19 @@ void for_each_on_threads(const std::vector<std::uint32_t>& items, unsigned threa
 }
 
 // Subdomain k of `d` as a domain of its own, every ring segment a boundary
-// piece (a separator's marker 0 becomes 1, as an unmarked boundary), so that
+// piece (a separator's marker 0 becomes 1, as an unmarked boundary), its
+// interior pieces and isolated vertices its own, and its regions, so that
 // verify_mesh can check its mesh alone.
 struct SubdomainAlone {
   Pslg domain;
   Decomposition decomposition;
 };
 
-SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k) {
+SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions) {
   const detail::LocalDomain local = detail::local_domain(d, k);
   SubdomainAlone out;
   out.domain = local.pslg;
+  out.domain.regions = regions;  // the subdomain's own regions (mesh/subdomain_regions.hpp)
   for (Segment& s : out.domain.segments)
     if (s.marker == 0) s.marker = 1;
   Decomposition& dk = out.decomposition;
@@ -88,6 +90,7 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k) {
   dk.segment_origin.resize(dk.segments.size());
   std::iota(dk.segment_origin.begin(), dk.segment_origin.end(), 0u);
   dk.holes = out.domain.holes;
+  dk.regions = out.domain.regions;
   dk.min_angle_deg = d.min_angle_deg;
   Subdomain s = d.subdomains[k];
   std::uint32_t next = 0;
@@ -96,13 +99,19 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k) {
       s.rings[r][i] = next;
       s.ring_segments[r][i] = next;
     }
+  // Interior pieces follow the ring segments, in order; isolated vertices
+  // are the local points of their global ids.
+  for (std::uint32_t& j : s.interior_segments) j = next++;
+  for (std::uint32_t& v : s.interior_points)
+    v = static_cast<std::uint32_t>(std::find(local.to_global.begin(), local.to_global.end(), v) - local.to_global.begin());
+  std::sort(s.interior_points.begin(), s.interior_points.end());
   dk.subdomains.push_back(std::move(s));
   return out;
 }
 
-void verify_subdomain(const Decomposition& d, std::uint32_t k, const detail::SubdomainMesh& piece,
-                      const MeshOptions& options) {
-  const SubdomainAlone alone = subdomain_alone(d, k);
+void verify_subdomain(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions,
+                      const detail::SubdomainMesh& piece, const MeshOptions& options) {
+  const SubdomainAlone alone = subdomain_alone(d, k, regions);
   std::vector<detail::SubdomainMesh> one{piece};
   const Mesh m = detail::merge(alone.decomposition, one, options.size.min_angle_deg);
   const Verification v = verify_mesh(m, alone.domain, options.size);
@@ -151,12 +160,21 @@ void keep_used_points(MeshPart& part, std::vector<std::uint64_t>& ids) {
 }
 
 // Per vertex of the decomposition: the lowest share whose subdomains have it
-// on a ring (every decomposition vertex a subdomain mesh uses is on its rings).
+// (every decomposition vertex a subdomain mesh uses is on its rings, on its
+// interior pieces or one of its isolated vertices).
 std::vector<std::uint32_t> decomposition_point_owner(const Decomposition& d, const std::vector<std::uint32_t>& owner) {
   std::vector<std::uint32_t> out(d.points.size(), no_index);
-  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
-    for (const auto& ring : d.subdomains[k].rings)
-      for (const std::uint32_t v : ring) out[v] = std::min(out[v], owner[k]);
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    const Subdomain& s = d.subdomains[k];
+    const auto take = [&](std::uint32_t v) { out[v] = std::min(out[v], owner[k]); };
+    for (const auto& ring : s.rings)
+      for (const std::uint32_t v : ring) take(v);
+    for (const std::uint32_t j : s.interior_segments) {
+      take(d.segments[j].a);
+      take(d.segments[j].b);
+    }
+    for (const std::uint32_t v : s.interior_points) take(v);
+  }
   return out;
 }
 
@@ -186,11 +204,13 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
       part.subdomains.push_back(k);
     }
   std::vector<detail::SubdomainMesh> pieces;
-  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces);
+  std::vector<std::vector<Region>> regions;
+  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces,
+                           regions);
   report.phases.push_back({"refine", clock.lap()});
   if (options.verify) {
     for_each_on_threads(part.subdomains, options.decomposition.threads,
-                        [&](std::uint32_t k) { verify_subdomain(d, k, pieces[k], options); });
+                        [&](std::uint32_t k) { verify_subdomain(d, k, regions[k], pieces[k], options); });
   }
   report.phases.push_back({"verify", clock.lap()});
 
@@ -198,9 +218,9 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
   // offsets mesh()'s merge numbers them with.
   std::vector<std::uint64_t> counts(2 * std::size_t{n}, 0);
   for (const std::uint32_t k : part.subdomains) {
-    std::size_t ring_vertices = 0;
-    for (const auto& ring : d.subdomains[k].rings) ring_vertices += ring.size();
-    counts[k] = pieces[k].points.size() - ring_vertices;
+    // The subdomain's own decomposition points (rings, interior pieces'
+    // ends, isolated vertices) come first in its mesh; the rest are Steiner points.
+    counts[k] = pieces[k].points.size() - detail::local_domain(d, k).to_global.size();
     counts[n + k] = pieces[k].triangles.size();
   }
   counts = exchange.sum_of(counts);

@@ -26,6 +26,7 @@
 #include <unordered_set>
 
 #include "madd/error.hpp"
+#include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/refinement_mesh.hpp"
 #include "quality/mesh_angle.hpp"
@@ -59,7 +60,10 @@ TriangleShape shape_of(Point a, Point b, Point c) {
 
 class Refiner {
 public:
-  Refiner(RefinementMesh& mesh, const RefineSettings& settings) : m_(mesh), settings_(settings) {
+  // label_area[l]: the area bound of the triangles labelled l (their
+  // region's; +infinity for none).
+  Refiner(RefinementMesh& mesh, const RefineSettings& settings, const std::vector<double>& label_area)
+      : m_(mesh), settings_(settings), label_area_(label_area) {
     const double theta = settings.min_angle_deg * std::numbers::pi / 180.0;
     beta_ = theta > 0 ? 1.0 / (2.0 * std::sin(theta)) : std::numeric_limits<double>::infinity();
     find_sharp_corners();
@@ -88,8 +92,10 @@ private:
 
   RefinementMesh& m_;
   const RefineSettings& settings_;
+  const std::vector<double>& label_area_;
   double beta_ = 1.0;  // circumradius / shortest edge bound: 1 / (2 sin theta)
-  std::vector<std::uint8_t> sharp_;  // per input vertex: two boundary pieces meet there below 60 degrees
+  std::vector<std::uint8_t> sharp_;  // per input vertex: two pieces meet there below 60 degrees
+  std::vector<std::uint8_t> sharp_arm_;  // per segment end (2 s at a, 2 s + 1 at b): it bounds a sector below 60 degrees
   // Per input vertex: the unit of the shells boundary subsegments are split
   // in around it (0: none; see find_sharp_corners).
   std::vector<double> shell_unit_;
@@ -106,45 +112,100 @@ private:
   std::vector<std::uint32_t> encroached_;  // scratch of try_triangle
 };
 
-void Refiner::find_sharp_corners() {
-  sharp_.assign(m_.input_vertex_count(), 0);
-  shell_unit_.assign(m_.input_vertex_count(), 0.0);
-  // Around each input vertex, the angle between consecutive boundary pieces
-  // inside the subdomain: the sum of the triangle corners between them.
-  std::vector<double> angle(m_.input_vertex_count(), 0.0);
-  std::vector<std::uint8_t> pieces(m_.input_vertex_count(), 0), splittable(m_.input_vertex_count(), 0);
-  std::vector<double> fixed_length(m_.input_vertex_count(), 0.0);  // a separator piece's length at the vertex
-  for (std::uint32_t t = 0; t < m_.slot_count(); ++t) {
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t v = m_.corner(t, i);
-      angle[v] += angle_at(m_.point(v), m_.point(m_.corner(t, (i + 1) % 3)), m_.point(m_.corner(t, (i + 2) % 3)));
+// The sectors around input vertex corners: each sector is the fan of
+// triangle corners at one vertex between two consecutive segments there
+// (across unconstrained edges only); calls sector(v, angle, arms) once per
+// sector, arms the segments bounding it (two, or one at a dangling end).
+template <class Sector>
+void for_each_sector(const RefinementMesh& m, Sector&& sector) {
+  std::vector<std::uint8_t> seen(3 * std::size_t{m.slot_count()}, 0);
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t t0 = 0; t0 < m.slot_count(); ++t0) {
+    if (!m.alive(t0)) continue;
+    for (std::uint32_t i0 = 0; i0 < 3; ++i0) {
+      const std::uint32_t v = m.corner(t0, static_cast<int>(i0));
+      if (v >= m.input_vertex_count() || seen[3 * t0 + i0]) continue;
+      double angle = 0;
+      std::uint32_t arms[2] = {no_index, no_index};
+      seen[3 * t0 + i0] = 1;
+      stack.assign(1, 3 * t0 + i0);
+      while (!stack.empty()) {
+        const std::uint32_t c = stack.back();
+        stack.pop_back();
+        const std::uint32_t t = c / 3, i = c % 3;
+        angle += angle_at(m.point(v), m.point(m.corner(t, static_cast<int>((i + 1) % 3))),
+                          m.point(m.corner(t, static_cast<int>((i + 2) % 3))));
+        // The two edges of t at v: opposite its other two corners.
+        for (const std::uint32_t e : {(i + 1) % 3, (i + 2) % 3}) {
+          const std::uint32_t h = 3 * t + e;
+          if (m.segment_of(h) != no_index) {
+            (arms[0] == no_index ? arms[0] : arms[1]) = m.segment_of(h);
+            continue;
+          }
+          if (m.twin(h) == no_index) continue;
+          const std::uint32_t u = m.twin(h) / 3;
+          std::uint32_t j = 0;
+          while (m.corner(u, static_cast<int>(j)) != v) ++j;
+          if (seen[3 * u + j]) continue;
+          seen[3 * u + j] = 1;
+          stack.push_back(3 * u + j);
+        }
+      }
+      sector(v, angle, arms);
     }
   }
+}
+
+void Refiner::find_sharp_corners() {
+  const std::uint32_t n = m_.input_vertex_count();
+  sharp_.assign(n, 0);
+  shell_unit_.assign(n, 0.0);
+  std::vector<std::uint32_t> pieces(n, 0), splittable(n, 0);
+  std::vector<double> fixed_length(n, std::numeric_limits<double>::infinity());  // the shortest separator piece at the vertex
   for (std::size_t s = 0; s < m_.segment_count(); ++s) {
     const RefinementSegment& seg = m_.segment(static_cast<std::uint32_t>(s));
     for (const std::uint32_t v : {seg.a, seg.b}) {
       ++pieces[v];
       if (seg.splittable) ++splittable[v];
-      else fixed_length[v] = distance(m_.point(seg.a), m_.point(seg.b));
+      else fixed_length[v] = std::min(fixed_length[v], distance(m_.point(seg.a), m_.point(seg.b)));
     }
   }
-  // A vertex with two pieces has one corner: its whole triangle fan. Shells
-  // go around every real corner, not only sharp ones: with plain midpoints
-  // the two sides of a corner are split at unrelated lengths, and at bounds
-  // above Ruppert's 20.7 degrees the skinny corner triangles that makes can
-  // feed each other into the corner without end (seen at 33 degrees on a 98
-  // degree corner of the archipelago: 35,000 vertices within 1e-3 of it).
-  // Between two boundary pieces the shells are powers of two; where a
-  // separator meets the boundary they are powers of two of the separator's
-  // piece there (which is never split), so the corner triangle ends up
-  // isosceles with the corner's angle (>= Phi0) at its apex. A vertex between
-  // two collinear boundary pieces (a split point of the decoupling) is no corner.
+  // The sectors at each vertex between consecutive segments inside the
+  // subdomain (one at a ring vertex between two ring pieces; two or more
+  // where interior segments meet): the smallest decides a sharp corner, and
+  // any sector off a straight angle makes the vertex a corner.
   constexpr double straight = 179.0 * std::numbers::pi / 180.0;
-  for (std::uint32_t v = 0; v < m_.input_vertex_count(); ++v) {
-    sharp_[v] = pieces[v] == 2 && angle[v] < sharp_corner_deg * std::numbers::pi / 180.0 ? 1 : 0;
-    if (pieces[v] != 2) continue;
-    if (splittable[v] == 2 && (angle[v] < straight || angle[v] > 2 * std::numbers::pi - straight)) shell_unit_[v] = 1.0;
-    if (splittable[v] == 1) shell_unit_[v] = fixed_length[v];
+  std::vector<double> smallest(n, std::numeric_limits<double>::infinity());
+  std::vector<std::uint8_t> bent(n, 0);
+  sharp_arm_.assign(2 * m_.segment_count(), 0);
+  for_each_sector(m_, [&](std::uint32_t v, double angle, const std::uint32_t* arms) {
+    smallest[v] = std::min(smallest[v], angle);
+    if (angle < sharp_corner_deg * std::numbers::pi / 180.0)
+      for (int k = 0; k < 2; ++k)
+        if (arms[k] != no_index) sharp_arm_[2 * arms[k] + (m_.segment(arms[k]).b == v ? 1 : 0)] = 1;
+    if (angle < straight || angle > 2 * std::numbers::pi - straight) bent[v] = 1;
+  });
+  // Shells go around every real corner, not only sharp ones: with plain
+  // midpoints the two sides of a corner are split at unrelated lengths, and
+  // at bounds above Ruppert's 20.7 degrees the skinny corner triangles that
+  // makes can feed each other into the corner without end (seen at 33
+  // degrees on a 98 degree corner of the archipelago: 35,000 vertices within
+  // 1e-3 of it). Between splittable pieces (boundary or interior) the shells
+  // are powers of two; where a separator meets them they are powers of two
+  // of the separator's piece there (which is never split), so the corner
+  // triangle ends up isosceles with the corner's angle (>= Phi0) at its
+  // apex. A vertex between two collinear pieces (a split point of the
+  // decoupling, or a straight vertex of an interior polyline) is no corner;
+  // a vertex where three or more pieces meet always is.
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (pieces[v] < 2) continue;  // an isolated vertex or a dangling end: a full turn, no corner
+    sharp_[v] = smallest[v] < sharp_corner_deg * std::numbers::pi / 180.0 ? 1 : 0;
+    if (splittable[v] == 0) continue;
+    if (splittable[v] == pieces[v]) {
+      if (pieces[v] > 2 || bent[v]) shell_unit_[v] = 1.0;
+    } else {
+      shell_unit_[v] = fixed_length[v];
+    }
   }
 }
 
@@ -159,6 +220,9 @@ bool Refiner::is_bad(std::uint32_t t) const {
   const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
   const TriangleShape s = shape_of(a, b, c);
   if (too_skinny(s)) return true;
+  // The regional bound (Triangle's -a with regions) and the size bound: the smaller wins.
+  const double region = label_area_[m_.label(t)];
+  if (s.area > region) return true;
   return settings_.size && s.area > settings_.size->area_at(triangle_centroid(a, b, c));
 }
 
@@ -182,8 +246,12 @@ Reason Refiner::input_angle_rule(std::uint32_t t, const TriangleShape& s) const 
   };
   std::uint32_t xa = no_index, xb = no_index, ya = no_index, yb = no_index;
   if (!corner_of(x, xa, xb) || !corner_of(y, ya, yb)) return Reason::none;
+  // x and y must lie on the two arms of the sharp sector (the angle x w y
+  // below 60 degrees): where three or more segments meet at w, two pieces
+  // at a wide angle there are no sharp corner.
   for (const std::uint32_t w : {xa, xb}) {
     if (w >= sharp_.size() || !sharp_[w] || (w != ya && w != yb)) continue;
+    if (angle_at(m_.point(w), m_.point(x), m_.point(y)) >= sharp_corner_deg * std::numbers::pi / 180.0) continue;
     const double dx = distance(m_.point(w), m_.point(x)), dy = distance(m_.point(w), m_.point(y));
     if (std::abs(dx - dy) <= 0.05 * std::max(dx, dy)) return Reason::input_angle;
   }
@@ -210,10 +278,14 @@ Point Refiner::insertion_point(std::uint32_t t, const TriangleShape& s) const {
 }
 
 // The subsegment has an end at a sharp corner (an end of its segment where
-// two pieces meet below 60 degrees).
+// it bounds a sector below 60 degrees; where three or more pieces meet, the
+// others there are no sharp corner).
 bool Refiner::at_sharp_corner(std::uint32_t h) const {
-  const RefinementSegment& s = m_.segment(m_.segment_of(h));
-  const auto sharp_end = [&](std::uint32_t v) { return (v == s.a || v == s.b) && v < sharp_.size() && sharp_[v]; };
+  const std::uint32_t sid = m_.segment_of(h);
+  const RefinementSegment& s = m_.segment(sid);
+  const auto sharp_end = [&](std::uint32_t v) {
+    return (v == s.a && sharp_arm_[2 * sid] != 0) || (v == s.b && sharp_arm_[2 * sid + 1] != 0);
+  };
   return sharp_end(m_.origin(h)) || sharp_end(m_.dest(h));
 }
 
@@ -308,6 +380,14 @@ void Refiner::try_triangle(std::uint32_t t) {
     reason_[t] = Reason::precision;
     return;
   } else {
+    // p on a segment edge of its triangle (a right triangle's circumcentre
+    // on its hypotenuse): inside that subsegment's diametral circle, so it
+    // encroaches (the cavity could not be star-shaped from p anyway).
+    for (std::uint32_t h = 3 * w.triangle; h < 3 * w.triangle + 3; ++h)
+      if (m_.segment_of(h) != no_index && orient2d(m_.point(m_.origin(h)), m_.point(m_.dest(h)), p) == 0)
+        encroached.push_back(h);
+  }
+  if (w.triangle != no_index && encroached.empty()) {
     if (!m_.prepare(w.triangle, p)) {
       reason_[t] = Reason::precision;
       return;
@@ -339,12 +419,15 @@ void Refiner::try_triangle(std::uint32_t t) {
   }
   bool split_any = false, separator = false;
   const double shortest = std::sqrt(s.l2[s.shortest]);
+  const bool skinny = too_skinny(s);
   for (const Encroached& e : list) {
     if (!e.splittable) {
       separator = true;
       continue;
     }
-    if (e.sharp && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
+    // Shewchuk's rule is for skinny triangles: one bad only by its size
+    // still splits the arm (its size bound ends that).
+    if (e.sharp && skinny && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
     split_any |= split_subsegment(e.a, e.b);
   }
   if (split_any) {
@@ -418,13 +501,36 @@ std::vector<RefinementSegment> refinement_segments(const Pslg& pslg, const std::
   return out;
 }
 
+// The labels of the triangles of `pslg`'s triangulation: 1 + the index of
+// the region of pslg.regions whose face holds it, 0 for none (Triangle's -A
+// on the region numbers, so the flood is the triangulator's own).
+Triangulation labelled_triangulation(const Pslg& pslg, std::vector<std::uint32_t>& labels) {
+  if (pslg.regions.empty()) {
+    labels.clear();
+    return triangulate(pslg);
+  }
+  Pslg numbered = pslg;
+  for (std::size_t r = 0; r < numbered.regions.size(); ++r) numbered.regions[r].attribute = static_cast<double>(r + 1);
+  TriangulateOptions options;
+  options.region_attributes = true;
+  Triangulation tri = triangulate(numbered, options);
+  labels.resize(tri.triangles.size());
+  for (std::size_t t = 0; t < labels.size(); ++t) labels[t] = static_cast<std::uint32_t>(tri.attributes[t]);
+  return tri;
+}
+
 } // namespace
 
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings) {
-  RefinementMesh m(triangulate(pslg), refinement_segments(pslg, splittable));
+  std::vector<std::uint32_t> labels;
+  const Triangulation tri = labelled_triangulation(pslg, labels);
+  RefinementMesh m(tri, refinement_segments(pslg, splittable), labels);
+  std::vector<double> label_area(pslg.regions.size() + 1, std::numeric_limits<double>::infinity());
+  for (std::size_t r = 0; r < pslg.regions.size(); ++r)
+    if (pslg.regions[r].max_area > 0) label_area[r + 1] = pslg.regions[r].max_area;
   // 10% over the estimate: most meshes fit without a copy, few waste much.
   m.reserve(static_cast<std::size_t>(std::min(1.1 * settings.expected_triangles, 4e8)));
-  Refiner refiner(m, settings);
+  Refiner refiner(m, settings, label_area);
   refiner.run();
   SubdomainMesh out;
   out.shortfall = refiner.shortfall(out.blocking_separators);
@@ -440,6 +546,7 @@ SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splitt
     if (!m.alive(t)) continue;
     index[t] = static_cast<std::uint32_t>(out.triangles.size());
     out.triangles.push_back({m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)});
+    if (!pslg.regions.empty()) out.triangle_attribute.push_back(m.label(t) == 0 ? 0.0 : pslg.regions[m.label(t) - 1].attribute);
   }
   out.neighbours.resize(out.triangles.size());
   for (std::uint32_t t = 0; t < m.slot_count(); ++t) {

@@ -2,8 +2,8 @@
 // Delaunay refinement of one subdomain (docs/mesh.md, "Refinement"): Ruppert's
 // algorithm with Chew's and Shewchuk's rules for small angles, and Ungor's
 // off-centres. Separators are never split (the decoupling makes that
-// unnecessary where the guarantee holds); boundary pieces are split like
-// Ruppert's segments, at powers of two from a sharp input corner
+// unnecessary where the guarantee holds); boundary and interior pieces are
+// split like Ruppert's segments, at powers of two from a sharp input corner
 // (concentric shells).
 #include <array>
 #include <atomic>
@@ -38,6 +38,9 @@ struct SubdomainMesh {
   std::vector<double> point_parameter;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 3>> neighbours;  // across edge i (opposite corner i); no_index outside
+  // With regions (the input Pslg's regions not empty): per triangle the
+  // attribute of the region whose face holds it, 0 for none.
+  std::vector<double> triangle_attribute;
   MeshShortfall shortfall;
   // Separator segments (local ids) whose diametral circle a point that would
   // fix a bad triangle fell into: split them (for both subdomains) and mesh
@@ -46,8 +49,11 @@ struct SubdomainMesh {
 };
 
 // Refines the constrained Delaunay triangulation of `pslg` (one closed
-// subdomain: rings of segments, hole points). Segment i may be split when
-// splittable[i]. Deterministic.
+// subdomain: rings of segments, hole points, interior segments and isolated
+// vertices inside). Segment i may be split when splittable[i]. pslg.regions
+// are the subdomain's regions (Triangle's -A and -a: each triangle gets the
+// attribute of the region whose face holds it, and no more than its
+// max_area when > 0). Deterministic.
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings);
 
 } // namespace madd::detail

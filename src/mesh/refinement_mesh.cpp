@@ -9,7 +9,8 @@
 
 namespace madd::detail {
 
-RefinementMesh::RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments)
+RefinementMesh::RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments,
+                               const std::vector<std::uint32_t>& labels)
     : points_(tri.points), segments_(std::move(segments)) {
   const auto n = static_cast<std::uint32_t>(points_.size());
   input_vertices_ = n;
@@ -21,6 +22,8 @@ RefinementMesh::RefinementMesh(const Triangulation& tri, std::vector<RefinementS
   tn_.assign(3 * std::size_t{nt}, no_index);
   seg_.resize(3 * std::size_t{nt});
   alive_.assign(nt, 1);
+  label_.assign(nt, 0);
+  if (labels.size() == nt) label_ = labels;
   for (std::uint32_t t = 0; t < nt; ++t) {
     for (std::uint32_t i = 0; i < 3; ++i) {
       tv_[3 * t + i] = tri.triangles[t][i];
@@ -48,6 +51,7 @@ void RefinementMesh::reserve(std::size_t triangles) {
   tn_.reserve(3 * triangles);
   seg_.reserve(3 * triangles);
   alive_.reserve(triangles);
+  label_.reserve(triangles);
   const std::size_t vertices = triangles / 2 + 16;
   points_.reserve(vertices);
   vertex_segment_.reserve(vertices);
@@ -120,13 +124,17 @@ std::uint32_t RefinementMesh::new_slot() {
   tn_.resize(tn_.size() + 3);
   seg_.resize(seg_.size() + 3);
   alive_.push_back(0);
+  label_.push_back(0);
   return t;
 }
 
 // Grows the cavity of p from t (always in it: p lies in its closure) across
 // unconstrained edges into every triangle whose circumcircle strictly holds p,
-// recording the rim. `skip`, a subsegment being split, is left off the rim.
-bool RefinementMesh::collect_cavity(std::uint32_t t, Point p, std::uint32_t skip) {
+// recording the rim. `skip`, a subsegment being split, is left off the rim;
+// an interior subsegment's twin `skip_twin` too, and the cavity starts on
+// both its sides (p, strictly inside the edge, is strictly inside both
+// triangles' circumcircles).
+bool RefinementMesh::collect_cavity(std::uint32_t t, Point p, std::uint32_t skip, std::uint32_t skip_twin) {
   if (in_cavity_.size() < slot_count()) in_cavity_.resize(slot_count(), 0);
   cavity_.clear();
   rim_.clear();
@@ -135,6 +143,11 @@ bool RefinementMesh::collect_cavity(std::uint32_t t, Point p, std::uint32_t skip
   in_cavity_[t] = 1;
   cavity_.push_back(t);
   stack_.push_back(t);
+  if (skip_twin != no_index) {
+    in_cavity_[skip_twin / 3] = 1;
+    cavity_.push_back(skip_twin / 3);
+    stack_.push_back(skip_twin / 3);
+  }
   const Point* P = points_.data();
   while (!stack_.empty()) {
     const std::uint32_t c = stack_.back();
@@ -151,8 +164,8 @@ bool RefinementMesh::collect_cavity(std::uint32_t t, Point p, std::uint32_t skip
           continue;
         }
       }
-      if (h == skip) continue;
-      rim_.push_back({origin(h), dest(h), out, seg_[h]});
+      if (h == skip || h == skip_twin) continue;
+      rim_.push_back({origin(h), dest(h), out, seg_[h], label_[c]});
       if (seg_[h] != no_index) rim_segments_.push_back(h);
     }
   }
@@ -169,12 +182,14 @@ void RefinementMesh::clear_cavity() {
   rim_.clear();
   rim_segments_.clear();
   skip_ = no_index;
+  skip_twin_ = no_index;
 }
 
 bool RefinementMesh::prepare(std::uint32_t t, Point p) {
   pending_ = p;
   skip_ = no_index;
-  if (collect_cavity(t, p, no_index)) return true;
+  skip_twin_ = no_index;
+  if (collect_cavity(t, p, no_index, no_index)) return true;
   clear_cavity();
   return false;
 }
@@ -186,9 +201,14 @@ std::uint32_t RefinementMesh::commit() { return fan(no_index, 0.0); }
 // Replaces the cavity by the fan of triangles (v, a, b), one per rim edge
 // a->b, v the new vertex at pending_. With a split (skip_ set) the fan is
 // open at the split subsegment a0->b0, whose halves a0->v and v->b0 become
-// segment edges facing the outside.
+// segment edges facing the outside. Splitting an interior subsegment the
+// fan is closed (the cavity holds both sides), and the two fan edges from v
+// to a0 and to b0 become the halves.
 std::uint32_t RefinementMesh::fan(std::uint32_t vertex_segment, double parameter) {
-  const std::uint32_t split_segment = skip_ == no_index ? no_index : seg_[skip_];  // read before slots are reused
+  // Read before slots are reused.
+  const std::uint32_t split_segment = skip_ == no_index ? no_index : seg_[skip_];
+  const std::uint32_t a0 = skip_twin_ == no_index ? no_index : origin(skip_);
+  const std::uint32_t b0 = skip_twin_ == no_index ? no_index : dest(skip_);
   const auto v = static_cast<std::uint32_t>(points_.size());
   points_.push_back(pending_);
   vertex_segment_.push_back(vertex_segment);
@@ -213,6 +233,7 @@ std::uint32_t RefinementMesh::fan(std::uint32_t vertex_segment, double parameter
     if (r.outer != no_index) tn_[r.outer] = 3 * t;
     tn_[3 * t + 1] = tn_[3 * t + 2] = no_index;
     seg_[3 * t + 1] = seg_[3 * t + 2] = no_index;
+    label_[t] = r.label;
     link_[r.a] = t;
     set_corner_home(t);
     fresh_.push_back(t);
@@ -235,16 +256,24 @@ std::uint32_t RefinementMesh::fan(std::uint32_t vertex_segment, double parameter
     if (tn_[3 * t + 2] == no_index) seg_[3 * t + 2] = split_segment;
     link_[tv_[3 * t + 1]] = no_index;
   }
+  if (a0 != no_index) {
+    // Edge 1 of (v, a, b) is b->v, edge 2 is v->a.
+    for (const std::uint32_t t : fresh_) {
+      if (tv_[3 * t + 2] == a0 || tv_[3 * t + 2] == b0) seg_[3 * t + 1] = split_segment;
+      if (tv_[3 * t + 1] == a0 || tv_[3 * t + 1] == b0) seg_[3 * t + 2] = split_segment;
+    }
+  }
   cavity_.clear();
   rim_.clear();
   rim_segments_.clear();
   skip_ = no_index;
+  skip_twin_ = no_index;
   return v;
 }
 
 std::uint32_t RefinementMesh::split(std::uint32_t h, double parameter) {
   const std::uint32_t s = seg_[h];
-  if (s == no_index || tn_[h] != no_index) return no_index;  // only boundary subsegments split
+  if (s == no_index) return no_index;  // only subsegments split
   const RefinementSegment& segment = segments_[s];
   const std::uint32_t a = origin(h), b = dest(h);
   const auto parameter_of = [&](std::uint32_t x) {
@@ -257,12 +286,13 @@ std::uint32_t RefinementMesh::split(std::uint32_t h, double parameter) {
   const Point p = lerp(points_[segment.a], points_[segment.b], parameter);
   if (p == points_[a] || p == points_[b]) return no_index;
   pending_ = p;
-  skip_ = h;
-  if (!collect_cavity(h / 3, p, h)) {
+  const std::uint32_t twin = tn_[h];  // an interior subsegment: split on both sides
+  if (!collect_cavity(h / 3, p, h, twin)) {
     clear_cavity();
     return no_index;
   }
   skip_ = h;
+  skip_twin_ = twin;
   return fan(s, parameter);
 }
 

@@ -6,7 +6,14 @@
 // h = 3t + i is edge i of triangle t, opposite corner i, directed
 // counter-clockwise from tv[3t + (i+1)%3] to tv[3t + (i+2)%3]; tn[h] is the
 // twin, no_index outside the subdomain (every such edge is a segment). There
-// are no ghost triangles: the subdomain is closed by its segments.
+// are no ghost triangles: the subdomain is closed by its segments. An
+// interior segment (a constraint inside the subdomain) has triangles on both
+// sides: its half-edges have twins and a segment.
+//
+// Every triangle carries a label (the caller's region number): a cavity
+// never crosses a segment, so the triangles replacing it take the label of
+// the cavity triangle each rim edge came from, and the labels stay constant
+// on each face of the segments as the mesh grows.
 //
 // Every vertex on a segment records it and its parameter along it, so that a
 // subsegment is split at a point computed on the segment's own line
@@ -27,14 +34,16 @@ inline std::uint32_t prev_half_edge(std::uint32_t h) noexcept { return h % 3 == 
 // A segment of the subdomain: a piece of the discretised boundary.
 struct RefinementSegment {
   std::uint32_t a = 0, b = 0;  // end vertices (parameter 0 at a, 1 at b)
-  bool splittable = false;     // a domain-boundary piece (a separator never is: the decoupling)
+  bool splittable = false;     // a boundary or interior piece (a separator never is: the decoupling)
 };
 
 class RefinementMesh {
 public:
   // From a constrained Delaunay triangulation of the subdomain whose segment
-  // i is segments[i] (tri.segment_of indexes it).
-  RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments);
+  // i is segments[i] (tri.segment_of indexes it); labels[t] is triangle t's
+  // label (empty: all 0).
+  RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments,
+                 const std::vector<std::uint32_t>& labels = {});
 
   // Room for this many triangles (and about half as many vertices), so
   // that growing does not copy the arrays again and again.
@@ -45,6 +54,7 @@ public:
   std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
   std::uint32_t slot_count() const noexcept { return static_cast<std::uint32_t>(tv_.size() / 3); }
   bool alive(std::uint32_t t) const noexcept { return alive_[t] != 0; }
+  std::uint32_t label(std::uint32_t t) const noexcept { return label_[t]; }
   std::uint32_t corner(std::uint32_t t, int i) const noexcept { return tv_[3 * t + static_cast<std::uint32_t>(i)]; }
   std::uint32_t origin(std::uint32_t h) const noexcept { return tv_[next_half_edge(h)]; }
   std::uint32_t dest(std::uint32_t h) const noexcept { return tv_[prev_half_edge(h)]; }
@@ -89,15 +99,16 @@ public:
   // Splits the segment half-edge h at parameter `parameter` of its segment
   // (the new vertex at lerp of the segment's ends): the two subsegments keep
   // the segment, the triangles inside whose circumcircle holds the new vertex
-  // are re-fanned. Returns the new vertex, or no_index when the split point
-  // does not land strictly between h's ends or the fan would fold.
+  // are re-fanned (on both sides of an interior segment). Returns the new
+  // vertex, or no_index when the split point does not land strictly between
+  // h's ends or the fan would fold.
   std::uint32_t split(std::uint32_t h, double parameter);
 
   // Newly made triangles since the last call (for the caller's queue).
   std::vector<std::uint32_t>& fresh() noexcept { return fresh_; }
 
 private:
-  bool collect_cavity(std::uint32_t t, Point p, std::uint32_t skip);
+  bool collect_cavity(std::uint32_t t, Point p, std::uint32_t skip, std::uint32_t skip_twin);
   std::uint32_t fan(std::uint32_t vertex_segment, double parameter);
   void clear_cavity();
   std::uint32_t new_slot();
@@ -112,6 +123,7 @@ private:
 
   std::vector<std::uint32_t> tv_, tn_, seg_;
   std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> label_;
   std::vector<std::uint32_t> free_;
 
   // Scratch of one insertion.
@@ -119,12 +131,14 @@ private:
   std::vector<std::uint8_t> in_cavity_;
   struct Rim {
     std::uint32_t a, b, outer, segment;  // rim edge a->b seen from inside, its twin outside, its segment
+    std::uint32_t label;                 // of the cavity triangle it bounds
   };
   std::vector<Rim> rim_;
   std::vector<std::uint32_t> rim_segments_;
   std::vector<std::uint32_t> link_;  // per vertex: the new triangle whose rim edge starts there
   Point pending_;                    // the point prepare() dug for
   std::uint32_t skip_ = no_index;    // the subsegment being split (not a rim edge of the fan)
+  std::uint32_t skip_twin_ = no_index;  // its twin, when it is an interior subsegment
   std::vector<std::uint32_t> fresh_;
 };
 

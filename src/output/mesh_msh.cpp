@@ -10,8 +10,10 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "madd/decomposition.hpp"
 #include "madd/mesh_output.hpp"
 #include "output/mesh_text.hpp"
 
@@ -46,16 +48,31 @@ struct Model {
   std::vector<std::vector<std::size_t>> surface_curves;  // the curves each subdomain touches
 };
 
+// Interior-segment edges (two triangles of one subdomain, on a piece of an
+// input segment) join the curve of their marker too, once each, as the
+// lower-numbered of their triangles runs them.
 Model boundary_model(const Mesh& mesh) {
   const auto segment_markers = detail::segment_markers(mesh);
+  const std::vector<std::uint32_t> owner = interior_segment_owners(mesh.decomposition);
+  std::unordered_map<std::uint64_t, int> interior;
+  for (const MeshSegment& s : mesh.segments)
+    if (s.piece < owner.size() && owner[s.piece] != no_index) interior.emplace(detail::edge_key(s.a, s.b), s.marker);
   Model model;
   std::vector<int> edge_marker;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     for (std::size_t i = 0; i < 3; ++i) {
-      if (mesh.neighbours[t][i] != no_index) continue;
+      const std::uint32_t across = mesh.neighbours[t][i];
       const std::uint32_t a = mesh.triangles[t][(i + 1) % 3], b = mesh.triangles[t][(i + 2) % 3];
+      if (across == no_index) {
+        model.edges.push_back({a, b, t, 0});
+        edge_marker.push_back(detail::boundary_marker(segment_markers, a, b));
+        continue;
+      }
+      if (across < t || interior.empty()) continue;
+      const auto it = interior.find(detail::edge_key(a, b));
+      if (it == interior.end()) continue;
       model.edges.push_back({a, b, t, 0});
-      edge_marker.push_back(detail::boundary_marker(segment_markers, a, b));
+      edge_marker.push_back(it->second);
     }
   }
   model.markers = edge_marker;
@@ -196,6 +213,16 @@ void append_elements(std::string& out, const Mesh& mesh, const Model& model) {
   out += "$EndElements\n";
 }
 
+// With regions (Triangle's -A): the region attribute of every triangle as
+// one element data view, "region_attribute" (time 0, step 0, one component).
+void append_region_attributes(std::string& out, const Mesh& mesh) {
+  if (!detail::has_region_attributes(mesh)) return;
+  out += "$ElementData\n1\n\"region_attribute\"\n1\n0\n3\n0\n1\n";
+  line(out, mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) line(out, std::int64_t(t) + 1, detail::region_attribute(mesh, t));
+  out += "$EndElementData\n";
+}
+
 } // namespace
 
 std::string format_mesh_msh(const Mesh& mesh) {
@@ -207,6 +234,7 @@ std::string format_mesh_msh(const Mesh& mesh) {
   append_entities(out, mesh, model);
   append_nodes(out, mesh, model);
   append_elements(out, mesh, model);
+  append_region_attributes(out, mesh);
   return out;
 }
 

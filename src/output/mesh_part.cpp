@@ -31,11 +31,17 @@ std::string format_part_ele(const MeshPart& part, unsigned first_index) {
   const Mesh& m = part.mesh;
   std::string out;
   out.reserve(56 * m.triangles.size() + 32);
-  line(out, m.triangles.size(), 3, 2);
+  // With regions, a third attribute: the triangle's region attribute.
+  const bool regions = detail::has_region_attributes(m);
+  line(out, m.triangles.size(), 3, regions ? 3 : 2);
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto& tri = m.triangles[t];
-    line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
-         m.triangle_subdomain[t], part.triangle_ids[t] + first_index);
+    if (regions)
+      line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
+           m.triangle_subdomain[t], part.triangle_ids[t] + first_index, detail::region_attribute(m, t));
+    else
+      line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
+           m.triangle_subdomain[t], part.triangle_ids[t] + first_index);
   }
   return out;
 }
@@ -45,7 +51,7 @@ std::string format_part_vtu(const MeshPart& part) {
   return detail::format_vtu(part.mesh, &global);
 }
 
-std::string format_parts_pvtu(const std::vector<std::string>& pieces) {
+std::string format_parts_pvtu(const std::vector<std::string>& pieces, bool region_attributes) {
   std::string out =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -58,8 +64,9 @@ std::string format_parts_pvtu(const std::vector<std::string>& pieces) {
       "    <PCellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n"
       "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
       "      <PDataArray type=\"Int32\" Name=\"rank\"/>\n"
-      "      <PDataArray type=\"Int32\" Name=\"subdomain\"/>\n"
-      "    </PCellData>\n"
+      "      <PDataArray type=\"Int32\" Name=\"subdomain\"/>\n";
+  if (region_attributes) out += "      <PDataArray type=\"Float64\" Name=\"region_attribute\"/>\n";
+  out += "    </PCellData>\n"
       "    <PPoints>\n"
       "      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
       "    </PPoints>\n";
@@ -103,7 +110,7 @@ void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& 
     if (part.share == 0) {
       std::vector<std::string> pieces;
       for (std::uint32_t r = 0; r < part.shares; ++r) pieces.push_back(name(r, ".vtu"));
-      outputs.add_file(prefix + ".pvtu", format_parts_pvtu(pieces));
+      outputs.add_file(prefix + ".pvtu", format_parts_pvtu(pieces, detail::has_region_attributes(part.mesh)));
     }
   }
 }

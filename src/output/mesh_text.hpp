@@ -29,6 +29,14 @@ void line(std::string& out, First first, Rest... rest) {
   out += '\n';
 }
 
+// Whether the mesh files carry a region attribute per triangle (Triangle's
+// -A): when the input has regions, so that every file of a run, and every
+// part of a distributed one (even a part with no triangles), has the same columns.
+inline bool has_region_attributes(const Mesh& mesh) { return !mesh.decomposition.regions.empty(); }
+inline double region_attribute(const Mesh& mesh, std::size_t t) {
+  return t < mesh.triangle_attribute.size() ? mesh.triangle_attribute[t] : 0.0;
+}
+
 // The key of the undirected edge {a, b}.
 inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);

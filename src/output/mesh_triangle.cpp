@@ -39,12 +39,19 @@ namespace {
 
 using detail::line;
 
-// Lines of "id v0 v1 v2 k" per triangle, vertices through `id_of`.
+// Lines of "id v0 v1 v2 k" per triangle, vertices through `id_of`, then
+// the region attribute of triangle `t` when the mesh has them.
 template <typename IdOf>
 void append_triangle_line(std::string& out, std::int64_t id, const std::array<std::uint32_t, 3>& t, IdOf id_of,
-                          std::uint32_t subdomain) {
-  line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
+                          std::uint32_t subdomain, const Mesh& mesh, std::size_t triangle) {
+  if (!detail::has_region_attributes(mesh))
+    line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
+  else
+    line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain, detail::region_attribute(mesh, triangle));
 }
+
+// The .ele attribute count: the subdomain, and the region attribute with regions.
+int ele_attributes(const Mesh& mesh) { return detail::has_region_attributes(mesh) ? 2 : 1; }
 
 } // namespace
 
@@ -64,11 +71,11 @@ std::string format_mesh_ele(const Mesh& mesh, unsigned first_index) {
   detail::check_first_index(first_index);
   std::string out;
   out.reserve(40 * mesh.triangles.size() + 32);
-  line(out, mesh.triangles.size(), 3, 1);
+  line(out, mesh.triangles.size(), 3, ele_attributes(mesh));
   const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
-                         mesh.triangle_subdomain[t]);
+                         mesh.triangle_subdomain[t], mesh, t);
   return out;
 }
 
@@ -99,7 +106,11 @@ std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) {
       if (across != no_index && across < t) continue;
       const std::uint32_t a = mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)];
       const std::uint32_t b = mesh.triangles[t][static_cast<std::size_t>((i + 2) % 3)];
-      const int marker = across == no_index ? detail::boundary_marker(markers, a, b) : 0;
+      // An edge inside the domain: an interior segment's marker, else 0 (separators too).
+      const auto inside = across == no_index ? markers.end() : markers.find(detail::edge_key(a, b));
+      const int marker = across == no_index ? detail::boundary_marker(markers, a, b)
+                         : inside == markers.end() ? 0
+                                                   : inside->second;
       line(body, count + first_index, std::int64_t{a} + first_index, std::int64_t{b} + first_index, marker);
       ++count;
     }
@@ -148,9 +159,9 @@ std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigne
   const std::uint32_t first = mesh.subdomain_first_triangle[k], end = mesh.subdomain_first_triangle[k + 1];
   std::string out;
   out.reserve(40 * (end - first) + 32);
-  line(out, end - first, 3, 1);
+  line(out, end - first, 3, ele_attributes(mesh));
   for (std::uint32_t t = first; t < end; ++t)
-    append_triangle_line(out, std::int64_t{t - first} + first_index, mesh.triangles[t], id_of, k);
+    append_triangle_line(out, std::int64_t{t - first} + first_index, mesh.triangles[t], id_of, k, mesh, t);
   return out;
 }
 

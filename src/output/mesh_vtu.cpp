@@ -62,6 +62,11 @@ void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGloba
   open_array(out, "Int32", "subdomain");
   for (const std::uint32_t k : mesh.triangle_subdomain) line(out, k);
   close_array(out);
+  if (detail::has_region_attributes(mesh)) {  // with regions (Triangle's -A)
+    open_array(out, "Float64", "region_attribute");
+    for (std::size_t c = 0; c < mesh.triangles.size(); ++c) line(out, detail::region_attribute(mesh, c));
+    close_array(out);
+  }
   out += "      </CellData>\n";
 }
 

@@ -6,6 +6,7 @@
 #include "kernel/exact_sum.hpp"
 #include "kernel/number_format.hpp"
 #include "kernel/rings.hpp"
+#include "pslg/validate_detail.hpp"
 #include "madd/decomposition.hpp"
 #include "quality/metrics_detail.hpp"
 #include "quality/verify_decomposition_detail.hpp"
@@ -39,12 +40,18 @@ bool check_structure(const Decomposition& d, const Pslg& domain, ProblemLog& log
   if (np < domain.points.size() || !std::equal(domain.points.begin(), domain.points.end(), d.points.begin()))
     log.add("the input points are not the first points, with the same indices");
   if (d.holes != domain.holes) log.add("the hole points differ from the input's");
+  if (d.regions != domain.regions) log.add("the regions differ from the input's");
   for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
     const Subdomain& sub = d.subdomains[s];
     if (sub.rings.empty() || sub.ring_segments.size() != sub.rings.size()) {
       log.add(sub_name(s) + " has no rings, or rings and ring_segments differ in count");
       continue;
     }
+    if (!std::all_of(sub.interior_segments.begin(), sub.interior_segments.end(),
+                     [&](std::uint32_t g) { return g < d.segments.size(); }) ||
+        !std::all_of(sub.interior_points.begin(), sub.interior_points.end(),
+                     [&](std::uint32_t p) { return p < domain.points.size(); }))
+      log.add(sub_name(s) + " names an interior segment or point out of range");
     if (sub.hole_points.size() + 1 != sub.rings.size())
       log.add(sub_name(s) + " has " + std::to_string(sub.rings.size() - 1) + " hole rings but " +
               std::to_string(sub.hole_points.size()) + " hole points");
@@ -127,10 +134,22 @@ std::vector<std::vector<Use>> check_rings(const Decomposition& d, ExactSum& cove
 }
 
 // Conforming: a separator in exactly two rings of different subdomains in
-// opposite directions, a boundary piece in exactly one.
+// opposite directions, a boundary piece in exactly one, an interior piece in
+// none and in the interior segments of exactly one subdomain.
 void check_uses(const Decomposition& d, const std::vector<std::vector<Use>>& uses, ProblemLog& log) {
+  std::vector<std::uint32_t> interior_of(d.segments.size(), 0);
+  for (const Subdomain& sub : d.subdomains)
+    for (const std::uint32_t g : sub.interior_segments) ++interior_of[g];
   for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
     const auto& u = uses[g];
+    if (interior_of[g] != 0) {
+      if (d.is_separator(g) || interior_of[g] != 1 || !u.empty())
+        log.add("interior segment " + std::to_string(g) + " " + point_text(d.points[d.segments[g].a]) + "-" +
+                point_text(d.points[d.segments[g].b]) + " is in " + std::to_string(interior_of[g]) +
+                " subdomains' interior segments and " + std::to_string(u.size()) +
+                " rings (an interior piece of an input segment is in one subdomain's, and in no ring)");
+      continue;
+    }
     const std::string name = "segment " + std::to_string(g) + " " + point_text(d.points[d.segments[g].a]) + "-" +
                              point_text(d.points[d.segments[g].b]);
     if (d.is_separator(g)) {
@@ -144,9 +163,26 @@ void check_uses(const Decomposition& d, const std::vector<std::vector<Use>>& use
   }
 }
 
-void check_points(const Decomposition& d, ProblemLog& log) {
+// Every point on a segment, or one of the input's isolated vertices, named by
+// exactly one subdomain; no two points at the same place.
+void check_points(const Decomposition& d, const Pslg& domain, ProblemLog& log) {
   std::vector<std::uint8_t> used(d.points.size(), 0);
   for (const Segment& g : d.segments) used[g.a] = used[g.b] = 1;
+  // On an input segment: an endpoint, or inside one (the segment is split there).
+  std::vector<std::uint8_t> on_input(domain.points.size(), 1);
+  const detail::DomainPieces pieces = detail::trace_domain_pieces(domain, detail::has_vertex_inside_segment(domain));
+  for (const std::uint32_t p : pieces.isolated) on_input[p] = 0;
+  std::vector<std::uint32_t> named(domain.points.size(), 0);
+  for (const Subdomain& sub : d.subdomains)
+    for (const std::uint32_t p : sub.interior_points) ++named[p];
+  for (std::size_t p = 0; p < domain.points.size(); ++p) {
+    const std::uint32_t want = on_input[p] ? 0 : 1;
+    if (named[p] != want)
+      log.add("point " + std::to_string(p) + " " + point_text(d.points[p]) + " is an interior point of " +
+              std::to_string(named[p]) + " subdomains instead of " + std::to_string(want) +
+              (want ? " (it is on no input segment)" : " (it is on an input segment)"));
+    if (!on_input[p]) used[p] = 1;
+  }
   for (std::size_t p = 0; p < d.points.size(); ++p)
     if (used[p] == 0) log.add("point " + std::to_string(p) + " " + point_text(d.points[p]) + " is on no segment");
   std::vector<std::uint32_t> order(d.points.size());
@@ -161,14 +197,31 @@ void check_points(const Decomposition& d, ProblemLog& log) {
               point_text(d.points[order[k]]));
 }
 
-// interior_point strictly inside the subdomain; each hole point strictly inside its hole ring.
+bool strictly_inside(const Decomposition& d, const Subdomain& sub, Point p) {
+  bool inside = locate_in_ring(RingView(d.points, sub.rings[0]), p) == RingLocation::inside;
+  for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
+    inside = locate_in_ring(RingView(d.points, sub.rings[r]), p) == RingLocation::outside;
+  return inside;
+}
+
+// interior_point strictly inside the subdomain; each hole point strictly
+// inside its hole ring; its interior segments (their midpoints; they cross no
+// ring, check_segments_disjoint) and isolated points strictly inside it.
 void check_inner_points(const Decomposition& d, ProblemLog& log) {
   for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
     const Subdomain& sub = d.subdomains[s];
-    bool inside = locate_in_ring(RingView(d.points, sub.rings[0]), sub.interior_point) == RingLocation::inside;
-    for (std::size_t r = 1; r < sub.rings.size() && inside; ++r)
-      inside = locate_in_ring(RingView(d.points, sub.rings[r]), sub.interior_point) == RingLocation::outside;
-    if (!inside) log.add(sub_name(s) + " interior point " + point_text(sub.interior_point) + " is not strictly inside it");
+    if (!strictly_inside(d, sub, sub.interior_point))
+      log.add(sub_name(s) + " interior point " + point_text(sub.interior_point) + " is not strictly inside it");
+    for (const std::uint32_t g : sub.interior_segments) {
+      const Point mid = midpoint(d.points[d.segments[g].a], d.points[d.segments[g].b]);
+      if (!strictly_inside(d, sub, mid))
+        log.add(sub_name(s) + " interior segment " + std::to_string(g) + " is not inside it (midpoint " +
+                point_text(mid) + ")");
+    }
+    for (const std::uint32_t p : sub.interior_points)
+      if (!strictly_inside(d, sub, d.points[p]))
+        log.add(sub_name(s) + " interior point " + std::to_string(p) + " " + point_text(d.points[p]) +
+                " is not strictly inside it");
     for (std::size_t h = 0; h < sub.hole_points.size() && h + 1 < sub.rings.size(); ++h)
       if (locate_in_ring(RingView(d.points, sub.rings[h + 1]), sub.hole_points[h]) != RingLocation::inside)
         log.add(sub_name(s) + " hole point " + point_text(sub.hole_points[h]) + " is not strictly inside hole ring " +
@@ -219,7 +272,7 @@ Verification verify_decomposition(const Decomposition& d, const Pslg& domain, st
   const auto uses = check_rings(d, covered, log);
   check_uses(d, uses, log);
   const double sliver = detail::check_boundary_pieces(d, domain, log);
-  check_points(d, log);
+  check_points(d, domain, log);
   detail::check_segments_disjoint(d.points, d.segments, log);
   check_inner_points(d, log);
   check_angles(d, log);

@@ -4,7 +4,8 @@
 // checked here first, then each concern in its own file:
 // verify_mesh_edges.cpp (adjacency, conformity, Delaunay, the exact area),
 // verify_mesh_segments.cpp (chains along the decomposition and the input),
-// verify_mesh_hanging.cpp, verify_mesh_quality.cpp (size and angles).
+// verify_mesh_hanging.cpp, verify_mesh_regions.cpp (isolated vertices, region
+// attributes), verify_mesh_quality.cpp (size and angles).
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -106,6 +107,15 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
     if (j < d.segment_origin.size() && d.segment_origin[j] != no_index && d.segment_origin[j] >= domain.segments.size())
       log.add("decomposition segment " + std::to_string(j) + " comes from a nonexistent input segment");
   }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    for (const std::uint32_t j : d.subdomains[k].interior_segments)
+      if (j >= d.segments.size() || j >= d.segment_origin.size() || d.segment_origin[j] == no_index)
+        log.add("subdomain " + std::to_string(k) + " names interior segment " + std::to_string(j) +
+                ", which is no piece of an input segment");
+    for (const std::uint32_t v : d.subdomains[k].interior_points)
+      if (v >= d.points.size())
+        log.add("subdomain " + std::to_string(k) + " names isolated vertex " + std::to_string(v) + ", out of range");
+  }
   for (std::size_t s = 0; s < m.segments.size(); ++s) {
     const MeshSegment& g = m.segments[s];
     if (g.a >= np || g.b >= np || g.a == g.b)
@@ -115,6 +125,17 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
               ", which does not exist");
   }
   return log.count() == before;
+}
+
+// One region attribute per triangle with regions, none without; no other
+// check indexes them, so a wrong count only skips the attribute check.
+bool attributes_sized(const Mesh& m, ProblemLog& log) {
+  const std::size_t nt = m.triangles.size(), na = m.triangle_attribute.size();
+  const bool regions = !m.decomposition.regions.empty();
+  if (regions ? na == nt : na == 0) return true;
+  log.add("triangle_attribute has " + std::to_string(na) + " entries for " + std::to_string(nt) + " triangles (expected " +
+          (regions ? "one each" : "none: the input has no regions") + ")");
+  return false;
 }
 
 // Strictly counter-clockwise, decided exactly; a repeated or collinear
@@ -167,7 +188,10 @@ Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOpt
       const double sliver = detail::check_mesh_segments(mesh, domain, log);
       detail::check_hanging_vertices(mesh, edges.boundary, log);
       check_cover(edges.twice_area, domain, sliver, log);
-      detail::check_mesh_size(mesh, size, log);
+      detail::check_interior_points(mesh, log);
+      const std::vector<std::uint32_t> region = detail::mesh_regions(mesh);
+      if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log);
+      detail::check_mesh_size(mesh, size, region, log);
       detail::check_mesh_angles(mesh, log);
     }
   } catch (const std::exception& e) {

@@ -38,8 +38,25 @@ double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log
 // No triangle vertex strictly inside an edge that only one triangle has.
 void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& boundary, ProblemLog& log);
 
-// Every triangle within the size bound at its centroid.
-void check_mesh_size(const Mesh& mesh, const MeshSizeOptions& size, ProblemLog& log);
+// Every isolated input vertex (Subdomain::interior_points) a vertex of a
+// triangle of its subdomain.
+void check_interior_points(const Mesh& mesh, ProblemLog& log);
+
+// Per triangle: 1 + the index of the region (mesh.decomposition.regions)
+// whose flood holds it, 0 for none; the flood starts from the lowest
+// triangle whose closure holds the region point and crosses every edge but
+// boundary and interior segments, regions in input order, the later
+// winning. All 0 without regions.
+std::vector<std::uint32_t> mesh_regions(const Mesh& mesh);
+
+// mesh.triangle_attribute equal to the attribute of each triangle's region
+// by `label` (mesh_regions), 0 in none.
+void check_region_attributes(const Mesh& mesh, const std::vector<std::uint32_t>& label, ProblemLog& log);
+
+// Every triangle within the size bound at its centroid and within its
+// region's max_area (by `label`, mesh_regions; when > 0).
+void check_mesh_size(const Mesh& mesh, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
+                     ProblemLog& log);
 
 // The triangles below the angle bound are exactly as many as the shortfall counts.
 void check_mesh_angles(const Mesh& mesh, ProblemLog& log);

@@ -6,10 +6,14 @@
 // - at most one triangle in each direction (so at most two in all);
 // - two triangles (one each way) name each other as neighbours across it,
 //   one triangle names no_index there;
-// - an edge in one triangle is a boundary segment (marker != 0): the free
-//   edges are exactly the boundary, so no hole and no tear;
+// - an edge in one triangle is a boundary segment (marker != 0, not on an
+//   interior piece): the free edges are exactly the boundary, so no hole and
+//   no tear;
 // - an edge between two subdomains is a separator segment (marker 0), and a
 //   separator lies between two triangles of different subdomains;
+// - a segment on an interior piece lies between two triangles of the
+//   subdomain the piece is interior to (interior_segment_owners), and is
+//   the only kind of segment inside a subdomain;
 // - between two triangles of one subdomain, off every segment, locally
 //   Delaunay (exact incircle; one test decides it, since the in-circle
 //   determinant of the other triangle and this one's far vertex is the same
@@ -22,6 +26,7 @@
 #include <span>
 #include <string>
 
+#include "madd/decomposition.hpp"
 #include "madd/predicates.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
@@ -64,7 +69,8 @@ void bucket(std::size_t buckets, std::uint32_t count, Key key, std::vector<std::
 
 class EdgePass {
 public:
-  EdgePass(const Mesh& m, const std::vector<std::uint8_t>& ccw, ProblemLog& log) : m_(m), ccw_(ccw), log_(log) {}
+  EdgePass(const Mesh& m, const std::vector<std::uint8_t>& ccw, ProblemLog& log)
+      : m_(m), ccw_(ccw), log_(log), owner_(interior_segment_owners(m.decomposition)) {}
 
   MeshEdges run() {
     const auto& T = m_.triangles;
@@ -119,8 +125,16 @@ private:
            point_text(m_.points[w]);
   }
   std::string tri_text(std::uint32_t code) const { return mesh_triangle_text(m_, tri(code)); }
+  // The subdomain mesh segment s is an interior segment of, or no_index.
+  std::uint32_t interior_owner(std::uint32_t s) const noexcept {
+    const std::uint32_t piece = m_.segments[s].piece;
+    return piece < owner_.size() ? owner_[piece] : no_index;
+  }
   std::string seg_text(std::uint32_t s) const {
-    return (m_.segments[s].marker == 0 ? "separator segment " : "boundary segment ") + std::to_string(s);
+    return (m_.segments[s].marker == 0            ? "separator segment "
+            : interior_owner(s) != no_index ? "interior segment "
+                                                   : "boundary segment ") +
+           std::to_string(s);
   }
 
   void edge(std::uint32_t v, std::uint32_t w, std::span<const Half> halves, std::span<const SegEnd> segs) {
@@ -164,7 +178,7 @@ private:
       if (!has_seg)
         log_.add(edge_text(v, w) + " of " + tri_text(code) +
                  " is in no other triangle but is no boundary segment: a hole or a tear in the mesh");
-      else if (separator)
+      else if (separator || interior_owner(s) != no_index)
         log_.add(seg_text(s) + " (" + edge_text(v, w) + ") is in one triangle only, " + tri_text(code));
       return;
     }
@@ -181,8 +195,12 @@ private:
       return;
     }
     if (has_seg) {
+      // A constraint inside the subdomain: no Delaunay test across it.
+      if (!separator && interior_owner(s) == kf) return;
       log_.add(seg_text(s) + " (" + edge_text(v, w) + ") lies inside subdomain " + std::to_string(kf) + ", between " +
-               tri_text(f) + " and " + tri_text(b));
+               tri_text(f) + " and " + tri_text(b) +
+               (interior_owner(s) != no_index ? " (its piece is interior to subdomain " + std::to_string(interior_owner(s)) + ")"
+                                              : ""));
       return;
     }
     if (ccw_[tri(f)] == 0 || ccw_[tri(b)] == 0) return;  // already reported; the test needs CCW
@@ -197,6 +215,7 @@ private:
   const Mesh& m_;
   const std::vector<std::uint8_t>& ccw_;
   ProblemLog& log_;
+  std::vector<std::uint32_t> owner_;  // per decomposition segment: the subdomain it is interior to
   MeshEdges out_;
 };
 

@@ -1,6 +1,7 @@
 // verify_mesh, the quality bounds: every triangle within the size bound at
 // its centroid, and the triangles below the angle bound exactly as many as
 // the shortfall counts.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,21 +27,28 @@ namespace madd::detail {
 //   function evaluated at a centroid formed another way (a few ulps off).
 //   Both use triangle_centroid and area_bound_at; a bound that differs by
 //   more than this is another bound, not rounding.
-void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, ProblemLog& log) {
-  if (!size.has_size_bound()) return;
+// A region's max_area (> 0) is one more bound on its triangles, the smallest winning.
+void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
+                     ProblemLog& log) {
+  const std::vector<Region>& regions = m.decomposition.regions;
+  bool regional = false;
+  for (const Region& r : regions) regional |= r.max_area > 0;
+  if (!size.has_size_bound() && !regional) return;
   constexpr double u = 0x1p-53;
   const AreaBound bound_at(size);
   const auto& P = m.points;
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    const double bound = bound_at.at(triangle_centroid(a, b, c));
+    double bound = bound_at.at(triangle_centroid(a, b, c));
+    if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
+      bound = std::min(bound, regions[label[t] - 1].max_area);
     if (!(bound < std::numeric_limits<double>::infinity())) continue;
     const Point ab = b - a, ac = c - a, bc = c - b;
     const double twice = std::abs(cross(ab, ac));
     const double longest2 = std::max({dot(ab, ab), dot(ac, ac), dot(bc, bc)});
     if (twice > 2.0 * bound * (1.0 + 1e-12) + 32.0 * u * longest2)
       log.add(mesh_triangle_text(m, t) + " has area " + number_text(0.5 * twice) + ", above the size bound " +
-              number_text(bound) + " at its centroid");
+              number_text(bound) + " at its centroid (the smallest of the size bound and its region's)");
   }
 }
 

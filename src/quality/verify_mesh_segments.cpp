@@ -1,7 +1,8 @@
 // verify_mesh, the mesh segments: markers as their decomposition segment's,
-// each decomposition segment covered by one chain of its mesh segments from
+// each decomposition segment (separator, boundary or interior piece)
+// covered by one chain of its mesh segments from
 // its first end to its second, each input segment by one chain of boundary
-// segments lying on it up to the rounding of the interpolation that placed
+// and interior segments lying on it up to the rounding of the interpolation that placed
 // their vertices, and the points' markers by Triangle's rule. Also bounds
 // the area the rounded boundary vertices add to or take from the domain.
 #include <algorithm>
@@ -11,13 +12,15 @@
 #include <utility>
 
 #include "kernel/number_format.hpp"
+#include "madd/decomposition.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
 
 namespace {
 
-bool is_boundary(const MeshSegment& g) noexcept { return g.marker != 0; }
+// On a piece of an input segment (boundary or interior): a nonzero marker.
+bool on_input_segment(const MeshSegment& g) noexcept { return g.marker != 0; }
 
 // Walks the chain of mesh segments `ids` from vertex `start` to `end`: at
 // each vertex exactly one unused segment goes on, each step advances along
@@ -107,7 +110,7 @@ void check_markers(const Mesh& m, ProblemLog& log) {
   std::vector<int> want(m.points.size(), 0);
   std::vector<std::uint8_t> on_boundary(m.points.size(), 0);
   for (const MeshSegment& g : m.segments) {
-    if (!is_boundary(g)) continue;
+    if (!on_input_segment(g)) continue;
     for (const std::uint32_t v : {g.a, g.b}) {
       want[v] = on_boundary[v] != 0 ? std::max(want[v], g.marker) : g.marker;
       on_boundary[v] = 1;
@@ -170,16 +173,17 @@ double check_mesh_segments(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   for (std::uint32_t s = 0; s < m.segments.size(); ++s) key[s] = m.segments[s].piece;
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> by_piece = grouped(key, first, d.segments.size());
+  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     const Segment& g = d.segments[j];
+    const char* kind = d.is_separator(j) ? "separator " : owner[j] != no_index ? "interior piece " : "boundary piece ";
     walk_chain(m, std::span<const std::uint32_t>(by_piece).subspan(first[j], first[j + 1] - first[j]), g.a, g.b,
-               d.points[g.a], d.points[g.b],
-               std::string(d.is_separator(j) ? "separator " : "boundary piece ") + std::to_string(j), ends, log,
+               d.points[g.a], d.points[g.b], std::string(kind) + std::to_string(j), ends, log,
                [](std::uint32_t, std::uint32_t, const ExactSum&) {});
   }
   // Each input segment: one chain of the boundary segments on its pieces.
   for (std::uint32_t s = 0; s < m.segments.size(); ++s)
-    key[s] = is_boundary(m.segments[s]) ? d.segment_origin[m.segments[s].piece] : no_index;
+    key[s] = on_input_segment(m.segments[s]) ? d.segment_origin[m.segments[s].piece] : no_index;
   const std::vector<std::uint32_t> by_input = grouped(key, first, domain.segments.size());
   Sliver sliver;
   for (std::uint32_t i = 0; i < domain.segments.size(); ++i)

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernel/box.hpp"
-#include "kernel/containment.hpp"
+#include "split/locate.hpp"
 #include "split/refine.hpp"
 #include "split/split.hpp"
 
@@ -44,32 +43,15 @@ void add_boundary_share(const MedialGraph& g, const Triangulation& tri, const Fa
   }
 }
 
-// Cases 2/3: each weight sample goes to the G_D vertex containing it, found
-// through a uniform bucket grid of the vertices' bounding boxes.
+// Cases 2/3: each weight sample goes to the first G_D vertex containing it.
 void add_samples(const MedialGraph& g, const Triangulation& tri, const FaceDensity& density, std::vector<double>& out) {
   if (density.samples.empty() || out.empty()) return;
-  const Box all = bounding_box(tri.points);
-  const Point lo = all.lo;
-  const auto cells = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(out.size())), 1.0, 512.0));
-  const double cw = std::max(all.width() / cells, 1e-300), ch = std::max(all.height() / cells, 1e-300);
-  auto cell = [&](double x, double origin, double size) {
-    return static_cast<std::uint32_t>(std::clamp(std::floor((x - origin) / size), 0.0, cells - 1.0));
-  };
-  std::vector<std::vector<std::uint32_t>> bucket(static_cast<std::size_t>(cells) * cells);
-  for (std::uint32_t v = 0; v < out.size(); ++v) {
-    const Box box = bounding_box(vertex_triangle_corners(g, tri, v));
-    for (std::uint32_t i = cell(box.lo.x, lo.x, cw); i <= cell(box.hi.x, lo.x, cw); ++i) {
-      for (std::uint32_t j = cell(box.lo.y, lo.y, ch); j <= cell(box.hi.y, lo.y, ch); ++j) bucket[i * cells + j].push_back(v);
-    }
-  }
+  const GdLocator locator(g, tri);
   for (const ValuedPoint& s : density.samples) {
-    for (std::uint32_t v : bucket[cell(s.at.x, lo.x, cw) * cells + cell(s.at.y, lo.y, ch)]) {
-      const auto c = vertex_triangle_corners(g, tri, v);
-      if (in_closed_triangle(c[0], c[1], c[2], s.at)) {
-        out[v] += density.a * s.value;
-        break;
-      }
-    }
+    locator.for_each_containing(s.at, [&](std::uint32_t v) {
+      out[v] += density.a * s.value;
+      return false;
+    });
   }
 }
 

@@ -30,13 +30,16 @@ double deg_between(Point o, Point a, Point b) { return degrees(angle_at(o, a, b)
 double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<CutEnd>& cut, std::size_t self,
                   std::uint32_t c, std::uint32_t x) {
   const std::size_t boundary = fd.refs.size();
-  const BoundaryLinks& lx = fd.links[x];
-  if (lx.prev == no_index) return -1.0;
-  double a = boundary_angle(g.points[x], g.points[lx.prev], g.points[lx.next], g.points[c]);
+  if (fd.links[x].prev == no_index || fd.links[x].two_sided) return -1.0;  // ends only move along the rings
+  double a = link_angle(g.points, fd.links, x, g.points[c]);
+  if (a < 0.0) return -1.0;
   if (c < boundary) {
-    const BoundaryLinks& lc = fd.links[c];
-    if (lc.prev == no_index) return -1.0;
-    a = std::min(a, boundary_angle(g.points[c], g.points[lc.prev], g.points[lc.next], g.points[x]));
+    const double at_c = link_angle(g.points, fd.links, c, g.points[x]);
+    // At a crossing c the partial separator keeps to its side of the interior segment.
+    const std::uint32_t p = cut[self].end[0] == c ? cut[self].end[1] : cut[self].end[0];
+    if (at_c < 0.0 || link_side(g.points, fd.links, c, g.points[x]) != link_side(g.points, fd.links, c, g.points[p]))
+      return -1.0;
+    a = std::min(a, at_c);
   }
   for (std::size_t k = 0; k < cut.size(); ++k) {
     if (k == self) continue;
@@ -48,14 +51,17 @@ double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<
   return a;
 }
 
-// No point of the split (working points, circumcentres, interior points) in triangle (c, p, x)
+// No point of the split (working points, circumcentres, interior and isolated points) in triangle (c, p, x)
 // other than c and the boundary points from p to x.
-bool swept_empty(const MedialGraph& g, std::uint32_t c, const std::vector<std::uint32_t>& path, const Point interior[2]) {
+bool swept_empty(const MedialGraph& g, const FaceDomain& fd, std::uint32_t c, const std::vector<std::uint32_t>& path,
+                 const Point interior[2]) {
   const Point pc = g.points[c], pp = g.points[path.front()], px = g.points[path.back()];
   for (std::uint32_t v = 0; v < g.points.size(); ++v) {
     if (v == c || std::find(path.begin(), path.end(), v) != path.end()) continue;
     if (in_closed_triangle(pc, pp, px, g.points[v])) return false;
   }
+  for (const Point& p : fd.isolated)  // a move must not carry an isolated point to the other side
+    if (in_closed_triangle(pc, pp, px, p)) return false;
   return !in_closed_triangle(pc, pp, px, interior[0]) && !in_closed_triangle(pc, pp, px, interior[1]);
 }
 
@@ -106,7 +112,7 @@ Move best_move(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s
       const bool ok = angle >= s.min_angle_deg + angle_margin_deg && distance(g.points[c], g.points[y]) >= shortest &&
                       nw[0] > 0.0 && nw[1] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality;
       const double sc = ok ? score(g, fd, c, y, angle, s.min_angle_deg) : INFINITY;
-      if (sc < best.score && swept_empty(g, c, path, interior)) {
+      if (sc < best.score && swept_empty(g, fd, c, path, interior)) {
         best.score = sc;
         best.to = y;
         best.w[0] = nw[0];
@@ -127,7 +133,9 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
     for (std::size_t k = 0; k < cut.size(); ++k) {
       for (int e = 0; e < 2; ++e) {
         const std::uint32_t p = cut[k].end[e];
-        if (p >= fd.refs.size() || fd.links[p].prev == no_index) continue;
+        // An end on an interior segment is a crossing, shared with the partial
+        // separator on its other side: it stays.
+        if (p >= fd.refs.size() || fd.links[p].prev == no_index || fd.links[p].two_sided) continue;
         const Move m = best_move(g, fd, s, cut, k, e, w, interior);
         if (m.to == no_index) continue;
         cut[k].end[e] = m.to;

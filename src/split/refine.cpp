@@ -43,8 +43,86 @@ double weight_factor(const std::vector<double>* w, double mean, std::uint32_t a,
 
 } // namespace
 
+namespace {
+
+// The interior pieces and isolated points of face `f` as working points and
+// constrained edges (docs/algorithm.md, "Interior segments"). A point inside
+// a piece, or a vertex joining exactly two pieces, is two-sided: a separator
+// may cross there. Where the interior segments end, fork or meet the rings,
+// no separator may end (BoundaryLinks::no_end): the angles it would make
+// there are not those of one straight crossing.
+void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pin_isolated,
+                  std::unordered_map<std::uint32_t, std::uint32_t>& working_of, std::vector<std::uint8_t>& pinched,
+                  FaceDomain& out) {
+  const auto add_point = [&](Point p, EndRef ref) {
+    const auto id = static_cast<std::uint32_t>(out.pslg.points.size());
+    ref.local = id;
+    out.pslg.points.push_back(p);
+    out.refs.push_back(ref);
+    out.ring_of.push_back(0);
+    out.links.push_back({no_index, no_index, 1.0f, true});
+    pinched.push_back(0);
+    return id;
+  };
+  const std::size_t ring_points = out.pslg.points.size();
+  std::vector<std::uint32_t> no_end;
+  const auto vertex_point = [&](std::uint32_t v) {
+    auto [it, fresh] = working_of.try_emplace(v, 0u);
+    if (fresh) it->second = add_point(sub.points[v], EndRef{EndRef::vertex, v, 0, sub.points[v]});
+    if (it->second < ring_points) no_end.push_back(it->second);  // an interior segment meets the ring here
+    return it->second;
+  };
+  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> neighbours;  // vertex working point -> along pieces
+  for (std::uint32_t k = 0; k < f.inner_segments.size(); ++k) {
+    const std::uint32_t seg = f.inner_segments[k];
+    const Point a = sub.points[sub.segments[seg].a], b = sub.points[sub.segments[seg].b];
+    const auto m = static_cast<std::uint32_t>(std::min(std::max(1.0, std::ceil(distance(a, b) / spacing)), 1e6));
+    std::vector<std::uint32_t> chain{vertex_point(sub.segments[seg].a)};
+    for (std::uint32_t j = 1; j < m; ++j) {
+      const Point p = lerp(a, b, static_cast<double>(j) / static_cast<double>(m));
+      chain.push_back(add_point(p, EndRef{EndRef::on_segment, seg, 0, p}));
+    }
+    chain.push_back(vertex_point(sub.segments[seg].b));
+    for (std::uint32_t j = 0; j < m; ++j) {
+      out.pslg.segments.push_back({chain[j], chain[j + 1], 1});
+      out.inner_edge.push_back({k, j});
+    }
+    out.inner_edges_of.push_back(m);
+    for (std::uint32_t j = 1; j < m; ++j) {
+      out.links[chain[j]].prev = chain[j - 1];
+      out.links[chain[j]].next = chain[j + 1];
+    }
+    neighbours[chain.front()].push_back(chain[1]);
+    neighbours[chain.back()].push_back(chain[m - 1]);
+  }
+  for (const auto& [w, along] : neighbours) {
+    if (w < ring_points) continue;
+    if (along.size() != 2) {
+      no_end.push_back(w);
+      continue;
+    }
+    out.links[w].prev = along[0];
+    out.links[w].next = along[1];
+  }
+  for (const std::uint32_t w : no_end) {
+    if (pinched[w]) continue;  // a ring passing twice: no separator ends there either
+    out.links[w] = {no_index, no_index, out.links[w].bonus, false, true};
+  }
+  for (const std::uint32_t v : f.inner_points) {
+    if (!pin_isolated) {
+      out.isolated.push_back(sub.points[v]);
+      continue;
+    }
+    const std::uint32_t w = vertex_point(v);
+    pinched[w] = 1;
+    out.pinned.push_back(w);
+  }
+}
+
+} // namespace
+
 FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
-                       const std::vector<double>* point_weights, double adaptive_level) {
+                       const std::vector<double>* point_weights, double adaptive_level, bool pin_isolated) {
   FaceDomain out;
   out.pslg.first_index = 0;
   const Face& f = sub.faces[face];
@@ -102,6 +180,8 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
     }
     if (r > 0) out.pslg.holes.push_back(sub.hole_point(face, r));
   }
+  out.ring_segments = out.pslg.segments.size();
+  add_interior(sub, f, spacing, pin_isolated, working_of, pinched, out);
   for (std::size_t w = 0; w < pinched.size(); ++w) {
     if (pinched[w]) out.links[w].prev = out.links[w].next = no_index;
   }

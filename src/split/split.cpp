@@ -15,6 +15,7 @@
 #include "madd/triangulation.hpp"
 #include "split/refine.hpp"
 #include "split/chord.hpp"
+#include "split/locate.hpp"
 #include "kernel/stopwatch.hpp"
 
 namespace madd::detail {
@@ -64,17 +65,20 @@ bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const M
 // Two cut partial separators meeting at one boundary point would pinch a side
 // there (and may form an angle below Phi0). Returns pairs of G'_D vertices to
 // keep together so that the later of the two is not cut.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
+                                                                     std::span<const BoundaryLinks> links,
                                                                      const std::vector<std::uint8_t>& side) {
-  std::vector<std::uint8_t> used(boundary_points, 0);
+  std::vector<std::uint8_t> used(links.size(), 0);  // bit s: a cut separator ends there on side s
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
   for (const MedialEdge& e : g.edges) {
     if (!is_cut(g, side, e)) continue;
     bool clash = false;
-    for (std::uint32_t p : {e.from, e.to}) {
-      if (p >= boundary_points) continue;
-      clash = clash || used[p];
-      used[p] = 1;
+    for (const std::uint32_t p : {e.from, e.to}) {
+      if (p >= links.size()) continue;
+      const std::uint32_t other = p == e.from ? e.to : e.from;
+      const auto bit = static_cast<std::uint8_t>(1U << link_side(g.points, links, p, g.points[other]));
+      clash = clash || (used[p] & bit) != 0 || links[p].no_end;
+      used[p] |= bit;
     }
     if (clash) out.emplace_back(g.coarse[e.left], g.coarse[e.right]);
   }
@@ -117,6 +121,9 @@ std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1) {
 
 namespace {
 
+// Per isolated point of the face: the G_D vertices holding it.
+using IsolatedIn = std::vector<std::vector<std::uint32_t>>;
+
 struct Candidate {
   SplitResult result;
   double quality = -1.0;
@@ -127,8 +134,34 @@ EndRef end_ref(const FaceDomain& fd, const MedialGraph& g, std::uint32_t point) 
   return EndRef{EndRef::centre, no_index, point, g.points[point]};
 }
 
+// The side of every working edge of the interior pieces and of every
+// isolated point, for Subdivision::commit. Both sides of an interior edge are
+// one G'_D vertex (the edge is a constraint, never a partial separator), and
+// every G_D vertex holding an isolated point is on one side (valid_bisection).
+void place_interior(const FaceDomain& fd, const Triangulation& tri, const MedialGraph& g,
+                    const std::vector<std::uint8_t>& side, const IsolatedIn& isolated_in, SplitResult& r) {
+  r.inner_sides.resize(fd.inner_edges_of.size());
+  for (std::size_t k = 0; k < fd.inner_edges_of.size(); ++k) r.inner_sides[k].assign(fd.inner_edges_of[k], 0);
+  r.point_sides.assign(isolated_in.size(), 0);
+  for (std::size_t k = 0; k < isolated_in.size(); ++k) r.point_sides[k] = side[g.coarse[isolated_in[k].front()]];
+  if (fd.inner_edge.empty()) return;
+  const auto gd_vertex = [&](std::uint32_t t, int sub) {
+    return g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>(sub) : 0u);
+  };
+  for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t seg = tri.segment_of[t][i];
+      if (seg != no_index && seg >= fd.ring_segments) {
+        const auto& [piece, along] = fd.inner_edge[seg - fd.ring_segments];
+        r.inner_sides[piece][along] = side[g.coarse[gd_vertex(t, i)]];
+      }
+    }
+  }
+}
+
 SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDomain& fd, const Triangulation& tri,
-                        const MedialGraph& g, const std::vector<std::uint8_t>& side, const EndSmoothing* smoothing) {
+                        const MedialGraph& g, const std::vector<std::uint8_t>& side, const IsolatedIn& isolated_in,
+                        const EndSmoothing* smoothing) {
   SplitResult r;
   std::vector<CutEnd> cut;
   for (const MedialEdge& e : g.edges) {
@@ -146,6 +179,7 @@ SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDo
       r.ring_side[ring] = side[g.coarse[v]];
     }
   }
+  place_interior(fd, tri, g, side, isolated_in, r);
   // Interior points: the centroid of the largest atom of each side, strictly inside it.
   double best[2] = {-1.0, -1.0};
   for (std::uint32_t v = 0; v < g.gd.vertex_count(); ++v) {
@@ -162,11 +196,50 @@ SplitResult make_result(const Subdivision& sub, std::uint32_t face, const FaceDo
   return r;
 }
 
+// Keep-together pairs for every isolated point a cut separator runs through
+// (the G_D vertices holding it are on both sides).
+void isolated_conflicts(const MedialGraph& g, const IsolatedIn& isolated_in, const std::vector<std::uint8_t>& side,
+                        std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+  for (const auto& holders : isolated_in) {
+    const std::uint32_t first = g.coarse[holders.front()];
+    for (const std::uint32_t v : holders)
+      if (side[g.coarse[v]] != side[first]) out.emplace_back(first, g.coarse[v]);
+  }
+}
+
+// The G_D vertices holding each isolated point of the face; a pinned one is
+// a triangulation vertex, and one triangle around it stands for all (they
+// are one G'_D vertex: no separator ends there).
+IsolatedIn locate_isolated(const FaceDomain& fd, const Triangulation& tri, const MedialGraph& g, std::uint32_t face) {
+  IsolatedIn out;
+  if (!fd.isolated.empty()) {
+    const GdLocator locator(g, tri);
+    for (const Point& p : fd.isolated) out.push_back(locator.containing(p));
+  }
+  if (!fd.pinned.empty()) {
+    std::vector<std::uint32_t> pinned_of(fd.refs.size(), no_index);
+    for (std::uint32_t k = 0; k < fd.pinned.size(); ++k) pinned_of[fd.pinned[k]] = k;
+    out.resize(fd.pinned.size());
+    for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t k = pinned_of[tri.triangles[t][i]];
+        if (k != no_index && out[k].empty())
+          out[k].push_back(g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>((i + 1) % 3) : 0u));
+      }
+    }
+  }
+  for (const auto& holders : out)
+    if (holders.empty()) throw DecompositionError("an isolated point is in no triangle of its subdomain (internal error)", face);
+  return out;
+}
+
 // Bisects G'_D aiming at `target` on side 0, repartitioning with
 // keep-together constraints while cut separators pinch at a boundary point
-// (Sec. 4.3). Returns an empty side vector when no valid bisection is found.
-std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boundary_points, double target,
-                                          std::uint64_t seed, double weights[2]) {
+// (Sec. 4.3) or run through an isolated point. Returns an empty side vector
+// when no valid bisection is found.
+std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::span<const BoundaryLinks> links,
+                                          const IsolatedIn& isolated_in, double target, std::uint64_t seed,
+                                          double weights[2]) {
   BisectOptions bo;
   bo.target_fraction = target;
   bo.imbalance_tolerance = 0.02;
@@ -175,7 +248,8 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
   for (int attempt = 0; attempt < max_repartitions; ++attempt) {
     Bisection b = bisect(g.contracted, bo);
     if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return {};
-    const auto conflicts = pinch_conflicts(g, boundary_points, b.side);
+    auto conflicts = pinch_conflicts(g, links, b.side);
+    isolated_conflicts(g, isolated_in, b.side, conflicts);
     if (conflicts.empty()) {
       weights[0] = b.weight[0];
       weights[1] = b.weight[1];
@@ -191,14 +265,14 @@ std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::size_t boun
 // between the sides after the split. Smooths the chosen separator (Sec. 5.1).
 Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, int round,
                          const SplitOptions& options, const FaceDomain& fd, const Triangulation& tri,
-                         const MedialGraph& g, std::span<const double> fractions) {
+                         const MedialGraph& g, const IsolatedIn& isolated_in, std::span<const double> fractions) {
   Candidate out;
   const bool smooth = options.smoothing_iterations > 0;
   const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(round) * 7919u + face;
   std::vector<std::uint8_t> best_side;
   const auto consider = [&](double fraction, std::uint64_t target_seed) {
     double w[2] = {0.0, 0.0};
-    auto side = valid_bisection(g, fd.refs.size(), fraction, target_seed, w);
+    auto side = valid_bisection(g, fd.links, isolated_in, fraction, target_seed, w);
     if (side.empty()) return;
     const double q = balance_quality(plan, w[0], w[1]);
     if (q > out.quality) {
@@ -233,7 +307,7 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
     ends.weight_per_area = area > 0.0 ? (w[0] + w[1]) / area : 1.0;
     ends.min_length = min_separator_fraction * std::sqrt(area / plan);
   }
-  out.result = make_result(sub, face, fd, tri, g, best_side, smooth ? &ends : nullptr);
+  out.result = make_result(sub, face, fd, tri, g, best_side, isolated_in, smooth ? &ends : nullptr);
   out.quality = balance_quality(plan, out.result.weight[0], out.result.weight[1]);
   return out;
 }
@@ -242,9 +316,10 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
 // choose the separator; the time of each phase is added to `times`.
 Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, double spacing, int round,
                       const SplitOptions& options, const FaceDensity& density, SplitTimes& times,
-                      std::span<const double> fractions = {}) {
+                      std::span<const double> fractions = {}, bool pin_isolated = false) {
   Stopwatch clock;
-  const FaceDomain fd = refine_face(sub, face, spacing, density.point_weights, options.adaptive_refine);
+  const FaceDomain fd =
+      refine_face(sub, face, spacing, density.point_weights, options.adaptive_refine, pin_isolated);
   times.refine += clock.lap();
   const Triangulation tri = triangulate(fd.pslg);
   times.triangulate += clock.lap();
@@ -253,7 +328,8 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
   if (density.graded && g.contracted.vertex_count() >= 2) set_vertex_weights(g, density_weights(g, tri, fd, density));
   times.graph += clock.lap();
   if (g.contracted.vertex_count() < 2) return Candidate{};
-  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g, fractions);
+  const IsolatedIn isolated_in = locate_isolated(fd, tri, g, face);
+  Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g, isolated_in, fractions);
   out.result.snap = {snap_fraction * spacing, options.min_angle_deg};
   times.bisect += clock.lap();
   return out;
@@ -287,8 +363,11 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
                           const FaceDensity& density, const ResourceGuard* limits) {
   const double area = sub.face_area(face);
-  const double perimeter = face_perimeter(sub, face);
-  std::size_t vertices = 0;
+  // The working points cap counts the interior pieces too: they are refined alike.
+  double perimeter = face_perimeter(sub, face);
+  std::size_t vertices = sub.faces[face].inner_segments.size() + sub.faces[face].inner_points.size();
+  for (const std::uint32_t seg : sub.faces[face].inner_segments)
+    perimeter += distance(sub.points[sub.segments[seg].a], sub.points[sub.segments[seg].b]);
   for (const auto& ring : sub.faces[face].rings) vertices += ring.size();
   const double point_cap =
       std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
@@ -308,7 +387,8 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }
-  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
+  const bool plain = sub.faces[face].inner_segments.empty() && sub.faces[face].inner_points.empty();
+  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 && plain &&
       static_cast<double>(vertices) <= max_chord_points) {
     if (auto chord = chord_split(sub, face, plan, options, best.quality, times)) {
       best.result = std::move(chord->result);
@@ -330,6 +410,15 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     const double h = std::max(offset_spacings[k] * first_spacing, perimeter / point_cap);
     Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + uneven_rounds + static_cast<int>(k),
                               options, density, times);
+    if (c.quality > best.quality) best = std::move(c);
+  }
+  // Keeping every separator off the isolated points found none: pin them
+  // as points where no separator may end (refine_face).
+  for (int k = 0; best.quality < 0.0 && !sub.faces[face].inner_points.empty() && k < uneven_rounds; ++k) {
+    if (limits != nullptr) limits->check(sub.faces.size());
+    const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
+    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + k, options, density, times, {},
+                              true);
     if (c.quality > best.quality) best = std::move(c);
   }
   if (best.quality < 0.0) {

@@ -4,6 +4,7 @@
 // separators as geometry. Reads the subdivision only, so splits of different
 // faces can run on different threads.
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -60,8 +61,11 @@ double balance_quality(std::uint32_t plan, double w0, double w1);
 std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1);
 
 // Sec. 4.3: pairs of G'_D vertices whose cut separators would pinch a side at
-// one boundary point (empty when the bisection `side` is valid).
-std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g, std::size_t boundary_points,
+// one boundary point (empty when the bisection `side` is valid). At a point
+// of an interior segment (BoundaryLinks::two_sided), one cut separator on each
+// side of it is a crossing, not a pinch. `links`: one per working point.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
+                                                                     std::span<const BoundaryLinks> links,
                                                                      const std::vector<std::uint8_t>& side);
 
 struct FaceDomain;

@@ -55,6 +55,11 @@ bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
     return false;  // the union has no single outer ring
   }
   if (!rings_are_simple(merged)) return false;
+  for (const std::uint32_t f : {a, b}) {
+    merged.inner_segments.insert(merged.inner_segments.end(), faces[f].inner_segments.begin(),
+                                 faces[f].inner_segments.end());
+    merged.inner_points.insert(merged.inner_points.end(), faces[f].inner_points.begin(), faces[f].inner_points.end());
+  }
 
   const std::uint32_t keep = std::min(a, b), gone = std::max(a, b);
   for (const std::uint32_t seg : shared) seg_faces[seg] = {no_index, no_index};
@@ -68,6 +73,7 @@ bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
   for (const std::uint32_t f : {a, b}) {  // siblings are mutual: only theirs can name a or b
     if (faces[f].sibling != no_index) faces[faces[f].sibling].sibling = no_index;
   }
+  for (const std::uint32_t seg : merged.inner_segments) seg_faces[seg] = {keep, keep};
   faces[keep] = std::move(merged);
   const auto last = static_cast<std::uint32_t>(faces.size() - 1);
   if (gone != last) {
@@ -78,6 +84,7 @@ bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
         }
       }
     }
+    for (const std::uint32_t seg : faces[last].inner_segments) seg_faces[seg] = {gone, gone};
     if (faces[last].sibling != no_index) faces[faces[last].sibling].sibling = gone;
     faces[gone] = std::move(faces[last]);
   }
@@ -129,6 +136,8 @@ void Subdivision::compact() {
     for (auto& ring : face.ring_segments) {
       for (std::uint32_t& s : ring) s = new_segment[s];
     }
+    for (std::uint32_t& s : face.inner_segments) s = new_segment[s];
+    for (std::uint32_t& v : face.inner_points) v = new_point[v];
   }
 }
 

@@ -3,10 +3,12 @@
 #include "subdivision/subdivision.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 
 #include "kernel/rings.hpp"
+#include "pslg/validate_detail.hpp"
 #include "madd/error.hpp"
 
 namespace madd::detail {
@@ -25,47 +27,58 @@ Cycle make_cycle(const std::vector<Point>& points, const std::vector<HalfEdge>& 
 Subdivision Subdivision::from_domain(const Pslg& domain) {
   Subdivision s;
   s.points = domain.points;
-  const auto n = static_cast<std::uint32_t>(domain.segments.size());
-  std::vector<HalfEdge> half_edges;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Segment seg = domain.segments[i];
+  // Segments split at the vertices lying inside them (no new points), each
+  // piece with the sides the domain lies on (docs/algorithm.md, "Interior segments").
+  const DomainPieces dp = trace_domain_pieces(domain, has_vertex_inside_segment(domain));
+  const Pslg& pieces = dp.resolved.pslg;
+  const auto n = static_cast<std::uint32_t>(pieces.segments.size());
+  std::vector<HalfEdge> half_edges;  // the boundary pieces, each run with the domain on its left
+  Face face;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    Segment seg = pieces.segments[k];
     if (!domain.has_segment_markers || seg.marker == 0) seg.marker = 1;
     s.segments.push_back(seg);
-    s.origin.push_back(i);
-    half_edges.push_back({seg.a, seg.b, i});
-    half_edges.push_back({seg.b, seg.a, i});
+    const std::uint32_t source = dp.resolved.source_segment[k];
+    s.origin.push_back(source);
+    // Pieces of one segment are consecutive, in its direction.
+    s.next_piece.push_back(k + 1 < n && dp.resolved.source_segment[k + 1] == source ? k + 1 : no_index);
+    const unsigned sides = dp.domain_sides(k);
+    if (sides == 3U) face.inner_segments.push_back(k);
+    else if (sides == 1U) half_edges.push_back({seg.a, seg.b, k});
+    else half_edges.push_back({seg.b, seg.a, k});
   }
-  s.next_piece.assign(n, no_index);
+  face.inner_points = dp.isolated;
   s.seg_faces.assign(n, {no_index, no_index});
-  s.origin_hole.assign(n, Point{});
-  s.origin_has_hole.assign(n, 0);
+  s.origin_hole.assign(domain.segments.size(), Point{});
+  s.origin_has_hole.assign(domain.segments.size(), 0);
   std::vector<Cycle> cycles;
   for (const auto& ids : walk_faces(s.points, half_edges)) cycles.push_back(make_cycle(s.points, half_edges, ids));
-  // The domain's outer ring is the largest counter-clockwise cycle; its
-  // mirror is the largest clockwise one (the unbounded face); every other
-  // clockwise cycle bounds a hole.
-  std::size_t outer = no_index, unbounded = no_index;
+  // With the domain on their left, its outer ring is the one counter-clockwise
+  // cycle and every clockwise one bounds a hole: the face on its other side
+  // holds the hole point that removed it.
+  std::vector<std::uint32_t> hole_of_face(dp.faces.ring_count(), no_index);
+  for (std::uint32_t h = static_cast<std::uint32_t>(dp.real_holes); h-- > 0;) {
+    if (dp.faces.hole_face[h] != no_index) hole_of_face[dp.faces.hole_face[h]] = h;
+  }
+  std::size_t outer = no_index;
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     if (cycles[c].area > 0.0 && (outer == no_index || cycles[c].area > cycles[outer].area)) outer = c;
-    if (cycles[c].area < 0.0 && (unbounded == no_index || cycles[c].area < cycles[unbounded].area)) unbounded = c;
   }
   if (outer == no_index) throw DecompositionError("domain has no outer boundary");
-  Face face;
   face.rings.push_back(cycles[outer].vertices);
   face.ring_segments.push_back(cycles[outer].segments);
   for (std::size_t c = 0; c < cycles.size(); ++c) {
-    if (cycles[c].area >= 0.0 || c == unbounded) continue;
-    const Point* hole = nullptr;
-    for (const Point& h : domain.holes) {
-      if (locate_in_ring(RingView(s.points, cycles[c].vertices), h) == RingLocation::inside) {
-        hole = &h;
-        break;
-      }
-    }
-    if (hole == nullptr) throw DecompositionError("a hole ring of the domain contains no hole point");
+    if (c == outer) continue;
+    if (cycles[c].area > 0.0) throw DecompositionError("the domain's boundary has two outer rings (internal error)");
+    // The half-edge of the ring's first piece that runs away from the domain.
+    const std::uint32_t k = cycles[c].segments[0];
+    const bool forward = s.segments[k].a == cycles[c].vertices[0];
+    const std::uint32_t outside = dp.faces.face_of_half_edge(2 * k + (forward ? 1 : 0));
+    const std::uint32_t hole = outside == no_index ? no_index : hole_of_face[outside];
+    if (hole == no_index) throw DecompositionError("a hole ring of the domain contains no hole point");
     for (std::uint32_t seg : cycles[c].segments) {
-      s.origin_hole[seg] = *hole;
-      s.origin_has_hole[seg] = 1;
+      s.origin_hole[s.origin[seg]] = domain.holes[hole];
+      s.origin_has_hole[s.origin[seg]] = 1;
     }
     face.rings.push_back(cycles[c].vertices);
     face.ring_segments.push_back(cycles[c].segments);
@@ -73,6 +86,7 @@ Subdivision Subdivision::from_domain(const Pslg& domain) {
   for (const auto& ring : face.ring_segments) {
     for (std::uint32_t seg : ring) s.seg_faces[seg][0] = 0;
   }
+  for (const std::uint32_t seg : face.inner_segments) s.seg_faces[seg] = {0, 0};
   s.faces.push_back(std::move(face));
   return s;
 }
@@ -108,6 +122,10 @@ std::uint32_t Subdivision::split_segment(std::uint32_t piece, std::uint32_t w) {
   next_piece.push_back(next_piece[piece]);
   next_piece[piece] = s2;
   seg_faces.push_back(seg_faces[piece]);
+  if (is_inner(piece)) {
+    faces[seg_faces[piece][0]].inner_segments.push_back(s2);
+    return w;
+  }
   for (std::uint32_t f : seg_faces[piece]) {
     if (f == no_index) continue;
     Face& face = faces[f];
@@ -210,6 +228,12 @@ std::uint32_t Subdivision::add_separators(std::uint32_t face, const SplitResult&
 
 std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) {
   const auto new_id = static_cast<std::uint32_t>(faces.size());
+  // The interior pieces as the split saw them, with their ends then: a
+  // separator crossing one splits it (add_separators), and each part goes to
+  // the side its working edges were on.
+  const std::vector<std::uint32_t> inner_before = faces[face].inner_segments;
+  std::vector<Segment> inner_span;
+  for (const std::uint32_t seg : inner_before) inner_span.push_back(segments[seg]);
   const std::uint32_t first_separator = add_separators(face, split);
   // Half-edges: the face's rings in ring direction, separators both ways.
   // side_of: 0/1 for separators (the side on the left), 2 + ring for ring edges.
@@ -244,6 +268,8 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
   }
   Face sides[2];
   for (int s = 0; s < 2; ++s) sides[s] = assemble_face(cycles[s], split.interior[s], face);
+  assign_inner(face, split, inner_before, inner_span, sides);
+  for (const std::uint32_t seg : sides[1].inner_segments) seg_faces[seg] = {new_id, new_id};
   for (const auto& ring : sides[1].ring_segments) {
     for (std::uint32_t seg : ring) {
       if (seg >= first_separator) continue;  // new separators already name both faces
@@ -259,6 +285,34 @@ std::uint32_t Subdivision::commit(std::uint32_t face, const SplitResult& split) 
   faces[face] = std::move(sides[0]);
   faces.push_back(std::move(sides[1]));
   return new_id;
+}
+
+void Subdivision::assign_inner(std::uint32_t face, const SplitResult& split, const std::vector<std::uint32_t>& before,
+                               const std::vector<Segment>& span, Face sides[2]) const {
+  const Face& old = faces[face];
+  if (split.inner_sides.size() != before.size() || split.point_sides.size() != old.inner_points.size())
+    throw DecompositionError("split of subdomain " + std::to_string(face) +
+                                 " does not place its interior constraints (internal error)",
+                             face);
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    const std::vector<std::uint8_t>& along = split.inner_sides[k];
+    const Point a = points[span[k].a], b = points[span[k].b];
+    const double length2 = dot(b - a, b - a);
+    // The parts of the piece, in its direction: the piece itself, then those split off it.
+    for (std::uint32_t q = before[k]; q != no_index; q = next_piece[q]) {
+      std::uint8_t side = 0;
+      if (!along.empty()) {
+        const Point mid = lerp(points[segments[q].a], points[segments[q].b], 0.5);
+        const double t = dot(mid - a, b - a) / length2;
+        const auto m = static_cast<double>(along.size());
+        side = along[static_cast<std::size_t>(std::clamp(std::floor(t * m), 0.0, m - 1.0))];
+      }
+      sides[side].inner_segments.push_back(q);
+      if (segments[q].b == span[k].b) break;
+    }
+  }
+  for (std::size_t k = 0; k < old.inner_points.size(); ++k)
+    sides[split.point_sides[k]].inner_points.push_back(old.inner_points[k]);
 }
 
 Face Subdivision::assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const {

@@ -61,6 +61,12 @@ struct SplitResult {
   std::vector<std::uint8_t> ring_side;  // per ring of the face: the side its inner neighbourhood joins
   double weight[2] = {0.0, 0.0};
   Point interior[2];                    // a point strictly inside each side
+  // Per interior piece of the face (Face::inner_segments as the split saw
+  // it): the side of each of its working edges, in the piece's direction
+  // (split/refine.hpp divides it into that many equal parts); per isolated
+  // point (Face::inner_points): its side.
+  std::vector<std::vector<std::uint8_t>> inner_sides;
+  std::vector<std::uint8_t> point_sides;
   EndSnap snap;                         // how ends may move at commit (not part of the choice)
   SplitTimes times;                     // how long computing it took (not part of the geometry)
 };
@@ -108,7 +114,8 @@ public:
   std::vector<Segment> segments;
   std::vector<std::uint32_t> origin;                     // input segment, no_index for separators
   std::vector<std::uint32_t> next_piece;                 // next piece along the same original segment
-  std::vector<std::array<std::uint32_t, 2>> seg_faces;   // faces having the segment in a ring
+  std::vector<std::array<std::uint32_t, 2>> seg_faces;   // faces having the segment in a ring;
+                                                         // an interior piece names its face twice
   std::vector<Face> faces;
   std::vector<Point> origin_hole;                        // per input segment on a hole ring: its hole point
   std::vector<std::uint8_t> origin_has_hole;
@@ -124,6 +131,11 @@ public:
   // Inserts the separators of `split` into face `face`, which becomes side 0;
   // side 1 is appended. Returns the new face id.
   std::uint32_t commit(std::uint32_t face, const SplitResult& split);
+
+  // An interior piece: in no ring, inside one face (seg_faces names it twice).
+  bool is_inner(std::uint32_t segment) const {
+    return seg_faces[segment][0] != no_index && seg_faces[segment][0] == seg_faces[segment][1];
+  }
 
   double face_area(std::uint32_t face) const;
   // The vertices on all rings of a face: a face whose boundary changed has more.
@@ -157,6 +169,11 @@ private:
   // Every angle at the far end of `edge` stays >= phi when its near end moves to `to`.
   bool far_angles_hold(const SnapEdge& edge, Point from, Point to, double phi) const;
   std::uint32_t add_separators(std::uint32_t face, const SplitResult& split);  // returns the first new segment
+  // Gives each side of a commit its interior pieces (`before`, the face's as
+  // the split saw them, spanning `span`, and what the commit split off them)
+  // and isolated points, by the sides the split found.
+  void assign_inner(std::uint32_t face, const SplitResult& split, const std::vector<std::uint32_t>& before,
+                    const std::vector<Segment>& span, Face sides[2]) const;
   Face assemble_face(std::vector<Cycle>& cycles, Point interior, std::uint32_t face) const;
   std::uint32_t split_segment(std::uint32_t piece, std::uint32_t vertex);
 };

@@ -16,21 +16,18 @@ namespace madd::detail {
 ExactSum domain_twice_area_exact(const Pslg& pslg) {
   ExactSum twice;
   if (pslg.segments.empty()) return twice;
-  const SegmentGrid grid(pslg.points, pslg.segments);
-  const FaceMap fm = build_face_map(pslg, grid);
-  const std::vector<bool> kept = kept_faces(fm);
-  for (std::uint32_t h = 0; h < fm.ring_of.size(); ++h) {
-    const std::uint32_t face = fm.face_of_half_edge(h);
-    if (face == no_index || !kept[face]) continue;
-    const Segment& s = pslg.segments[h >> 1];
+  // Both sides of an interior piece are kept: its two half-edges cancel exactly.
+  const DomainPieces dp = trace_domain_pieces(pslg, has_vertex_inside_segment(pslg));
+  const Pslg& pieces = dp.resolved.pslg;
+  for (std::uint32_t h = 0; h < dp.faces.ring_of.size(); ++h) {
+    if (!dp.is_kept(dp.faces.face_of_half_edge(h))) continue;
+    const Segment& s = pieces.segments[h >> 1];
     const bool backward = (h & 1U) != 0;
-    twice.add_cross(pslg.points[backward ? s.b : s.a], pslg.points[backward ? s.a : s.b]);
+    twice.add_cross(pieces.points[backward ? s.b : s.a], pieces.points[backward ? s.a : s.b]);
   }
   return twice;
 }
 
-// Andrew's monotone chain, every turn decided by orient2d: the hull's
-// vertices counter-clockwise, without collinear ones.
 std::vector<Point> convex_hull(std::vector<Point> pts) {
   std::sort(pts.begin(), pts.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   if (pts.size() < 3) return {};
