@@ -88,11 +88,10 @@ void check_geo(const Decomposition& d) {
     for (const std::int64_t l : g.surfaces[k]) CHECK(l == static_cast<std::int64_t>(next_loop++));
     CHECK(g.physical_surfaces.at(static_cast<std::int64_t>(k) + 1) == "subdomain_" + std::to_string(k));
   }
-  // Physical Curves: one per boundary marker and one per interior marker, holding exactly their pieces.
+  // Physical Curves: one per marker, holding exactly its pieces, boundary and interior alike.
   std::map<std::string, std::multiset<std::int64_t>> expected;
   for (std::uint32_t j = 0; j < d.segments.size(); ++j)
-    if (!d.is_separator(j))
-      expected[(owner[j] == no_index ? "boundary_" : "interior_") + std::to_string(d.segments[j].marker)].insert(j + 1);
+    if (!d.is_separator(j)) expected["boundary_" + std::to_string(d.segments[j].marker)].insert(j + 1);
   CHECK(g.physical_curves == expected);
   // Interior segments and isolated points are embedded in their subdomain's surface, and only there.
   std::map<std::int64_t, std::vector<std::int64_t>> lines_in, points_in;
@@ -206,16 +205,16 @@ TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
   }
 }
 
-TEST_CASE("interior output: geo embeds interior segments and isolated points, grouped by marker") {
+TEST_CASE("interior output: geo embeds interior segments and isolated points, in their marker's curve") {
   const Decomposition d = interior_square().decomposition;
   check_geo(d);
   const GeoModel g = parse_geo(format_geo(d));
   CHECK(g.embedded_lines.at(1) == std::vector<std::int64_t>{8, 9, 10, 11});  // the loop, in subdomain 0
   CHECK(g.embedded_lines.at(2) == std::vector<std::int64_t>{12});            // the dangling segment
   CHECK(g.embedded_points.at(2) == std::vector<std::int64_t>{11});           // the isolated point
-  CHECK(g.physical_curves.at("interior_7").size() == 4);
-  CHECK(g.physical_curves.at("interior_1").size() == 1);
-  CHECK(g.physical_curves.count("boundary_7") == 0);
+  CHECK(g.physical_curves.at("boundary_7").size() == 4);   // the loop's marker
+  CHECK(g.physical_curves.at("boundary_1").size() == 1);   // the dangling piece: input marker 0, so 1
+  CHECK(format_geo(d).find("Physical Curve(\"boundary_7\", 7)") != std::string::npos);
   // The isolated point's size is its subdomain's shortest segment (the dangling one, 0.3).
   CHECK(g.points.size() == d.points.size());
   const std::string text = format_geo(d);

@@ -22,9 +22,8 @@ struct GeoOptions {
 // Loop per ring, Plane Surface(k+1) per subdomain k (outer loop, then holes),
 // its interior segments and isolated points embedded in it (Line{...} In
 // Surface, Point{...} In Surface), Physical Surface("subdomain_<k>", k+1),
-// Physical Curve("boundary_<m>") per boundary marker m (tag m when m > 0,
-// else chosen by gmsh) and Physical Curve("interior_<m>") per interior
-// segment marker (tag chosen by gmsh).
+// and Physical Curve("boundary_<m>") per marker m of the input's segments,
+// boundary and interior pieces alike (tag m when m > 0, else chosen by gmsh).
 std::string format_geo(const Decomposition& decomposition, const GeoOptions& options = {});
 
 // A legacy VTK (version 3.0, ASCII) POLYDATA file: every point, then the
