@@ -35,7 +35,9 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
 // subdomain (int; -1 for a separator), and FIELD arrays area and weight
 // (its subdomain's; FIELD, so VTK's reader loads them all), kind (0 triangle,
 // 1 boundary piece, 2 separator, 3 interior segment, 4 isolated point) and
-// marker (the segment's, else 0).
+// marker (the segment's, else 0); with the input's regions, region_attribute
+// and region_max_area (the triangle's under Triangle's -A and -a rule; 0 and
+// -1 where no region reaches and for the other cells).
 // Triangles of neighbouring subdomains share the points of their separator.
 // Throws what madd::triangulate throws if a subdomain is not a valid polygon.
 std::string format_vtk(const Decomposition& decomposition);
