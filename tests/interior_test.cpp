@@ -188,4 +188,24 @@ TEST_CASE("a separator crossing a lane splits it at the crossing vertex, on both
   CHECK(lane_pieces >= 2);  // crossed at least once
 }
 
+TEST_CASE("a square with a stub from its side and a survey point still halves evenly (the chord fallback)") {
+  // The medial separators of a near-square face cut off about a third; the
+  // chord that halves it must miss the stub and the point, and may not end
+  // where the stub meets the side.
+  Pslg p;
+  p.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0.4}, {0.3, 0.4}, {0.7, 0.7}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 4, 1}, {4, 0, 1}, {4, 5, 2}};
+  p.has_segment_markers = true;
+  for (const std::uint32_t n : {2u, 3u}) {
+    CAPTURE(n);
+    madd::DecomposeOptions o;
+    o.subdomains = n;
+    const Decomposition d = madd::decompose(p, o);
+    check_interior(d, p, n, 60.0);
+    double largest = 0.0;
+    for (const madd::Subdomain& s : d.subdomains) largest = std::max(largest, s.area);
+    CHECK(largest * n <= 1.1);  // area 1
+  }
+}
+
 } // TEST_SUITE

@@ -15,6 +15,14 @@ inline bool on_segment(Point a, Point b, Point p) noexcept {
   return in_box && orient2d(a, b, p) == 0.0;
 }
 
+// The closed segments ab and cd share a point: they cross, touch or overlap.
+inline bool closed_segments_meet(Point a, Point b, Point c, Point d) noexcept {
+  const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) && ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+    return true;
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+}
+
 // q lies inside triangle abc or on its boundary, whichever way abc turns.
 // A degenerate (collinear) triangle contains every point of its line.
 inline bool in_closed_triangle(Point a, Point b, Point c, Point q) noexcept {

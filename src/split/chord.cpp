@@ -11,6 +11,7 @@
 #include <numbers>
 #include <vector>
 
+#include "kernel/containment.hpp"
 #include "madd/medial.hpp"
 #include "madd/predicates.hpp"
 #include "split/split.hpp"
@@ -35,17 +36,19 @@ struct Ring {
 Ring ring_of(const FaceDomain& fd) {
   Ring ring;
   const auto& pts = fd.pslg.points;
-  if (!fd.pslg.holes.empty() || pts.size() < 4) return ring;
-  for (const BoundaryLinks& l : fd.links) {
-    if (l.prev == no_index) return ring;
+  // The ring's working points come first (refine_face), the interior ones after.
+  const std::size_t ring_points = fd.ring_segments;
+  if (!fd.pslg.holes.empty() || ring_points < 4) return ring;
+  for (std::size_t w = 0; w < ring_points; ++w) {
+    if (fd.links[w].prev == no_index) return ring;
   }
   ring.origin = pts[0];
   std::uint32_t v = 0;
   do {
     ring.at.push_back(v);
     v = fd.links[v].next;
-  } while (v != 0 && ring.at.size() <= pts.size());
-  if (ring.at.size() != pts.size()) return Ring{};
+  } while (v != 0 && v < ring_points && ring.at.size() <= ring_points);
+  if (v != 0 || ring.at.size() != ring_points) return Ring{};
   ring.prefix.assign(ring.at.size() + 1, 0.0);
   for (std::size_t k = 0; k < ring.at.size(); ++k) {
     const Point a = pts[ring.at[k]] - ring.origin;
@@ -87,7 +90,7 @@ std::vector<Cone> cones(const FaceDomain& fd, const Ring& ring, double min_angle
     double wedge = std::atan2(cross(next, prev), dot(next, prev));
     if (wedge < 0.0) wedge += 2.0 * std::numbers::pi;
     Cone& c = out[k];
-    c.empty = !(wedge > 2.0 * phi);
+    c.empty = !(wedge > 2.0 * phi) || fd.links[v].no_end;  // no separator ends where an interior segment meets the ring
     c.reflex = wedge - 2.0 * phi > std::numbers::pi;
     c.from = rotate(next, phi);
     c.to = rotate(prev, -phi);
@@ -123,7 +126,43 @@ bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::
     const Segment edge{ring.at[k], ring.at[(k + 1) % n], 0};
     if (classify_contact(fd.pslg.points, chord, edge).kind != Contact::none) return false;
   }
+  // Nor any interior constraint: it may not even touch one (a crossing is the
+  // medial separators' business, with its angles on both sides).
+  const Point a = fd.pslg.points[chord.a], b = fd.pslg.points[chord.b];
+  for (std::size_t s = fd.ring_segments; s < fd.pslg.segments.size(); ++s) {
+    const Point c = fd.pslg.points[fd.pslg.segments[s].a], d = fd.pslg.points[fd.pslg.segments[s].b];
+    if (closed_segments_meet(a, b, c, d)) return false;
+  }
+  for (const Point& p : fd.isolated)
+    if (on_segment(a, b, p)) return false;
   return true;
+}
+
+// Which side of the chord each interior working edge (its midpoint) and each
+// isolated point lies on: side 0 is the polygon of ring positions i..j.
+void place_by_chord(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j, SplitResult& r) {
+  std::vector<Point> side0;
+  for (std::size_t k = i;; k = (k + 1) % ring.at.size()) {
+    side0.push_back(fd.pslg.points[ring.at[k]]);
+    if (k == j) break;
+  }
+  const auto in_side0 = [&](Point q) {  // crossing number; q is off the chord and the ring
+    bool in = false;
+    for (std::size_t k = 0; k < side0.size(); ++k) {
+      const Point u = side0[k], w = side0[(k + 1) % side0.size()];
+      if ((u.y > q.y) != (w.y > q.y) && orient2d(u, w, q) * (w.y - u.y) > 0.0) in = !in;
+    }
+    return in;
+  };
+  r.inner_sides.clear();
+  for (const std::uint32_t m : fd.inner_edges_of) r.inner_sides.emplace_back(m, std::uint8_t{0});
+  for (std::size_t s = fd.ring_segments; s < fd.pslg.segments.size(); ++s) {
+    const auto& [piece, along] = fd.inner_edge[s - fd.ring_segments];
+    const Point mid = midpoint(fd.pslg.points[fd.pslg.segments[s].a], fd.pslg.points[fd.pslg.segments[s].b]);
+    r.inner_sides[piece][along] = in_side0(mid) ? 0 : 1;
+  }
+  r.point_sides.clear();
+  for (const Point& p : fd.isolated) r.point_sides.push_back(in_side0(p) ? 0 : 1);
 }
 
 // A point strictly inside the polygon of ring positions i..j (cyclic).
@@ -272,6 +311,7 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
     out.result.weight[1] = 0.5 * ring.prefix[n] - a;
     out.result.interior[0] = interior_point(fd, ring, c.i, c.j, 0);
     out.result.interior[1] = interior_point(fd, ring, c.i, c.j, 1);
+    place_by_chord(fd, ring, c.i, c.j, out.result);
     return out;
   }
   return std::nullopt;

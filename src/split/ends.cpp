@@ -30,7 +30,8 @@ double deg_between(Point o, Point a, Point b) { return degrees(angle_at(o, a, b)
 double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<CutEnd>& cut, std::size_t self,
                   std::uint32_t c, std::uint32_t x) {
   const std::size_t boundary = fd.refs.size();
-  if (fd.links[x].prev == no_index || fd.links[x].two_sided) return -1.0;  // ends only move along the rings
+  // Ends only move along the rings, and never onto a point where none may end.
+  if (fd.links[x].prev == no_index || fd.links[x].two_sided || fd.links[x].no_end) return -1.0;
   double a = link_angle(g.points, fd.links, x, g.points[c]);
   if (a < 0.0) return -1.0;
   if (c < boundary) {
@@ -135,7 +136,8 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
         const std::uint32_t p = cut[k].end[e];
         // An end on an interior segment is a crossing, shared with the partial
         // separator on its other side: it stays.
-        if (p >= fd.refs.size() || fd.links[p].prev == no_index || fd.links[p].two_sided) continue;
+        if (p >= fd.refs.size() || fd.links[p].prev == no_index || fd.links[p].two_sided || fd.links[p].no_end)
+          continue;
         const Move m = best_move(g, fd, s, cut, k, e, w, interior);
         if (m.to == no_index) continue;
         cut[k].end[e] = m.to;

@@ -106,7 +106,10 @@ void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pi
   }
   for (const std::uint32_t w : no_end) {
     if (pinched[w]) continue;  // a ring passing twice: no separator ends there either
-    out.links[w] = {no_index, no_index, out.links[w].bonus, false, true};
+    // A ring vertex keeps its ring neighbours (the chord fallback and the
+    // smoothing walk the ring); the others have none.
+    if (w >= ring_points) out.links[w] = {no_index, no_index, out.links[w].bonus, false, false};
+    out.links[w].no_end = true;
   }
   for (const std::uint32_t v : f.inner_points) {
     if (!pin_isolated) {

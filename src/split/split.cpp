@@ -387,8 +387,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }
-  const bool plain = sub.faces[face].inner_segments.empty() && sub.faces[face].inner_points.empty();
-  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 && plain &&
+  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
       static_cast<double>(vertices) <= max_chord_points) {
     if (auto chord = chord_split(sub, face, plan, options, best.quality, times)) {
       best.result = std::move(chord->result);
