@@ -83,8 +83,9 @@ double attribute_at(const Triangulation& tri, Point p) {
 
 // The PSLG with each region's max area as its attribute, so that
 // triangulate's regional attributes show the area bound of every triangle.
+// A bound <= 0 is none for Triangle, as is no region at all (attribute 0).
 Pslg areas_as_attributes(Pslg p) {
-  for (Region& r : p.regions) r.attribute = r.max_area;
+  for (Region& r : p.regions) r.attribute = r.max_area > 0 ? r.max_area : 0.0;
   return p;
 }
 
@@ -387,6 +388,10 @@ TEST_CASE("interior output round trip: a face.poly kind of domain") {
   Pslg no_regions = face.pslg;
   no_regions.regions.clear();
   check_round_trip(no_regions, 4);
+}
+
+TEST_CASE("interior output round trip: data/estuary.poly (every kind of interior constraint, a region in a loop)") {
+  check_round_trip(read_domain(std::string(MADD_DATA_DIR) + "/estuary.poly"), 6);
 }
 
 } // TEST_SUITE
