@@ -19,6 +19,8 @@
 #include "madd/decomposition.hpp"
 #include "madd/output_formats.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/predicates.hpp"
+#include "madd/triangulation.hpp"
 #include "interior_fixtures.hpp"
 #include "output_formats_test_support.hpp"
 
@@ -88,11 +90,10 @@ void check_geo(const Decomposition& d) {
     for (const std::int64_t l : g.surfaces[k]) CHECK(l == static_cast<std::int64_t>(next_loop++));
     CHECK(g.physical_surfaces.at(static_cast<std::int64_t>(k) + 1) == "subdomain_" + std::to_string(k));
   }
-  // Physical Curves: one per boundary marker and one per interior marker, holding exactly their pieces.
+  // Physical Curves: one per marker, holding exactly its pieces, boundary and interior alike.
   std::map<std::string, std::multiset<std::int64_t>> expected;
   for (std::uint32_t j = 0; j < d.segments.size(); ++j)
-    if (!d.is_separator(j))
-      expected[(owner[j] == no_index ? "boundary_" : "interior_") + std::to_string(d.segments[j].marker)].insert(j + 1);
+    if (!d.is_separator(j)) expected["boundary_" + std::to_string(d.segments[j].marker)].insert(j + 1);
   CHECK(g.physical_curves == expected);
   // Interior segments and isolated points are embedded in their subdomain's surface, and only there.
   std::map<std::int64_t, std::vector<std::int64_t>> lines_in, points_in;
@@ -206,16 +207,16 @@ TEST_CASE("vtk: consistent sections, triangles cover each subdomain exactly") {
   }
 }
 
-TEST_CASE("interior output: geo embeds interior segments and isolated points, grouped by marker") {
+TEST_CASE("interior output: geo embeds interior segments and isolated points, in their marker's curve") {
   const Decomposition d = interior_square().decomposition;
   check_geo(d);
   const GeoModel g = parse_geo(format_geo(d));
   CHECK(g.embedded_lines.at(1) == std::vector<std::int64_t>{8, 9, 10, 11});  // the loop, in subdomain 0
   CHECK(g.embedded_lines.at(2) == std::vector<std::int64_t>{12});            // the dangling segment
   CHECK(g.embedded_points.at(2) == std::vector<std::int64_t>{11});           // the isolated point
-  CHECK(g.physical_curves.at("interior_7").size() == 4);
-  CHECK(g.physical_curves.at("interior_1").size() == 1);
-  CHECK(g.physical_curves.count("boundary_7") == 0);
+  CHECK(g.physical_curves.at("boundary_7").size() == 4);   // the loop's marker
+  CHECK(g.physical_curves.at("boundary_1").size() == 1);   // the dangling piece: input marker 0, so 1
+  CHECK(format_geo(d).find("Physical Curve(\"boundary_7\", 7)") != std::string::npos);
   // The isolated point's size is its subdomain's shortest segment (the dangling one, 0.3).
   CHECK(g.points.size() == d.points.size());
   const std::string text = format_geo(d);
@@ -257,6 +258,47 @@ TEST_CASE("interior output: vtk has the isolated point as a vertex cell, interio
   for (std::uint32_t j = 7; j < d.segments.size(); ++j)
     CHECK(edges.count(std::minmax(d.segments[j].a, d.segments[j].b)) == 1);
   CHECK(corners.count(10) == 1);
+}
+
+TEST_CASE("interior output: vtk gives each triangle the input's regional attribute and area bound") {
+  const InteriorFixture f = interior_square();
+  const VtkPolyData v = parse_vtk(format_vtk(f.decomposition));
+  REQUIRE(v.region_attribute.size() == v.subdomain.size());
+  REQUIRE(v.region_max_area.size() == v.subdomain.size());
+  // What Triangle's regional rule gives the input at a point (madd::triangulate, the same rule).
+  TriangulateOptions options;
+  options.region_attributes = true;
+  Pslg areas = f.domain;
+  for (Region& r : areas.regions) r.attribute = r.max_area;
+  const Triangulation attribute = triangulate(f.domain, options), area = triangulate(areas, options);
+  const auto at = [](const Triangulation& tri, Point p) {
+    for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
+      const auto& c = tri.triangles[t];
+      if (orient2d(tri.points[c[0]], tri.points[c[1]], p) > 0 && orient2d(tri.points[c[1]], tri.points[c[2]], p) > 0 &&
+          orient2d(tri.points[c[2]], tri.points[c[0]], p) > 0)
+        return tri.attributes[t];
+    }
+    return -99.0;
+  };
+  const std::size_t first = v.vertices.size() + v.lines.size();
+  for (std::size_t c = 0; c < first; ++c) {
+    CHECK(v.region_attribute[c] == 0);
+    CHECK(v.region_max_area[c] == -1);
+  }
+  std::set<double> seen;
+  for (std::size_t c = 0; c < v.cells.size(); ++c) {
+    const auto& t = v.cells[c];
+    const Point m{(v.points[t[0]].x + v.points[t[1]].x + v.points[t[2]].x) / 3,
+                  (v.points[t[0]].y + v.points[t[1]].y + v.points[t[2]].y) / 3};
+    CHECK(v.region_attribute[first + c] == at(attribute, m));
+    CHECK(v.region_max_area[first + c] == at(area, m));
+    seen.insert(v.region_attribute[first + c]);
+  }
+  CHECK(seen == std::set<double>{2, 3});  // both regions show
+  // Without the input's regions there are no region arrays.
+  Decomposition plain = f.decomposition;
+  plain.regions.clear();
+  CHECK(parse_vtk(format_vtk(plain)).region_attribute.empty());
 }
 
 TEST_CASE("interior output: geojson has a LineString per interior piece and a Point per isolated point") {

@@ -279,6 +279,7 @@ struct VtkPolyData {
   std::vector<long> subdomain;                               // per cell, vertices first
   std::vector<double> area, weight;
   std::vector<long> kind, marker;
+  std::vector<double> region_attribute, region_max_area;  // only with the input's regions
 };
 
 inline void expect_word(std::istream& in, const std::string& word) {
@@ -355,9 +356,13 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   }
   expect_word(in, "FIELD");
   expect_word(in, "FieldData");
-  expect_word(in, "4");
-  for (const std::string name : {"area", "weight", "kind", "marker"}) {
-    const bool real = name == "area" || name == "weight";
+  std::string arrays;
+  in >> arrays;
+  if (arrays != "4" && arrays != "6") throw std::runtime_error("VTK: FieldData of " + arrays + " arrays");
+  std::vector<std::string> names{"area", "weight", "kind", "marker"};
+  if (arrays == "6") names.insert(names.end(), {"region_attribute", "region_max_area"});
+  for (const std::string& name : names) {
+    const bool real = name != "kind" && name != "marker";
     expect_word(in, name);
     expect_word(in, "1");
     expect_word(in, std::to_string(cells));
@@ -368,6 +373,8 @@ inline VtkPolyData parse_vtk(const std::string& text) {
       if (!(real ? static_cast<bool>(in >> x) : static_cast<bool>(in >> i))) throw std::runtime_error("VTK: short " + name);
       if (name == "area") v.area.push_back(x);
       else if (name == "weight") v.weight.push_back(x);
+      else if (name == "region_attribute") v.region_attribute.push_back(x);
+      else if (name == "region_max_area") v.region_max_area.push_back(x);
       else (name == "kind" ? v.kind : v.marker).push_back(i);
     }
   }

@@ -83,8 +83,9 @@ double attribute_at(const Triangulation& tri, Point p) {
 
 // The PSLG with each region's max area as its attribute, so that
 // triangulate's regional attributes show the area bound of every triangle.
+// A bound <= 0 is none for Triangle, as is no region at all (attribute 0).
 Pslg areas_as_attributes(Pslg p) {
-  for (Region& r : p.regions) r.attribute = r.max_area;
+  for (Region& r : p.regions) r.attribute = r.max_area > 0 ? r.max_area : 0.0;
   return p;
 }
 
@@ -279,10 +280,6 @@ TEST_CASE("interior output 4: SVG draws interior segments dashed and isolated po
 // ---- round trips: decompose, write, read back with the library's reader ----
 namespace {
 
-// Until decompose() takes interior constraints (issue 16's core), the parts of
-// the round trips that need it are off.
-constexpr bool decompose_interior = false;
-
 // Triangle's face.poly kind of domain: a rectangle holding a closed interior
 // loop, an open polyline with a branch off its middle vertex (a Y), a segment
 // from the boundary into the interior, an isolated vertex and two regions
@@ -358,13 +355,12 @@ void check_round_trip(const Pslg& domain, std::uint32_t n) {
   } else {
     check_regions_as_input(back.pslg, domain);
   }
-  if (decompose_interior) {  // the separators are interior segments of the re-read domain
-    DecomposeOptions again;
-    again.subdomains = n;
-    const Decomposition d2 = decompose(back.pslg, again);
-    const Verification v = verify_decomposition(d2, back.pslg, n);
-    CHECK_MESSAGE(v.ok(), (v.problems.empty() ? std::string() : v.problems.front()));
-  }
+  // Decomposed again: its separators are now interior segments.
+  DecomposeOptions again;
+  again.subdomains = n;
+  const Decomposition d2 = decompose(back.pslg, again);
+  const Verification v = verify_decomposition(d2, back.pslg, n);
+  CHECK_MESSAGE(v.ok(), (v.problems.empty() ? std::string() : v.problems.front()));
   for (std::uint32_t k = 0; k < n; ++k) {
     const PolyFile part = parse_poly(format_subdomain_poly(d, k));
     CHECK_NOTHROW(validate(part.pslg, part.source));
@@ -385,13 +381,17 @@ TEST_CASE("interior output round trip: a domain without interior constraints") {
   check_round_trip(with_region, 5);
 }
 
-TEST_CASE("interior output round trip: a face.poly kind of domain" * doctest::skip(true)) {
+TEST_CASE("interior output round trip: a face.poly kind of domain") {
   const PolyFile face = parse_poly(face_poly, "face.poly");
   validate(face.pslg, face.source);
   check_round_trip(face.pslg, 4);
   Pslg no_regions = face.pslg;
   no_regions.regions.clear();
   check_round_trip(no_regions, 4);
+}
+
+TEST_CASE("interior output round trip: data/estuary.poly (every kind of interior constraint, a region in a loop)") {
+  check_round_trip(read_domain(std::string(MADD_DATA_DIR) + "/estuary.poly"), 6);
 }
 
 } // TEST_SUITE
@@ -412,8 +412,7 @@ std::pair<int, std::string> run_madd(const std::filesystem::path& dir, const std
 
 TEST_SUITE("output") {
 
-TEST_CASE("interior output through the CLI: every output of a face.poly kind of domain, and madd check on the .poly files" *
-          doctest::skip(!decompose_interior)) {
+TEST_CASE("interior output through the CLI: every output of a face.poly kind of domain, and madd check on the .poly files") {
   test::TempDir tmp("output-interior-cli");
   {
     std::ofstream out(tmp.path / "face.poly");

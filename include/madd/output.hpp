@@ -28,8 +28,10 @@ std::string format_decomposition_poly(const Decomposition& decomposition, std::s
 // ring vertices and segments with their global markers, then its interior
 // segments and isolated points, one hole point per hole ring, and, when the
 // decomposition has the input's regions, one region per face as output 1).
-// Shared points are written with the same %.17g text everywhere.
-// Precondition: k < decomposition.subdomains.size().
+// Shared points are written with the same %.17g text everywhere. With
+// regions, each call triangulates the whole decomposition to find its faces;
+// write_split and add_split do that once for all files.
+// Throws std::out_of_range unless k < decomposition.subdomains.size().
 std::string format_subdomain_poly(const Decomposition& decomposition, std::uint32_t k);
 
 // File name of subdomain k in output 2: "<stem>-<k>.poly" with k zero-padded

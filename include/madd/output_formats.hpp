@@ -22,9 +22,8 @@ struct GeoOptions {
 // Loop per ring, Plane Surface(k+1) per subdomain k (outer loop, then holes),
 // its interior segments and isolated points embedded in it (Line{...} In
 // Surface, Point{...} In Surface), Physical Surface("subdomain_<k>", k+1),
-// Physical Curve("boundary_<m>") per boundary marker m (tag m when m > 0,
-// else chosen by gmsh) and Physical Curve("interior_<m>") per interior
-// segment marker (tag chosen by gmsh).
+// and Physical Curve("boundary_<m>") per marker m of the input's segments,
+// boundary and interior pieces alike (tag m when m > 0, else chosen by gmsh).
 std::string format_geo(const Decomposition& decomposition, const GeoOptions& options = {});
 
 // A legacy VTK (version 3.0, ASCII) POLYDATA file: every point, then the
@@ -36,7 +35,9 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
 // subdomain (int; -1 for a separator), and FIELD arrays area and weight
 // (its subdomain's; FIELD, so VTK's reader loads them all), kind (0 triangle,
 // 1 boundary piece, 2 separator, 3 interior segment, 4 isolated point) and
-// marker (the segment's, else 0).
+// marker (the segment's, else 0); with the input's regions, region_attribute
+// and region_max_area (the triangle's under Triangle's -A and -a rule; 0 and
+// -1 where no region reaches and for the other cells).
 // Triangles of neighbouring subdomains share the points of their separator.
 // Throws what madd::triangulate throws if a subdomain is not a valid polygon.
 std::string format_vtk(const Decomposition& decomposition);

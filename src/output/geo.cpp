@@ -140,36 +140,29 @@ void append_surfaces(std::string& out, const Decomposition& d) {
   }
 }
 
-// Physical Curves of the input's segments, one per marker and kind: the
-// boundary pieces as "boundary_<m>", the interior pieces as "interior_<m>".
-// gmsh needs positive tags, so a boundary marker m > 0 is tag m; the others,
-// and every interior group (whose markers may repeat the boundary's), are
-// left to gmsh, which numbers them after every explicit tag written before them.
+// Physical Curves of the input's segments, one per marker: boundary and
+// interior pieces alike, so that a marker is one physical tag, as in the
+// mesh's .msh (docs/formats.md, "gmsh (`PREFIX.msh`)"). gmsh needs positive
+// tags, so a marker m > 0 is tag m; the others are left to gmsh, which
+// numbers them after every explicit tag written before them.
 void append_curve_groups(std::string& out, const Decomposition& d) {
-  const std::vector<std::uint32_t> owner = interior_segment_owners(d);
-  std::map<int, std::vector<std::int64_t>> boundary, interior;
-  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
-    if (d.is_separator(j)) continue;
-    (owner[j] == no_index ? boundary : interior)[d.segments[j].marker].push_back(static_cast<std::int64_t>(j) + 1);
-  }
-  const auto append_group = [&](const char* kind, int marker, const std::vector<std::int64_t>& lines, bool tagged) {
-    out += "Physical Curve(\"";
-    out += kind;
-    out += '_';
-    detail::append_int(out, marker);
-    out += '"';
-    if (tagged) {
-      out += ", ";
+  std::map<int, std::vector<std::int64_t>> by_marker;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    if (!d.is_separator(j)) by_marker[d.segments[j].marker].push_back(static_cast<std::int64_t>(j) + 1);
+  for (const bool positive : {true, false}) {
+    for (const auto& [marker, lines] : by_marker) {
+      if ((marker > 0) != positive) continue;
+      out += "Physical Curve(\"boundary_";
       detail::append_int(out, marker);
+      out += '"';
+      if (positive) {
+        out += ", ";
+        detail::append_int(out, marker);
+      }
+      out += ") = ";
+      append_id_list(out, lines);
     }
-    out += ") = ";
-    append_id_list(out, lines);
-  };
-  for (const auto& [marker, lines] : boundary)
-    if (marker > 0) append_group("boundary", marker, lines, true);
-  for (const auto& [marker, lines] : boundary)
-    if (marker <= 0) append_group("boundary", marker, lines, false);
-  for (const auto& [marker, lines] : interior) append_group("interior", marker, lines, false);
+  }
 }
 
 } // namespace
@@ -181,7 +174,7 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
          "// Physical Curve \"boundary_m\" holds the original boundary with marker m. Mesh: gmsh -2 FILE.geo\n";
   if (std::any_of(decomposition.subdomains.begin(), decomposition.subdomains.end(),
                   [](const Subdomain& s) { return !s.interior_segments.empty() || !s.interior_points.empty(); }))
-    out += "// Interior segments are Lines In Surface, in Physical Curve \"interior_m\" by marker; isolated points Points In Surface.\n";
+    out += "// Interior segments are Lines In Surface (in \"boundary_m\" by their marker m), isolated points Points In Surface.\n";
   append_points_and_lines(out, decomposition, options);
   append_surfaces(out, decomposition);
   append_curve_groups(out, decomposition);

@@ -188,7 +188,7 @@ std::string detail::format_subdomain_poly(const Decomposition& d, std::uint32_t 
 }
 
 std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
-  (void)d.subdomains.at(k);
+  (void)d.subdomains.at(k);  // out of range: throw before the faces are computed
   // Faces are only needed for the input's regions (none: no triangulation).
   return detail::format_subdomain_poly(d, k, d.regions.empty() ? std::vector<detail::DecompositionFace>{}
                                                                : detail::decomposition_faces(d));

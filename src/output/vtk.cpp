@@ -14,6 +14,7 @@
 #include "madd/output_formats.hpp"
 #include "madd/triangulation.hpp"
 #include "kernel/number_format.hpp"
+#include "output/faces.hpp"
 
 namespace madd {
 namespace {
@@ -23,7 +24,13 @@ using Triangle = std::array<std::uint32_t, 3>;
 // The triangles of one subdomain, as indices into Decomposition::points. Its
 // rings become a local PSLG (a vertex shared by two rings is one point) with
 // one hole point per hole ring; triangulate adds no points.
-std::vector<Triangle> subdomain_triangles(const Decomposition& d, const Subdomain& s) {
+// With `faces` (the decomposition's, output/faces.hpp), `face_of` gets, per
+// triangle, the index in `faces` of the face holding it: each face's point is
+// a region point of the local triangulation, so its flood marks the face.
+std::vector<Triangle> subdomain_triangles(const Decomposition& d, std::uint32_t k,
+                                          const std::vector<detail::DecompositionFace>& faces,
+                                          std::vector<std::uint32_t>& face_of) {
+  const Subdomain& s = d.subdomains[k];
   Pslg local;
   std::vector<std::uint32_t> global;
   std::unordered_map<std::uint32_t, std::uint32_t> local_of;
@@ -44,10 +51,18 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, const Subdomai
     local.segments.push_back({local_index(d.segments[j].a), local_index(d.segments[j].b), 1});
   for (const std::uint32_t p : s.interior_points) local_index(p);
   local.holes = s.hole_points;
-  const Triangulation tri = triangulate(local);
+  for (std::uint32_t f = 0; f < faces.size(); ++f)
+    if (faces[f].subdomain == k) local.regions.push_back({faces[f].point, f + 1.0, -1.0});
+  TriangulateOptions options;
+  options.region_attributes = !local.regions.empty();
+  const Triangulation tri = triangulate(local, options);
   std::vector<Triangle> out;
   out.reserve(tri.triangles.size());
-  for (const Triangle& t : tri.triangles) out.push_back({global[t[0]], global[t[1]], global[t[2]]});
+  for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
+    out.push_back({global[tri.triangles[t][0]], global[tri.triangles[t][1]], global[tri.triangles[t][2]]});
+    face_of.push_back(tri.attributes.empty() || tri.attributes[t] < 1 ? no_index
+                                                                      : static_cast<std::uint32_t>(tri.attributes[t]) - 1);
+  }
   return out;
 }
 
@@ -62,6 +77,9 @@ struct Cells {
   std::vector<Triangle> triangles;
   std::vector<std::int64_t> subdomain;               // -1: a separator, in two subdomains
   std::vector<int> kind, marker;
+  // Only when the input has regions: the attribute and max area Triangle
+  // would give each triangle (output 1's regions), 0 and -1 for other cells.
+  std::vector<double> region_attribute, region_max_area;
   std::size_t size() const { return subdomain.size(); }
 };
 
@@ -87,13 +105,27 @@ Cells collect_cells(const Decomposition& d) {
     c.kind.push_back(d.is_separator(j) ? separator_piece : interior ? interior_piece : boundary_piece);
     c.marker.push_back(d.segments[j].marker);
   }
-  for (std::size_t k = 0; k < d.subdomains.size(); ++k)
-    for (const Triangle& t : subdomain_triangles(d, d.subdomains[k])) {
-      c.triangles.push_back(t);
+  const bool regions = !d.regions.empty();
+  const std::vector<detail::DecompositionFace> faces =
+      regions ? detail::decomposition_faces(d) : std::vector<detail::DecompositionFace>{};
+  if (regions) {
+    c.region_attribute.assign(c.size(), 0.0);
+    c.region_max_area.assign(c.size(), -1.0);
+  }
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    std::vector<std::uint32_t> face_of;
+    const std::vector<Triangle> triangles = subdomain_triangles(d, k, faces, face_of);
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      c.triangles.push_back(triangles[i]);
       c.subdomain.push_back(static_cast<std::int64_t>(k));
       c.kind.push_back(subdomain_triangle);
       c.marker.push_back(0);
+      if (!regions) continue;
+      const std::uint32_t r = face_of[i] == no_index ? no_index : faces[face_of[i]].region;
+      c.region_attribute.push_back(r == no_index ? 0.0 : d.regions[r].attribute);
+      c.region_max_area.push_back(r == no_index ? -1.0 : d.regions[r].max_area);
     }
+  }
   return c;
 }
 
@@ -180,11 +212,15 @@ std::string format_vtk(const Decomposition& decomposition) {
   };
   const auto write_double = [&](double v) { detail::append_g17(out, v); };
   const auto write_int = [&](int v) { detail::append_int(out, v); };
-  out += "FIELD FieldData 4\n";
+  out += cells.region_attribute.empty() ? "FIELD FieldData 4\n" : "FIELD FieldData 6\n";
   append_field_array(out, "area", "double", of_subdomain(&Subdomain::area), write_double);
   append_field_array(out, "weight", "double", of_subdomain(&Subdomain::weight), write_double);
   append_field_array(out, "kind", "int", cells.kind, write_int);
   append_field_array(out, "marker", "int", cells.marker, write_int);
+  if (!cells.region_attribute.empty()) {
+    append_field_array(out, "region_attribute", "double", cells.region_attribute, write_double);
+    append_field_array(out, "region_max_area", "double", cells.region_max_area, write_double);
+  }
   return out;
 }
 
