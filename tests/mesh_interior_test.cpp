@@ -272,7 +272,9 @@ TEST_CASE("mesh interior: the estuary through mesh(): interior segments kept, su
   CHECK(m.shortfall.total() == m.shortfall.input_angle);
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     if (smallest_angle(m, t) < 30 - 1e-9)
-      for (const std::uint32_t v : m.triangles[t]) CHECK(madd::distance(m.points[v], domain.points[20]) < 0.5);
+      // Near it: within the first pieces of the arms (about 0.6 long here,
+      // depending on where the separators split the levee).
+      for (const std::uint32_t v : m.triangles[t]) CHECK(madd::distance(m.points[v], domain.points[20]) < 1.0);
 }
 
 TEST_CASE("mesh interior: the estuary's mesh is the same for 1, 2 and 3 threads") {

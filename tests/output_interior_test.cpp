@@ -71,11 +71,13 @@ Point centroid(const Triangulation& tri, std::uint32_t t) {
   return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
 }
 
-// The regional attribute of the triangle of `tri` holding p strictly inside.
+// The regional attribute of the triangle of `tri` holding p. On an edge of
+// `tri` either side will do: an edge between two regions is a segment, which
+// the file has too, so a centroid of the file's triangles is never on one.
 double attribute_at(const Triangulation& tri, Point p) {
   for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
     const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
-    if (orient2d(a, b, p) > 0 && orient2d(b, c, p) > 0 && orient2d(c, a, p) > 0) return tri.attributes[t];
+    if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) return tri.attributes[t];
   }
   FAIL("no triangle holds (" << p.x << ", " << p.y << ")");
   return 0;
