@@ -136,6 +136,14 @@ void check_interior(const Decomposition& d, const Pslg& domain, std::uint32_t n,
   MESSAGE("N " << n << " Phi0 " << phi << ": " << crossings << " crossings");
 }
 
+madd::DecomposeOptions options(std::uint32_t n, double phi = 60.0, unsigned threads = 0) {
+  madd::DecomposeOptions o;
+  o.subdomains = n;
+  o.min_angle_deg = phi;
+  o.threads = threads;
+  return o;
+}
+
 } // namespace
 
 TEST_SUITE("interior") {
@@ -147,10 +155,7 @@ TEST_CASE("every kind of interior constraint stays inside one subdomain, crossed
     for (const std::uint32_t n : {2u, 5u, 16u}) {
       CAPTURE(phi);
       CAPTURE(n);
-      madd::DecomposeOptions o;
-      o.subdomains = n;
-      o.min_angle_deg = phi;
-      o.threads = 1;
+      madd::DecomposeOptions o = options(n, phi, 1);
       const Decomposition one = madd::decompose(domain, o);
       check_interior(one, domain, n, phi);
       CHECK(one.regions == domain.regions);
@@ -166,10 +171,7 @@ TEST_CASE("the bundled estuary: lanes, a levee with a spur, a groyne, a loop, su
     for (const std::uint32_t n : {2u, 16u, 64u}) {
       CAPTURE(phi);
       CAPTURE(n);
-      madd::DecomposeOptions o;
-      o.subdomains = n;
-      o.min_angle_deg = phi;
-      check_interior(madd::decompose(domain, o), domain, n, phi);
+      check_interior(madd::decompose(domain, options(n, phi)), domain, n, phi);
     }
   }
 }
@@ -179,9 +181,7 @@ TEST_CASE("a separator crossing a lane splits it at the crossing vertex, on both
   Pslg p;
   p.points = {{0, 0}, {4, 0}, {4, 1}, {0, 1}, {2, 0.1}, {2, 0.9}};
   p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 1}};
-  madd::DecomposeOptions o;
-  o.subdomains = 8;
-  const Decomposition d = madd::decompose(p, o);
+  const Decomposition d = madd::decompose(p, options(8));
   check_interior(d, p, 8, 60.0);
   std::size_t lane_pieces = 0;
   for (std::uint32_t g = 0; g < d.segments.size(); ++g) lane_pieces += d.segment_origin[g] == 4 ? 1 : 0;
@@ -206,9 +206,7 @@ TEST_CASE("separators pass through the loose ends of lanes, which would otherwis
   std::size_t through = 0;
   for (const std::uint32_t n : {4u, 16u, 64u}) {
     CAPTURE(n);
-    madd::DecomposeOptions o;
-    o.subdomains = n;
-    const Decomposition d = madd::decompose(p, o);
+    const Decomposition d = madd::decompose(p, options(n));
     check_interior(d, p, n, 60.0);
     double largest = 0.0;
     for (const madd::Subdomain& s : d.subdomains) largest = std::max(largest, s.area);
@@ -231,9 +229,7 @@ TEST_CASE("a square with a stub from its side and a survey point still halves ev
   p.has_segment_markers = true;
   for (const std::uint32_t n : {2u, 3u}) {
     CAPTURE(n);
-    madd::DecomposeOptions o;
-    o.subdomains = n;
-    const Decomposition d = madd::decompose(p, o);
+    const Decomposition d = madd::decompose(p, options(n));
     check_interior(d, p, n, 60.0);
     double largest = 0.0;
     for (const madd::Subdomain& s : d.subdomains) largest = std::max(largest, s.area);
