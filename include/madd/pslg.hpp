@@ -2,8 +2,9 @@
 // The input value type: a planar straight line graph (Triangle's .poly model),
 // and its two levels of validation: any PSLG (what triangulate() takes:
 // isolated vertices, interior and dangling segments, vertices on segments),
-// and a domain (what decompose() and mesh() take: one region bounded by
-// closed rings, an outer boundary with any number of holes).
+// and a domain (what decompose() and mesh() take: one connected region bounded
+// by closed rings, an outer boundary with any number of holes, with any
+// interior constraints inside it).
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -69,11 +70,13 @@ struct ValidateOptions {
   bool allow_point_set = false;
 };
 
-// Checks that `pslg` describes one valid domain (docs/formats.md, "Bad input"):
-// no duplicate vertices, no zero-length segments, no crossing, overlapping or
-// touching segments (exact, sub-quadratic), every vertex of even degree and
-// on a segment, hole points strictly inside the domain and off every segment,
-// one connected region; every vertex and hole coordinate 0 or of magnitude in
+// Checks that `pslg` describes one valid domain (docs/formats.md, "The domain"
+// and "Bad input"): no duplicate vertices, no zero-length segments, no
+// crossing or overlapping segments (exact, sub-quadratic; a vertex inside a
+// segment splits it), every segment with the domain on at least one side (on
+// both: an interior segment), every isolated vertex inside the domain, hole
+// points strictly inside the domain and off every segment, one region
+// connected across its interior segments; every vertex and hole coordinate 0 or of magnitude in
 // [1e-40, 1e70] (the exact range of the predicates, InputProblem::other).
 // Throws InvalidInputError naming ids (with the file's base) and coordinates,
 // plus the line when `source` knows it.
