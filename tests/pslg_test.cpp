@@ -180,14 +180,25 @@ TEST_CASE("summarize_pslg on random lone points and segments agrees with brute f
 TEST_CASE("decompose() takes interior segments and isolated vertices, and keeps each inside one subdomain") {
   madd::Pslg lone = square_with({{0.5, 0.5}}, {});
   madd::Pslg interior = square_with({}, {{0, 2, 0}});
+  // The lone point is the square's centre, where every medial separator of
+  // the square passes: the split falls back to pinning it (split/refine.hpp).
   for (const madd::Pslg& pslg : {lone, interior}) {
-    madd::DecomposeOptions options;
-    options.subdomains = 3;
-    const madd::Decomposition d = madd::decompose(pslg, options);
-    CHECK(madd::verify_decomposition(d, pslg, 3).ok());
-    std::size_t kept = 0;
-    for (const madd::Subdomain& s : d.subdomains) kept += s.interior_points.size() + s.interior_segments.size();
-    CHECK(kept >= 1);
+    for (const std::uint32_t n : {2u, 3u}) {
+      madd::DecomposeOptions options;
+      options.subdomains = n;
+      const madd::Decomposition d = madd::decompose(pslg, options);
+      CHECK(madd::verify_decomposition(d, pslg, n).ok());
+      // The one point in one subdomain; the diagonal in pieces inside them, its whole length.
+      std::size_t points = 0;
+      double length = 0.0;
+      for (const madd::Subdomain& s : d.subdomains) {
+        points += s.interior_points.size();
+        for (const std::uint32_t g : s.interior_segments)
+          length += madd::distance(d.points[d.segments[g].a], d.points[d.segments[g].b]);
+      }
+      CHECK(points == pslg.points.size() - 4);
+      CHECK(length == doctest::Approx(pslg.segments.size() > 4 ? std::sqrt(2.0) : 0.0));
+    }
   }
 }
 

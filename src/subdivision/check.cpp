@@ -25,7 +25,7 @@ namespace {
 // The interior pieces of face f inside a corner of its rings split that
 // corner: each one next to a separator of the corner makes a new angle with
 // it (a separator crosses an interior segment only at a vertex, on both sides).
-void check_inner_angles(const Subdivision& sub, std::uint32_t f, double bound) {
+void check_inner_angles(const Subdivision& sub, std::uint32_t f, double min_angle_deg, double bound) {
   const Face& face = sub.faces[f];
   if (face.inner_segments.empty()) return;
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> inner_at;  // vertex -> far ends of interior pieces
@@ -49,8 +49,8 @@ void check_inner_angles(const Subdivision& sub, std::uint32_t f, double bound) {
         const double from_out = ccw_angle_deg(v, next, sub.points[w]);
         const double to_in = ccw_angle_deg(v, sub.points[w], prev);
         if (std::abs(from_out + to_in - corner) > 1e-6) continue;  // in another corner at this vertex
-        if (out_new && from_out < bound) fail_angle(sub, f, from_out, bound);
-        if (in_new && to_in < bound) fail_angle(sub, f, to_in, bound);
+        if (out_new && from_out < bound) fail_angle(sub, f, from_out, min_angle_deg);
+        if (in_new && to_in < bound) fail_angle(sub, f, to_in, min_angle_deg);
       }
     }
   }
@@ -61,7 +61,7 @@ void check_inner_angles(const Subdivision& sub, std::uint32_t f, double bound) {
 void check_new_angles(const Subdivision& sub, double min_angle_deg) {
   constexpr double tolerance_deg = angle_rounding_bound_deg;  // the splits keep a margin far above it
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
-    check_inner_angles(sub, f, min_angle_deg - tolerance_deg);
+    check_inner_angles(sub, f, min_angle_deg, min_angle_deg - tolerance_deg);
     const Face& face = sub.faces[f];
     for (std::size_t r = 0; r < face.rings.size(); ++r) {
       const auto& ring = face.rings[r];
