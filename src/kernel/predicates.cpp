@@ -43,23 +43,30 @@ constexpr double kIccErrBoundA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
 constexpr double kIccErrBoundB = (4.0 + 48.0 * kEpsilon) * kEpsilon;
 constexpr double kIccErrBoundC = (44.0 + 576.0 * kEpsilon) * kEpsilon * kEpsilon;
 
+// The rounded difference p - q of two points, and its roundoff (Shewchuk's
+// "tail": p - q == difference + tail exactly). Every stage works on these.
+struct Offset {
+  double x, y;
+};
+inline Offset difference(Point p, Point q) noexcept { return {p.x - q.x, p.y - q.y}; }
+inline Offset difference_tail(Point p, Point q, Offset rounded) noexcept {
+  return {two_diff_tail(p.x, q.x, rounded.x), two_diff_tail(p.y, q.y, rounded.y)};
+}
+inline bool is_zero(Offset o) noexcept { return o.x == 0.0 && o.y == 0.0; }
+
 // Stages B-D of orient2d; detsum = |detleft| + |detright| from stage A.
 double orient2d_adapt(Point a, Point b, Point c, double detsum) noexcept {
-  const double acx = a.x - c.x;
-  const double bcx = b.x - c.x;
-  const double acy = a.y - c.y;
-  const double bcy = b.y - c.y;
+  const auto [acx, acy] = difference(a, c);
+  const auto [bcx, bcy] = difference(b, c);
 
   const Expansion<4> bdet = two_two_diff(two_product(acx, bcy), two_product(acy, bcx));
   double det = bdet.estimate();
   if (std::abs(det) >= kCcwErrBoundB * detsum) return det;
 
-  const double acxtail = two_diff_tail(a.x, c.x, acx);
-  const double bcxtail = two_diff_tail(b.x, c.x, bcx);
-  const double acytail = two_diff_tail(a.y, c.y, acy);
-  const double bcytail = two_diff_tail(b.y, c.y, bcy);
+  const auto [acxtail, acytail] = difference_tail(a, c, {acx, acy});
+  const auto [bcxtail, bcytail] = difference_tail(b, c, {bcx, bcy});
   // Exact differences: stage B's expansion is the exact determinant.
-  if (acxtail == 0.0 && acytail == 0.0 && bcxtail == 0.0 && bcytail == 0.0) return det;
+  if (is_zero({acxtail, acytail}) && is_zero({bcxtail, bcytail})) return det;
 
   const double errbound = kCcwErrBoundC * detsum + kResultErrBound * std::abs(det);
   det += (acx * bcytail + bcy * acxtail) - (acy * bcxtail + bcx * acytail);
@@ -108,12 +115,9 @@ double incircle_exact(Point a, Point b, Point c, Point d) noexcept {
 
 // Stages B-D of incircle; permanent bounds the magnitude of stage A's terms.
 double incircle_adapt(Point a, Point b, Point c, Point d, double permanent) noexcept {
-  const double adx = a.x - d.x;
-  const double bdx = b.x - d.x;
-  const double cdx = c.x - d.x;
-  const double ady = a.y - d.y;
-  const double bdy = b.y - d.y;
-  const double cdy = c.y - d.y;
+  const auto [adx, ady] = difference(a, d);
+  const auto [bdx, bdy] = difference(b, d);
+  const auto [cdx, cdy] = difference(c, d);
 
   const Expansion<4> bc = two_two_diff(two_product(bdx, cdy), two_product(cdx, bdy));
   const Expansion<4> ca = two_two_diff(two_product(cdx, ady), two_product(adx, cdy));
@@ -123,15 +127,10 @@ double incircle_adapt(Point a, Point b, Point c, Point d, double permanent) noex
   double det = fin.estimate();
   if (std::abs(det) >= kIccErrBoundB * permanent) return det;
 
-  const double adxtail = two_diff_tail(a.x, d.x, adx);
-  const double adytail = two_diff_tail(a.y, d.y, ady);
-  const double bdxtail = two_diff_tail(b.x, d.x, bdx);
-  const double bdytail = two_diff_tail(b.y, d.y, bdy);
-  const double cdxtail = two_diff_tail(c.x, d.x, cdx);
-  const double cdytail = two_diff_tail(c.y, d.y, cdy);
-  if (adxtail == 0.0 && bdxtail == 0.0 && cdxtail == 0.0 && adytail == 0.0 && bdytail == 0.0 &&
-      cdytail == 0.0)
-    return det;
+  const auto [adxtail, adytail] = difference_tail(a, d, {adx, ady});
+  const auto [bdxtail, bdytail] = difference_tail(b, d, {bdx, bdy});
+  const auto [cdxtail, cdytail] = difference_tail(c, d, {cdx, cdy});
+  if (is_zero({adxtail, adytail}) && is_zero({bdxtail, bdytail}) && is_zero({cdxtail, cdytail})) return det;
 
   // Stage C: the first-order terms in the tails (Shewchuk Sec. 4.3).
   const double errbound = kIccErrBoundC * permanent + kResultErrBound * std::abs(det);
@@ -171,12 +170,9 @@ double orient2d(Point a, Point b, Point c) noexcept {
 }
 
 double incircle(Point a, Point b, Point c, Point d) noexcept {
-  const double adx = a.x - d.x;
-  const double bdx = b.x - d.x;
-  const double cdx = c.x - d.x;
-  const double ady = a.y - d.y;
-  const double bdy = b.y - d.y;
-  const double cdy = c.y - d.y;
+  const auto [adx, ady] = difference(a, d);
+  const auto [bdx, bdy] = difference(b, d);
+  const auto [cdx, cdy] = difference(c, d);
 
   const double bdxcdy = bdx * cdy;
   const double cdxbdy = cdx * bdy;

@@ -99,6 +99,25 @@ VertexHeader read_vertex_header(PolyLexer& lx) {
   return h;
 }
 
+// The start of item line i of a section of n: the line exists and carries
+// the id the numbering expects.
+void start_item(PolyLexer& lx, IdBase& base, std::uint32_t i, std::uint32_t n, const char* what,
+                const char* id_label) {
+  lx.require_item(what, i + (base.known ? base.first : 1), n);
+  expect_id(lx, base, lx.id(id_label), i, n, what);
+}
+
+// A section header that holds only its count (holes, regions), checked to
+// fit in what is left of the file, `fields` fields per item.
+std::uint32_t read_section_count(PolyLexer& lx, const char* count_label, const char* header_label,
+                                 std::uint64_t fields, const char* what) {
+  const std::uint32_t n = lx.count(count_label);
+  const std::size_t column = lx.token_column();
+  lx.end_of_line(header_label);
+  check_count_fits(lx, n, fields, column, what);
+  return n;
+}
+
 void read_vertices(PolyLexer& lx, const VertexHeader& h, IdBase& base, PolyFile& out) {
   Pslg& p = out.pslg;
   check_count_fits(lx, h.count, 3ULL + h.attributes + (h.markers ? 1 : 0), h.count_column, "vertices");
@@ -108,8 +127,7 @@ void read_vertices(PolyLexer& lx, const VertexHeader& h, IdBase& base, PolyFile&
   if (h.markers) p.point_markers.reserve(h.count);
   out.source.point_lines.reserve(h.count);
   for (std::uint32_t i = 0; i < h.count; ++i) {
-    lx.require_item("vertex", i + (base.known ? base.first : 1), h.count);
-    expect_id(lx, base, lx.id("vertex id"), i, h.count, "vertex");
+    start_item(lx, base, i, h.count, "vertex", "vertex id");
     const double x = lx.coordinate("x coordinate");
     const double y = lx.coordinate("y coordinate");
     p.points.push_back({x, y});
@@ -175,8 +193,7 @@ void read_segments(PolyLexer& lx, IdBase& base, PolyFile& out) {
   out.source.segment_lines.reserve(n);
   const auto n_points = static_cast<std::uint32_t>(p.points.size());
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_item("segment", i + (base.known ? base.first : 1), n);
-    expect_id(lx, base, lx.id("segment id"), i, n, "segment");
+    start_item(lx, base, i, n, "segment", "segment id");
     Segment s;
     s.a = read_endpoint(lx, base, n_points);
     s.b = read_endpoint(lx, base, n_points);
@@ -189,15 +206,11 @@ void read_segments(PolyLexer& lx, IdBase& base, PolyFile& out) {
 
 void read_holes(PolyLexer& lx, IdBase& base, PolyFile& out) {
   lx.require_line("the hole count");
-  const std::uint32_t n = lx.count("hole count");
-  const std::size_t column = lx.token_column();
-  lx.end_of_line("the hole count");
-  check_count_fits(lx, n, 3, column, "holes");
+  const std::uint32_t n = read_section_count(lx, "hole count", "the hole count", 3, "holes");
   out.pslg.holes.reserve(n);
   out.source.hole_lines.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_item("hole", i + (base.known ? base.first : 1), n);
-    expect_id(lx, base, lx.id("hole id"), i, n, "hole");
+    start_item(lx, base, i, n, "hole", "hole id");
     const double x = lx.coordinate("hole x coordinate");
     const double y = lx.coordinate("hole y coordinate");
     lx.end_of_line("the hole");
@@ -209,15 +222,11 @@ void read_holes(PolyLexer& lx, IdBase& base, PolyFile& out) {
 // The regions section is optional, as in Triangle.
 void read_regions(PolyLexer& lx, IdBase& base, PolyFile& out) {
   if (!lx.next_line()) return;
-  const std::uint32_t n = lx.count("region count");
-  const std::size_t column = lx.token_column();
-  lx.end_of_line("the region count");
-  check_count_fits(lx, n, 4, column, "regions");
+  const std::uint32_t n = read_section_count(lx, "region count", "the region count", 4, "regions");
   out.pslg.regions.reserve(n);
   out.source.region_lines.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    lx.require_item("region", i + (base.known ? base.first : 1), n);
-    expect_id(lx, base, lx.id("region id"), i, n, "region");
+    start_item(lx, base, i, n, "region", "region id");
     Region r;
     r.at.x = lx.coordinate("region x coordinate");
     r.at.y = lx.coordinate("region y coordinate");
