@@ -134,9 +134,9 @@ std::string fig(double v, const char* format = "%.2f") {
 // Split to a required area, N is a maximum: say how close the result came,
 // and, when N stopped the splitting, how many subdomains are still too large.
 void print_required_area(std::FILE* out, const DecomposeArgs& args, const Metrics& m) {
-  if (!(m.area_ratio_bound > 0.0)) return;
+  if (!(m.subdomain_area_ratio > 0.0)) return;
   std::fprintf(out, "  required area: largest area / required area %s (bound %s)\n",
-               fig(m.max_area_over_required, "%.4g").c_str(), fig(m.area_ratio_bound, "%.4g").c_str());
+               fig(m.max_area_over_required, "%.4g").c_str(), fig(m.subdomain_area_ratio, "%.4g").c_str());
   if (m.subdomains_over_area_bound > 0)
     std::fprintf(out, "  note: the maximum of %u subdomains was reached with %u still above the area bound "
                  "(raise -n to split them)\n", args.options.subdomains, m.subdomains_over_area_bound);
@@ -216,8 +216,8 @@ int decompose_body(void* context) {
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
   DecomposeOptions options = args.options;
-  if (!args.weights_file.empty()) options.background_weights = read_background(args.weights_file, false);
-  if (!args.areas_file.empty()) options.background_areas = read_background(args.areas_file, true);
+  if (!args.weights_file.empty()) options.weight_samples = read_background(args.weights_file, false);
+  if (!args.areas_file.empty()) options.subdomain_area_samples = read_background(args.areas_file, true);
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;
@@ -289,30 +289,30 @@ std::string apply_option(int c, const char* arg, DecomposeArgs& args) {
   };
   switch (c) {
   case 'n': return count("subdomains", 0xFFFFFFFFull, o.subdomains);
-  case opt_min_angle: return number("min_angle_deg", o.min_angle_deg);
-  case 'r': return number("refine", o.refine);
-  case 'i': return number("min_balance_quality", o.min_balance_quality);
+  case opt_min_angle: return number("separator_angle_deg", o.separator_angle_deg);
+  case 'r': return number("boundary_refinement", o.boundary_refinement);
+  case 'i': return number("min_split_quality", o.min_split_quality);
   case 'j': return count("threads", 0xFFFFFFFFull, o.threads);
   case opt_seed: return count("seed", ~0ull, o.seed);
   case opt_smoothing: return count("smoothing_iterations", 0x7FFFFFFFull, o.smoothing_iterations);
-  case opt_rebalance: return number("rebalance_above", o.rebalance_above);
-  case opt_adaptive_refine: return number("adaptive_refine", o.adaptive_refine);
+  case opt_rebalance: return number("repair_balance_above", o.repair_balance_above);
+  case opt_adaptive_refine: return number("adaptive_boundary_refinement", o.adaptive_boundary_refinement);
   case 'a': return number("gradation", o.gradation);
   case 'p': return number("interpolation", o.interpolation);
   case opt_time_limit: return number("time_limit_seconds", o.time_limit_seconds);
-  case opt_area_bound: return number("area_ratio_bound", o.area_ratio_bound);
+  case opt_area_bound: return number("subdomain_area_ratio", o.subdomain_area_ratio);
   case opt_max_memory:
     // Megabytes to bytes: the value must be one a size_t holds.
     if (!parse_number(arg, x) || x < 0 || x > 1e12) return "--max-memory needs megabytes in [0, 1e12]";
     o.max_memory_bytes = static_cast<std::size_t>(x * 1048576.0);
     return {};
   case opt_weight_fn: return set_function(arg, o.weight_function);
-  case opt_area_fn: return set_function(arg, o.area_function);
+  case opt_area_fn: return set_function(arg, o.subdomain_area_function);
   case opt_max_area:
     if (!parse_number(arg, x) || !(x > 0)) return "--max-area needs an area > 0";
-    args.discretise.max_area = x;
+    args.discretise.max_triangle_area = x;
     return {};
-  case opt_size_fn: return set_function(arg, args.discretise.area_function);
+  case opt_size_fn: return set_function(arg, args.discretise.triangle_area_function);
   case opt_weights: args.weights_file = arg; return {};
   case opt_areas: args.areas_file = arg; return {};
   case 'o': args.poly_out = arg; return {};
@@ -358,8 +358,8 @@ std::string option_problem(const DecomposeArgs& args) {
   try {
     DecomposeOptions options = args.options;
     // A background file is read later; its presence is what a conflict needs.
-    if (!args.weights_file.empty()) options.background_weights = {{{0, 0}, 0.0}};
-    if (!args.areas_file.empty()) options.background_areas = {{{0, 0}, 1.0}};
+    if (!args.weights_file.empty()) options.weight_samples = {{{0, 0}, 0.0}};
+    if (!args.areas_file.empty()) options.subdomain_area_samples = {{{0, 0}, 1.0}};
     check_options(options);
     check_options(args.svg);
     return {};

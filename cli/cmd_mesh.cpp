@@ -80,8 +80,8 @@ std::string report_json(const MeshArgs& args, const Mesh& m, const MeshReport& r
   add("subdomains", m.subdomain_count());
   add("triangles", static_cast<double>(m.triangles.size()));
   add("vertices", static_cast<double>(m.points.size()));
-  add("min_angle_bound_deg", m.min_angle_deg);
-  add("max_area_bound", args.options.size.max_area);
+  add("min_angle_bound_deg", m.min_triangle_angle_deg);
+  add("max_area_bound", args.options.size.max_triangle_area);
   add("min_angle_deg", a.min_deg);
   add("median_smallest_angle_deg", a.median_deg);
   add("share_below_bound", m.triangles.empty() ? 0.0 : static_cast<double>(a.below) / static_cast<double>(m.triangles.size()));
@@ -131,7 +131,7 @@ int mesh_body(void* context) {
     options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
   }
   progress.say("reading " + args.input);
-  if (!args.sizes_file.empty()) options.size.background_areas = read_background(args.sizes_file, true);
+  if (!args.sizes_file.empty()) options.size.triangle_area_samples = read_background(args.sizes_file, true);
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
   MeshReport report;
@@ -156,7 +156,7 @@ int mesh_body(void* context) {
                  "%s: %u subdomains, %zu triangles, %zu vertices, smallest angle %.2f deg (%zu below %.4g: %zu at "
                  "small input angles, %zu at separators), %.2f s -> %s.{node,ele}\n",
                  args.input.c_str(), m.subdomain_count(), m.triangles.size(), m.points.size(), a.min_deg, a.below,
-                 m.min_angle_deg, m.shortfall.input_angle, m.shortfall.separator, seconds_since(start),
+                 m.min_triangle_angle_deg, m.shortfall.input_angle, m.shortfall.separator, seconds_since(start),
                  args.prefix.c_str());
   }
   return exit_ok;

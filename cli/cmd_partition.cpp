@@ -141,7 +141,7 @@ int run_partition(void* context) {
   const auto k = static_cast<std::uint32_t>(args.k);
   PartitionOptions options;
   const double levels = k > 1 ? std::ceil(std::log2(static_cast<double>(k))) : 1.0;
-  options.imbalance_tolerance = std::pow(1.0 + static_cast<double>(args.ufactor) / 1000.0, 1.0 / levels) - 1.0;
+  options.balance_tolerance = std::pow(1.0 + static_cast<double>(args.ufactor) / 1000.0, 1.0 / levels) - 1.0;
   options.seed = args.seed;
   options.connected = args.contig;
   options.refinement_passes = args.niter;

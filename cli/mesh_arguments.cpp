@@ -25,15 +25,15 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
   switch (c) {
   case 'q':
     if (!parse_number(arg, x)) return "-q needs degrees";
-    o.size.min_angle_deg = x;
+    o.size.min_triangle_angle_deg = x;
     return {};
   case 'a':
     if (!parse_number(arg, x) || !(x > 0)) return "-a needs an area > 0";
-    o.size.max_area = x;
+    o.size.max_triangle_area = x;
     return {};
   case opt_size_fn:
     try {
-      o.size.area_function = parse_expression(arg, "--size-fn").function();
+      o.size.triangle_area_function = parse_expression(arg, "--size-fn").function();
     } catch (const Error& e) {
       return e.what();
     }
@@ -53,7 +53,7 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     return {};
   case opt_min_angle:
     if (!parse_number(arg, x)) return "--min-angle needs degrees";
-    o.decomposition.min_angle_deg = x;
+    o.decomposition.separator_angle_deg = x;
     return {};
   case 'j':
     if (!parse_count(arg, 4096, k)) return "-j needs a whole number in [0, 4096]";
@@ -65,7 +65,7 @@ std::string apply_option(int c, const char* arg, MeshArgs& args) {
     return {};
   case opt_rebalance:
     if (!parse_number(arg, x)) return "--rebalance needs a number";
-    o.decomposition.rebalance_above = x;
+    o.decomposition.repair_balance_above = x;
     return {};
   case opt_time_limit:
     if (!parse_number(arg, x) || x < 0) return "--time-limit needs seconds >= 0";
@@ -95,7 +95,7 @@ bool is_extra_format(int c) { return c == opt_neigh || c == opt_edge || c == opt
 // Said with the CLI's names of the mesh options.
 std::string option_problem(const OptionError& e) {
   const std::string field = e.option();
-  const char* name = field == "min_angle_deg" ? "-q" : field == "max_area" ? "-a" : field == "background_areas" ? "--sizes" : nullptr;
+  const char* name = field == "min_triangle_angle_deg" ? "-q" : field == "max_triangle_area" ? "-a" : field == "triangle_area_samples" ? "--sizes" : nullptr;
   return name ? std::string(name) + " " + e.requirement() : std::string(e.what());
 }
 

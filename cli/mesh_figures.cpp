@@ -21,7 +21,7 @@ AngleFigures angle_figures(const Mesh& m) {
     smallest[t] = s;
     f.min_deg = std::min(f.min_deg, s);
     ++f.bins[std::min<std::size_t>(5, static_cast<std::size_t>(s / 10))];
-    f.below += s < m.min_angle_deg - 1e-9;
+    f.below += s < m.min_triangle_angle_deg - 1e-9;
   }
   if (!smallest.empty()) {
     std::nth_element(smallest.begin(), smallest.begin() + static_cast<std::ptrdiff_t>(smallest.size() / 2), smallest.end());

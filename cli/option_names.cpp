@@ -11,13 +11,13 @@ struct CliName {
   const char* flag;
 };
 constexpr CliName cli_names[] = {
-    {"subdomains", "--subdomains"},          {"min_angle_deg", "--min-angle"},
-    {"refine", "--refine"},                  {"min_balance_quality", "--imbalance"},
+    {"subdomains", "--subdomains"},          {"separator_angle_deg", "--min-angle"},
+    {"boundary_refinement", "--refine"},                  {"min_split_quality", "--imbalance"},
     {"threads", "--threads"},                {"seed", "--seed"},
-    {"smoothing_iterations", "--smoothing"}, {"rebalance_above", "--rebalance"}, {"adaptive_refine", "--adaptive-refine"}, {"gradation", "--gradation"},
+    {"smoothing_iterations", "--smoothing"}, {"repair_balance_above", "--rebalance"}, {"adaptive_boundary_refinement", "--adaptive-refine"}, {"gradation", "--gradation"},
     {"interpolation", "--interpolation"},    {"weight_function", "--weight-fn"},
-    {"area_function", "--area-fn"},          {"background_weights", "--weights"},
-    {"background_areas", "--areas"},         {"area_ratio_bound", "--area-bound"},
+    {"subdomain_area_function", "--area-fn"},          {"weight_samples", "--weights"},
+    {"subdomain_area_samples", "--areas"},         {"subdomain_area_ratio", "--area-bound"},
     {"time_limit_seconds", "--time-limit"},  {"max_memory_bytes", "--max-memory"},
     {"mark_angles_below_deg", "--svg-mark-angles"},
 };

@@ -1,6 +1,6 @@
 #pragma once
 // How the CLI says the library's option errors: check_options names a field
-// of DecomposeOptions (or SvgOptions), "min_angle_deg"; the user typed
+// of DecomposeOptions (or SvgOptions), "separator_angle_deg"; the user typed
 // "--min-angle". Front ends parse and print; the library decides (docs/cli.md).
 #include <string>
 
@@ -8,7 +8,7 @@
 
 namespace madd::cli {
 
-// The flag of a field ("--min-angle" for "min_angle_deg"), nullptr when none.
+// The flag of a field ("--min-angle" for "separator_angle_deg"), nullptr when none.
 const char* cli_name_of(const std::string& field);
 
 // `text` with every whole-word field name replaced by its flag.

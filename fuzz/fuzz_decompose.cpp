@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   madd::DecomposeOptions options;
   options.subdomains = 2u + knob % 7u;
   constexpr double angles[] = {60.0, 45.0, 30.0, 70.0};
-  options.min_angle_deg = angles[(knob / 7u) % 4u];
+  options.separator_angle_deg = angles[(knob / 7u) % 4u];
   options.threads = 1;
   options.time_limit_seconds = 2.0;
   try {
@@ -45,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const madd::Decomposition d = madd::decompose(file.pslg, options);
     const madd::Verification check = madd::verify_decomposition(d, file.pslg, options.subdomains);
     if (!check.ok()) {
-      std::fprintf(stderr, "verify_decomposition (N=%u, Phi0=%g): %s\n", options.subdomains, options.min_angle_deg,
+      std::fprintf(stderr, "verify_decomposition (N=%u, Phi0=%g): %s\n", options.subdomains, options.separator_angle_deg,
                    check.problems.front().c_str());
       std::abort();
     }

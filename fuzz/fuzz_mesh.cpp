@@ -88,7 +88,7 @@ double sharp_corner_triangles(const madd::Pslg& p) {
 [[noreturn]] void fail(const madd::MeshOptions& o, const char* what) {
   std::fprintf(stderr,
                "fuzz_mesh (N=%u, q=%g, max_area=%g, Phi0=%g, threads=%u, off_centres=%d, balance_by_work=%d): %s\n",
-               o.decomposition.subdomains, o.size.min_angle_deg, o.size.max_area, o.decomposition.min_angle_deg,
+               o.decomposition.subdomains, o.size.min_triangle_angle_deg, o.size.max_triangle_area, o.decomposition.separator_angle_deg,
                o.decomposition.threads, o.off_centres ? 1 : 0, o.balance_by_work ? 1 : 0, what);
   std::abort();
 }
@@ -98,7 +98,7 @@ void check_properties(const madd::Mesh& m, const madd::MeshOptions& o) {
   for (const auto& t : m.triangles) {
     const madd::Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
     if (!(madd::orient2d(a, b, c) > 0)) fail(o, "a triangle is not strictly counter-clockwise");
-    if (madd::detail::smallest_angle_deg(a, b, c) < o.size.min_angle_deg - madd::detail::mesh_angle_slack_deg) ++below;
+    if (madd::detail::smallest_angle_deg(a, b, c) < o.size.min_triangle_angle_deg - madd::detail::mesh_angle_slack_deg) ++below;
   }
   if (below != m.shortfall.total()) {
     std::fprintf(stderr, "%zu triangles below the bound, shortfall total %zu\n", below, m.shortfall.total());
@@ -119,9 +119,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   constexpr double phi0[] = {45.0, 70.0, 60.0};
   madd::MeshOptions options;
   options.decomposition.subdomains = subdomains[k1 % 5];
-  options.size.min_angle_deg = min_angles[k1 / 5 % 5];
+  options.size.min_triangle_angle_deg = min_angles[k1 / 5 % 5];
   options.decomposition.threads = 1 + k1 / 25 % 2;
-  options.decomposition.min_angle_deg = phi0[k2 / 4 % 3];
+  options.decomposition.separator_angle_deg = phi0[k2 / 4 % 3];
   options.off_centres = k2 / 12 % 2 == 0;
   options.balance_by_work = k2 / 24 % 2 == 0;
   options.decomposition.time_limit_seconds = 2.0;
@@ -130,10 +130,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (file.pslg.points.size() > 300) return 0;
     madd::validate(file.pslg, file.source);
     const double area = madd::domain_area(file.pslg);
-    options.size.max_area = area * area_fractions[k2 % 4];
-    if (!std::isfinite(options.size.max_area)) return 0;
-    const double wanted = std::max(options.size.max_area > 0 ? area / options.size.max_area : 0.0,
-                                   4.0 * boundary_pieces(file.pslg, options.size.max_area) +
+    options.size.max_triangle_area = area * area_fractions[k2 % 4];
+    if (!std::isfinite(options.size.max_triangle_area)) return 0;
+    const double wanted = std::max(options.size.max_triangle_area > 0 ? area / options.size.max_triangle_area : 0.0,
+                                   4.0 * boundary_pieces(file.pslg, options.size.max_triangle_area) +
                                        sharp_corner_triangles(file.pslg));
     if (!(wanted <= 2e4)) return 0;
     const madd::Mesh m = madd::mesh(file.pslg, options);

@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.seed = size;
     check(g, options);
     options.target_fraction = 0.3;
-    options.imbalance_tolerance = 0.0;
+    options.balance_tolerance = 0.0;
     check(g, options);
     if (g.vertex_count() >= 2) {
       options.keep_together.push_back({0, static_cast<std::uint32_t>(g.vertex_count() - 1)});

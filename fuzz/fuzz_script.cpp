@@ -22,7 +22,7 @@ madd::Pslg unit_square() {
 }
 
 void refuse_costly(const madd::DecomposeOptions& o) {
-  if (o.refine > 8 || o.smoothing_iterations > 4 || o.threads != 1)
+  if (o.boundary_refinement > 8 || o.smoothing_iterations > 4 || o.threads != 1)
     throw madd::OptionError("options", "outside the fuzzing sandbox (r <= 8, s <= 4, j = 1)");
 }
 
@@ -45,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (context.decomposition) {
     const madd::Decomposition& d = *context.decomposition;
     const auto n = static_cast<std::uint32_t>(d.subdomains.size());
-    const bool area_graded = context.options.area_function || !context.options.background_areas.empty();
+    const bool area_graded = context.options.subdomain_area_function || !context.options.subdomain_area_samples.empty();
     const std::uint32_t expected = area_graded && n <= context.requested_subdomains ? n : context.requested_subdomains;
     if (!madd::verify_decomposition(d, *context.domain, expected).ok()) std::abort();
   }

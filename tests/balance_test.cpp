@@ -95,7 +95,7 @@ TEST_CASE("C3: largest area / mean area <= 1.3 on the bundled domains") {
 
 // Rebalancing (docs/algorithm.md, "Rebalancing"): the cases below exceed 1.25
 // without it (checked, so the test cannot pass vacuously) and must come within
-// rebalance_above x the mean with it, valid, at Phi0, separators no longer.
+// repair_balance_above x the mean with it, valid, at Phi0, separators no longer.
 TEST_CASE("rebalancing brings the largest subdomain within 1.2 x the mean where splits alone cannot") {
   struct Case {
     const char* file;
@@ -108,12 +108,12 @@ TEST_CASE("rebalancing brings the largest subdomain within 1.2 x the mean where 
     const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/" + c.file);
     madd::DecomposeOptions o;
     o.subdomains = c.n;
-    o.min_angle_deg = c.phi;
+    o.separator_angle_deg = c.phi;
     o.threads = 1;
-    o.rebalance_above = 0.0;
+    o.repair_balance_above = 0.0;
     const madd::Metrics off = madd::metrics(madd::decompose(domain, o));
     REQUIRE(off.max_area_over_mean > 1.25);
-    o.rebalance_above = 1.2;
+    o.repair_balance_above = 1.2;
     const madd::Decomposition d = madd::decompose(domain, o);
     const madd::Verification check = madd::verify_decomposition(d, domain, c.n);
     INFO((check.ok() ? std::string() : check.problems.front()));
@@ -133,11 +133,11 @@ TEST_CASE("rebalancing changes nothing where every subdomain is within the bound
   madd::DecomposeOptions o;
   o.subdomains = 64;
   o.threads = 1;
-  o.rebalance_above = 0.0;
+  o.repair_balance_above = 0.0;
   const madd::Decomposition off = madd::decompose(domain, o);
   const madd::Metrics m = madd::metrics(off);
   REQUIRE(m.max_area_over_mean < 1.3);
-  o.rebalance_above = m.max_area_over_mean * 1.001;  // nothing above the bound
+  o.repair_balance_above = m.max_area_over_mean * 1.001;  // nothing above the bound
   CHECK(madd::decompose(domain, o) == off);
 }
 
@@ -166,13 +166,13 @@ TEST_CASE("rebalancing works on background weights too: the heaviest subdomain c
   const madd::Decomposition plain = madd::decompose(domain, o);
   for (const madd::Subdomain& s : plain.subdomains) {
     // One sample per subdomain interior point, heavier to the left.
-    o.background_weights.push_back({s.interior_point, (s.interior_point.x < 0 ? 20.0 : 1.0) * (1.0 + u(rng))});
+    o.weight_samples.push_back({s.interior_point, (s.interior_point.x < 0 ? 20.0 : 1.0) * (1.0 + u(rng))});
   }
   o.gradation = 1.0;
-  o.rebalance_above = 0.0;
+  o.repair_balance_above = 0.0;
   const madd::Metrics off = madd::metrics(madd::decompose(domain, o));
   REQUIRE(off.max_weight_over_mean > 1.2);
-  o.rebalance_above = 1.1;
+  o.repair_balance_above = 1.1;
   const madd::Decomposition d = madd::decompose(domain, o);
   const madd::Verification check = madd::verify_decomposition(d, domain, o.subdomains);
   INFO((check.ok() ? std::string() : check.problems.front()));
@@ -184,8 +184,8 @@ TEST_CASE("rebalancing works on background weights too: the heaviest subdomain c
   double total = 0;
   for (const madd::Subdomain& s : d.subdomains) total += s.weight;
   double expected = 0;
-  for (const madd::ValuedPoint& v : o.background_weights) expected += v.value;
-  CHECK(total == doctest::Approx(o.refine * madd::domain_area(domain) + expected).epsilon(1e-9));
+  for (const madd::ValuedPoint& v : o.weight_samples) expected += v.value;
+  CHECK(total == doctest::Approx(o.boundary_refinement * madd::domain_area(domain) + expected).epsilon(1e-9));
   o.threads = 2;
   CHECK(madd::decompose(domain, o) == d);
 }

@@ -80,7 +80,7 @@ double brute_force_cut(const madd::Graph& g, const madd::BisectOptions& o) {
   const auto n = static_cast<std::uint32_t>(g.vertex_count());
   double total = 0.0;
   for (const double w : g.vertex_weights) total += w;
-  const double max0 = total * o.target_fraction * (1 + o.imbalance_tolerance), max1 = total * (1 - o.target_fraction) * (1 + o.imbalance_tolerance);
+  const double max0 = total * o.target_fraction * (1 + o.balance_tolerance), max1 = total * (1 - o.target_fraction) * (1 + o.balance_tolerance);
   double best = -1.0;
   for (std::uint32_t mask = 1; mask + 1 < (1u << n); ++mask) {
     double w1 = 0.0, cut = 0.0;
@@ -104,8 +104,8 @@ double total_weight(const madd::Graph& g) {
 
 bool balanced(const madd::Graph& g, const madd::Bisection& b, const madd::BisectOptions& o) {
   const double t = total_weight(g);
-  return b.weight[0] <= t * o.target_fraction * (1 + o.imbalance_tolerance) + 1e-9 &&
-         b.weight[1] <= t * (1 - o.target_fraction) * (1 + o.imbalance_tolerance) + 1e-9;
+  return b.weight[0] <= t * o.target_fraction * (1 + o.balance_tolerance) + 1e-9 &&
+         b.weight[1] <= t * (1 - o.target_fraction) * (1 + o.balance_tolerance) + 1e-9;
 }
 
 } // namespace
@@ -142,7 +142,7 @@ TEST_SUITE("bisect") {
       const std::uint32_t n = 10 + static_cast<std::uint32_t>(seed % 7);
       const madd::Graph g = random_graph(n, n / 2 + static_cast<std::uint32_t>(seed % 5), seed, seed % 2 == 0);
       madd::BisectOptions o;
-      o.imbalance_tolerance = 0.15;
+      o.balance_tolerance = 0.15;
       o.connected = seed % 3 != 0;
       o.target_fraction = seed % 4 == 0 ? 0.35 : 0.5;
       o.seed = seed;

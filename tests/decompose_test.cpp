@@ -134,7 +134,7 @@ void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32
 Decomposition run(const Pslg& domain, std::uint32_t n, double phi, unsigned threads = 1) {
   madd::DecomposeOptions o;
   o.subdomains = n;
-  o.min_angle_deg = phi;
+  o.separator_angle_deg = phi;
   o.threads = threads;
   return madd::decompose(domain, o);
 }
@@ -223,14 +223,14 @@ TEST_CASE("no valid separator: a typed error naming the subdomain, never a parti
   const Pslg needle = polygon({{{0, 0}, {1, 0}, {0.5, 0.001}}});
   madd::DecomposeOptions o;
   o.subdomains = 2;
-  o.min_angle_deg = 89.9;
+  o.separator_angle_deg = 89.9;
   try {
     (void)madd::decompose(needle, o);
     FAIL("expected a DecompositionError");
   } catch (const madd::DecompositionError& e) {
     CHECK(e.subdomain() == 0);
     CHECK(e.area() == doctest::Approx(0.0005));
-    CHECK(e.min_angle_deg() == 89.9);
+    CHECK(e.separator_angle_deg() == 89.9);
   }
 }
 
@@ -242,8 +242,8 @@ TEST_CASE("a face with no even split at Phi0 is split unevenly rather than given
   const Pslg triangle = polygon({{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2.0}}});
   madd::DecomposeOptions o;
   o.subdomains = 2;
-  o.min_angle_deg = 89.9;
-  o.max_refinement_rounds = 1;
+  o.separator_angle_deg = 89.9;
+  o.max_split_retries = 1;
   const Decomposition d = madd::decompose(triangle, o);
   CHECK(madd::verify_decomposition(d, triangle, 2).ok());
   const madd::Metrics m = madd::metrics(d);
@@ -258,12 +258,12 @@ TEST_CASE("-i is live: where splits are hard (Phi0 = 80), a split below it is tr
   const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
   madd::DecomposeOptions o;
   o.subdomains = 64;
-  o.min_angle_deg = 80.0;
+  o.separator_angle_deg = 80.0;
   o.threads = 1;
-  o.rebalance_above = 0.0;  // the split alone
-  o.min_balance_quality = 0.5;
+  o.repair_balance_above = 0.0;  // the split alone
+  o.min_split_quality = 0.5;
   const Decomposition loose = madd::decompose(domain, o);
-  o.min_balance_quality = 0.95;
+  o.min_split_quality = 0.95;
   const Decomposition strict = madd::decompose(domain, o);
   CHECK_FALSE(loose == strict);
   for (const Decomposition* d : {&loose, &strict}) {
@@ -297,7 +297,7 @@ TEST_CASE("bad options are rejected") {
   o.subdomains = 0;
   CHECK_THROWS_AS(madd::decompose(square, o), madd::OptionError);
   o.subdomains = 2;
-  o.min_angle_deg = 95.0;
+  o.separator_angle_deg = 95.0;
   CHECK_THROWS_AS(madd::decompose(square, o), madd::OptionError);
 }
 

@@ -12,10 +12,10 @@
 
 namespace madd::test {
 
-inline Metrics checked_decomposition(const Pslg& domain, std::uint32_t n, double min_angle_deg = 60.0) {
+inline Metrics checked_decomposition(const Pslg& domain, std::uint32_t n, double separator_angle_deg = 60.0) {
   DecomposeOptions options;
   options.subdomains = n;
-  options.min_angle_deg = min_angle_deg;
+  options.separator_angle_deg = separator_angle_deg;
   options.threads = 1;
   const Decomposition d = decompose(domain, options);
   const Verification check = verify_decomposition(d, domain, n);
@@ -23,7 +23,7 @@ inline Metrics checked_decomposition(const Pslg& domain, std::uint32_t n, double
   CHECK(check.ok());
   CHECK(d.subdomains.size() == n);
   const Metrics m = metrics(d);
-  if (!std::isnan(m.angle_min)) CHECK(m.angle_min >= min_angle_deg - 1e-9);
+  if (!std::isnan(m.angle_min)) CHECK(m.angle_min >= separator_angle_deg - 1e-9);
   return m;
 }
 

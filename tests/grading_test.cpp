@@ -90,7 +90,7 @@ Decomposition checked(const Pslg& domain, const madd::DecomposeOptions& o, std::
   const madd::Verification v = madd::verify_decomposition(d, domain, expected == 0 ? made : expected);
   for (const auto& p : v.problems) INFO(p);
   CHECK(v.ok());
-  CHECK(madd::metrics(d).angle_min >= o.min_angle_deg);
+  CHECK(madd::metrics(d).angle_min >= o.separator_angle_deg);
   return d;
 }
 
@@ -116,8 +116,8 @@ TEST_CASE("area function: no subdomain exceeds its required area times the bound
   const Pslg domain = rectangle(4, 1);
   madd::DecomposeOptions o;
   o.subdomains = 1000;  // a maximum: the bound stops the splitting first
-  o.area_function = [](double x, double) { return 0.02 + 0.03 * x; };
-  o.area_ratio_bound = 1.0;
+  o.subdomain_area_function = [](double x, double) { return 0.02 + 0.03 * x; };
+  o.subdomain_area_ratio = 1.0;
   const Decomposition d = checked(domain, o, 0);
   CHECK(d.subdomains.size() > 10);
   CHECK(d.subdomains.size() < 1000);
@@ -126,7 +126,7 @@ TEST_CASE("area function: no subdomain exceeds its required area times the bound
     // vertex, and the required area (a minimum inside) is no larger.
     double most = 0;
     for (std::uint32_t v : s.rings[0]) most = std::max(most, 0.02 + 0.03 * d.points[v].x);
-    CHECK(s.area <= o.area_ratio_bound * most * (1 + 1e-9));
+    CHECK(s.area <= o.subdomain_area_ratio * most * (1 + 1e-9));
   }
   CHECK(x_area_correlation(d) > 0.5);
 }
@@ -134,7 +134,7 @@ TEST_CASE("area function: no subdomain exceeds its required area times the bound
 TEST_CASE("area function respects the maximum count") {
   madd::DecomposeOptions o;
   o.subdomains = 7;
-  o.area_function = [](double, double) { return 1e-4; };
+  o.subdomain_area_function = [](double, double) { return 1e-4; };
   const Decomposition d = checked(rectangle(4, 1), o, 7);
   CHECK(d.subdomains.size() == 7);
 }
@@ -184,7 +184,7 @@ TEST_CASE("boundary weights: a subdomain weighs r * area + a * its boundary vert
     for (const auto& ring : s.rings) {
       for (std::uint32_t v : ring) w += v < domain.points.size() ? domain.attributes[v] : 0.0;
     }
-    CHECK(s.weight == doctest::Approx(o.refine * s.area + o.gradation * w).epsilon(1e-9));
+    CHECK(s.weight == doctest::Approx(o.boundary_refinement * s.area + o.gradation * w).epsilon(1e-9));
   }
 }
 
@@ -194,7 +194,7 @@ TEST_CASE("background weights and areas") {
   for (int i = 0; i < 80; ++i) {
     for (int j = 0; j < 20; ++j) {
       const Point p{(i + 0.5) / 20.0, (j + 0.5) / 20.0};
-      o.background_weights.push_back({p, p.x});
+      o.weight_samples.push_back({p, p.x});
     }
   }
   o.subdomains = 64;
@@ -203,15 +203,15 @@ TEST_CASE("background weights and areas") {
 
   madd::DecomposeOptions a;
   a.subdomains = 1000;
-  for (const auto& p : o.background_weights) a.background_areas.push_back({p.at, 0.02 + 0.03 * p.at.x});
+  for (const auto& p : o.weight_samples) a.subdomain_area_samples.push_back({p.at, 0.02 + 0.03 * p.at.x});
   const Decomposition da = checked(domain, a, 0);
   CHECK(da.subdomains.size() > 10);
   for (const auto& s : da.subdomains) {
     double least = INFINITY;
-    for (const auto& p : a.background_areas) {
+    for (const auto& p : a.subdomain_area_samples) {
       if (inside_ring(da, s.rings[0], p.at)) least = std::min(least, p.value);
     }
-    if (std::isfinite(least)) CHECK(s.area <= a.area_ratio_bound * least * (1 + 1e-9));
+    if (std::isfinite(least)) CHECK(s.area <= a.subdomain_area_ratio * least * (1 + 1e-9));
   }
   CHECK(x_area_correlation(da) > 0.5);
 }
@@ -221,10 +221,10 @@ TEST_CASE("graded output is identical for 1 and 2 threads") {
   for (std::size_t i = 0; i < domain.points.size(); ++i) domain.attributes[i] = domain.points[i].x;
   madd::DecomposeOptions variants[4];
   variants[0].weight_function = [](double x, double y) { return 1 + x * y; };
-  variants[1].area_function = [](double x, double) { return 0.01 + 0.02 * x; };
+  variants[1].subdomain_area_function = [](double x, double) { return 0.01 + 0.02 * x; };
   variants[2].gradation = 2;
   variants[2].interpolation = 0.5;
-  variants[3].background_weights = {{{0.5, 0.5}, 10}, {{3.5, 0.2}, 1}, {{2, 0.7}, 4}};
+  variants[3].weight_samples = {{{0.5, 0.5}, 10}, {{3.5, 0.2}, 1}, {{2, 0.7}, 4}};
   for (auto& o : variants) {
     o.subdomains = 40;
     o.threads = 1;

@@ -228,7 +228,7 @@ TEST_CASE("Phi0 = 89 still decomposes a triangle; Phi0 = 89.99 fails naming the 
   expect_valid(tri, 4, 89.0);
   madd::DecomposeOptions options;
   options.subdomains = 64;
-  options.min_angle_deg = 89.99;
+  options.separator_angle_deg = 89.99;
   options.threads = 1;
   try {
     (void)madd::decompose(tri, options);
@@ -237,7 +237,7 @@ TEST_CASE("Phi0 = 89 still decomposes a triangle; Phi0 = 89.99 fails naming the 
     CHECK(e.subdomain() >= 0);
     CHECK(e.area() > 0.0);
     CHECK(e.area() < std::sqrt(3.0) / 4);
-    CHECK(e.min_angle_deg() == 89.99);
+    CHECK(e.separator_angle_deg() == 89.99);
     const std::string what = e.what();
     CHECK(what.find("89.99") != std::string::npos);
     CHECK(what.find("subdomain " + std::to_string(e.subdomain())) != std::string::npos);
@@ -252,7 +252,7 @@ TEST_CASE("N far beyond the domain's features") {
   expect_valid(polygon({{{0, 0}, {1, 0}, {0.5, 0.05}}}), 1024);
   madd::DecomposeOptions options;
   options.subdomains = 1024;
-  options.min_angle_deg = 89.9;
+  options.separator_angle_deg = 89.9;
   options.threads = 1;
   try {
     (void)madd::decompose(polygon({{{0, 0}, {1, 0}, {0.5, 0.001}}}), options);
@@ -275,7 +275,7 @@ TEST_CASE("a subdomain that cannot be split gives its share to the others, and i
     CAPTURE(n);
     madd::DecomposeOptions options;
     options.subdomains = n;
-    options.min_angle_deg = 89.9;
+    options.separator_angle_deg = 89.9;
     options.threads = 1;
     const madd::Decomposition one = madd::decompose(spike, options);
     const madd::Verification check = madd::verify_decomposition(one, spike, n);

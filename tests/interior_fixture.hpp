@@ -54,7 +54,7 @@ inline InteriorFixture interior_fixture() {
   d.segments.push_back({1, 4, 0});
   d.segment_origin.push_back(no_index);
   d.regions = p.regions;
-  d.min_angle_deg = 60.0;
+  d.separator_angle_deg = 60.0;
   Subdomain left;
   left.rings = {{0, 1, 4, 5, 6}};
   left.ring_segments = {{0, separator, 4, 5, 6}};

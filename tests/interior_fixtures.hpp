@@ -52,7 +52,7 @@ inline InteriorFixture interior_square() {
   right.interior_segments = {11};
   right.interior_points = {10};
   d.subdomains = {left, right};
-  d.min_angle_deg = 60.0;
+  d.separator_angle_deg = 60.0;
   return f;
 }
 

@@ -139,7 +139,7 @@ void check_interior(const Decomposition& d, const Pslg& domain, std::uint32_t n,
 madd::DecomposeOptions options(std::uint32_t n, double phi = 60.0, unsigned threads = 0) {
   madd::DecomposeOptions o;
   o.subdomains = n;
-  o.min_angle_deg = phi;
+  o.separator_angle_deg = phi;
   o.threads = threads;
   return o;
 }

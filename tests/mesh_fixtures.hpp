@@ -25,8 +25,8 @@ inline MeshOptions options_for(std::uint32_t n, double q, double area) {
   MeshOptions o;
   o.decomposition.subdomains = n;
   o.decomposition.threads = 1;
-  o.size.min_angle_deg = q;
-  o.size.max_area = area;
+  o.size.min_triangle_angle_deg = q;
+  o.size.max_triangle_area = area;
   return o;
 }
 
@@ -79,12 +79,12 @@ inline std::vector<double> region_attributes_by_centroid(const Decomposition& d,
 }
 
 // Every subdomain triangulated without Steiner points, merged into one Mesh
-// (min_angle_deg 0: nothing is promised about angles).
+// (min_triangle_angle_deg 0: nothing is promised about angles).
 inline Mesh mesh_without_steiner_points(const Decomposition& d) {
   Mesh m;
   m.decomposition = d;
   m.points = d.points;
-  m.min_angle_deg = 0.0;
+  m.min_triangle_angle_deg = 0.0;
   m.point_markers.assign(d.points.size(), 0);
   for (std::size_t j = 0; j < d.segments.size(); ++j) {
     const Segment& s = d.segments[j];

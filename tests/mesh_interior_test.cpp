@@ -188,7 +188,7 @@ TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior
   f.decomposition.points.push_back({2.01, 1.0});
   f.decomposition.subdomains[1].interior_points.push_back(17);
   madd::MeshSizeOptions size;
-  size.max_area = 0.05;
+  size.max_triangle_area = 0.05;
   const madd::Decomposition d = madd::discretise(f.decomposition, size);
   const std::vector<std::uint32_t> owner = madd::interior_segment_owners(d);
   std::size_t interior = 0;

@@ -81,7 +81,7 @@ void check_mesh(const Mesh& m, const madd::Pslg& domain, double max_area) {
   }
   // Angles: below the bound only as many triangles as the shortfall counts.
   std::size_t below = 0;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) below += smallest_angle_deg(m, t) < m.min_angle_deg - 1e-9;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) below += smallest_angle_deg(m, t) < m.min_triangle_angle_deg - 1e-9;
   CHECK(below == m.shortfall.total());
 }
 
@@ -101,7 +101,7 @@ TEST_CASE("mesh: the pipe at N = 16, q 30, a 0.002: conforming, every angle >= 3
 TEST_CASE("mesh: the same mesh for 1, 2 and 3 threads") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
   madd::MeshOptions o = options_for(8, 28, 0.0);
-  o.size.max_area = madd::domain_area(domain) / 4000;
+  o.size.max_triangle_area = madd::domain_area(domain) / 4000;
   const Mesh one = madd::mesh(domain, o);
   o.decomposition.threads = 2;
   const Mesh two = madd::mesh(domain, o);
@@ -109,14 +109,14 @@ TEST_CASE("mesh: the same mesh for 1, 2 and 3 threads") {
   const Mesh three = madd::mesh(domain, o);
   CHECK(one == two);
   CHECK(one == three);
-  check_mesh(one, domain, o.size.max_area);
+  check_mesh(one, domain, o.size.max_triangle_area);
 }
 
 TEST_CASE("mesh: each subdomain is constrained Delaunay (brute force: no vertex of the subdomain inside a circumcircle it sees)") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/l_shape.poly");
   madd::MeshOptions o = options_for(3, 25, madd::domain_area(domain) / 300);
   const Mesh m = madd::mesh(domain, o);
-  check_mesh(m, domain, o.size.max_area);
+  check_mesh(m, domain, o.size.max_triangle_area);
   // Locally Delaunay across every edge that is not a segment suffices for a
   // constrained Delaunay triangulation; check it across every unconstrained edge.
   std::set<std::pair<std::uint32_t, std::uint32_t>> constrained;
@@ -145,7 +145,7 @@ TEST_CASE("discretise: a separator's split points are shared by both its subdoma
   d.threads = 1;
   const madd::Decomposition dec = madd::decompose(domain, d);
   madd::MeshSizeOptions size;
-  size.max_area = 0.001;
+  size.max_triangle_area = 0.001;
   const madd::Decomposition split = madd::discretise(dec, size);
   CHECK(split.segments.size() > 4 * dec.segments.size());
   // Every separator piece is in exactly two rings, in opposite directions.
@@ -209,7 +209,7 @@ TEST_CASE("mesh: under a size function, balance by work evens the triangle count
   // Triangles 26 times smaller at the left edge of the pipe than at the right.
   const madd::Pslg domain = pipe();
   madd::MeshOptions o = options_for(8, 30, 0.0);
-  o.size.area_function = [](double x, double) { return 0.0004 + 0.01 * (x + 10) * (x + 10) / 100; };
+  o.size.triangle_area_function = [](double x, double) { return 0.0004 + 0.01 * (x + 10) * (x + 10) / 100; };
   const auto largest_over_mean = [](const Mesh& m) {
     std::size_t largest = 0;
     for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
@@ -227,6 +227,6 @@ TEST_CASE("mesh: under a size function, balance by work evens the triangle count
   for (const auto& t : by_work.triangles) {
     const Point a = by_work.points[t[0]], b = by_work.points[t[1]], c = by_work.points[t[2]];
     const Point g = madd::triangle_centroid(a, b, c);
-    REQUIRE(madd::triangle_area(a, b, c) <= o.size.area_function(g.x, g.y) * (1 + 1e-12));
+    REQUIRE(madd::triangle_area(a, b, c) <= o.size.triangle_area_function(g.x, g.y) * (1 + 1e-12));
   }
 }

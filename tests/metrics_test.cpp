@@ -154,9 +154,9 @@ TEST_CASE("verify_decomposition: an angle below the bound") {
   Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0}, {0.7, 1}}, 4,
                                  {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
                                  {{{{0, 4, 5, 3}}, {0.2, 0.5}, {}}, {{{4, 1, 2, 5}}, {0.8, 0.5}, {}}});
-  f.decomposition.min_angle_deg = 60;
+  f.decomposition.separator_angle_deg = 60;
   CHECK(verify_decomposition(f.decomposition, f.domain, 2).ok());
-  f.decomposition.min_angle_deg = 70;
+  f.decomposition.separator_angle_deg = 70;
   const Verification v = verify_decomposition(f.decomposition, f.domain, 2);
   CHECK(mentions(v, "new angle of 68.19"));
   const Metrics m = metrics(f.decomposition);
@@ -256,7 +256,7 @@ Fixture triangle_far_away(Point shift) {
     }
   }
   for (Subdomain& sub : d.subdomains) sub.area = sub.weight = detail::rings_area(d.points, sub.rings);
-  d.min_angle_deg = 20;  // the cut makes angles of 26.9 and 35.5 degrees at c
+  d.separator_angle_deg = 20;  // the cut makes angles of 26.9 and 35.5 degrees at c
   return f;
 }
 

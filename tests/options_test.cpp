@@ -62,36 +62,36 @@ TEST_SUITE("options") {
 TEST_CASE("check_options refuses every field out of its range, naming the field") {
   const std::vector<Case> bad = {
       {"subdomains", [](DecomposeOptions& o) { o.subdomains = 0; }},
-      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = 0; }},
-      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = 90; }},
-      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = -5; }},
-      {"min_angle_deg", [](DecomposeOptions& o) { o.min_angle_deg = not_a_number; }},
-      {"refine", [](DecomposeOptions& o) { o.refine = 0; }},
-      {"refine", [](DecomposeOptions& o) { o.refine = infinity; }},
-      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = 0; }},
-      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = 1.0000001; }},
-      {"min_balance_quality", [](DecomposeOptions& o) { o.min_balance_quality = not_a_number; }},
+      {"separator_angle_deg", [](DecomposeOptions& o) { o.separator_angle_deg = 0; }},
+      {"separator_angle_deg", [](DecomposeOptions& o) { o.separator_angle_deg = 90; }},
+      {"separator_angle_deg", [](DecomposeOptions& o) { o.separator_angle_deg = -5; }},
+      {"separator_angle_deg", [](DecomposeOptions& o) { o.separator_angle_deg = not_a_number; }},
+      {"boundary_refinement", [](DecomposeOptions& o) { o.boundary_refinement = 0; }},
+      {"boundary_refinement", [](DecomposeOptions& o) { o.boundary_refinement = infinity; }},
+      {"min_split_quality", [](DecomposeOptions& o) { o.min_split_quality = 0; }},
+      {"min_split_quality", [](DecomposeOptions& o) { o.min_split_quality = 1.0000001; }},
+      {"min_split_quality", [](DecomposeOptions& o) { o.min_split_quality = not_a_number; }},
       {"threads", [](DecomposeOptions& o) { o.threads = madd::max_threads + 1; }},
-      {"max_refinement_rounds", [](DecomposeOptions& o) { o.max_refinement_rounds = -1; }},
+      {"max_split_retries", [](DecomposeOptions& o) { o.max_split_retries = -1; }},
       {"smoothing_iterations", [](DecomposeOptions& o) { o.smoothing_iterations = -1; }},
       {"smoothing_iterations", [](DecomposeOptions& o) { o.smoothing_iterations = 1001; }},
-      {"rebalance_above", [](DecomposeOptions& o) { o.rebalance_above = 0.99; }},
-      {"adaptive_refine", [](DecomposeOptions& o) { o.adaptive_refine = 0.5; }},
-      {"adaptive_refine", [](DecomposeOptions& o) { o.adaptive_refine = 65.0; }},
-      {"adaptive_refine", [](DecomposeOptions& o) { o.adaptive_refine = not_a_number; }},
-      {"rebalance_above", [](DecomposeOptions& o) { o.rebalance_above = -1.0; }},
-      {"rebalance_above", [](DecomposeOptions& o) { o.rebalance_above = not_a_number; }},
-      {"rebalance_above", [](DecomposeOptions& o) { o.rebalance_above = infinity; }},
+      {"repair_balance_above", [](DecomposeOptions& o) { o.repair_balance_above = 0.99; }},
+      {"adaptive_boundary_refinement", [](DecomposeOptions& o) { o.adaptive_boundary_refinement = 0.5; }},
+      {"adaptive_boundary_refinement", [](DecomposeOptions& o) { o.adaptive_boundary_refinement = 65.0; }},
+      {"adaptive_boundary_refinement", [](DecomposeOptions& o) { o.adaptive_boundary_refinement = not_a_number; }},
+      {"repair_balance_above", [](DecomposeOptions& o) { o.repair_balance_above = -1.0; }},
+      {"repair_balance_above", [](DecomposeOptions& o) { o.repair_balance_above = not_a_number; }},
+      {"repair_balance_above", [](DecomposeOptions& o) { o.repair_balance_above = infinity; }},
       {"gradation", [](DecomposeOptions& o) { o.gradation = -0.5; }},
       {"gradation", [](DecomposeOptions& o) { o.gradation = not_a_number; }},
       {"interpolation", [](DecomposeOptions& o) { o.interpolation = -1; }},
-      {"area_ratio_bound", [](DecomposeOptions& o) { o.area_ratio_bound = 0; }},
+      {"subdomain_area_ratio", [](DecomposeOptions& o) { o.subdomain_area_ratio = 0; }},
       {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = -1; }},
       {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = not_a_number; }},
-      {"background_weights", [](DecomposeOptions& o) { o.background_weights = {{{0.5, 0.5}, -1}}; }},
-      {"background_weights", [](DecomposeOptions& o) { o.background_weights = {{{not_a_number, 0.5}, 1}}; }},
-      {"background_areas", [](DecomposeOptions& o) { o.background_areas = {{{0.5, 0.5}, 0}}; }},
-      {"background_areas", [](DecomposeOptions& o) { o.background_areas = {{{0.5, 0.5}, not_a_number}}; }},
+      {"weight_samples", [](DecomposeOptions& o) { o.weight_samples = {{{0.5, 0.5}, -1}}; }},
+      {"weight_samples", [](DecomposeOptions& o) { o.weight_samples = {{{not_a_number, 0.5}, 1}}; }},
+      {"subdomain_area_samples", [](DecomposeOptions& o) { o.subdomain_area_samples = {{{0.5, 0.5}, 0}}; }},
+      {"subdomain_area_samples", [](DecomposeOptions& o) { o.subdomain_area_samples = {{{0.5, 0.5}, not_a_number}}; }},
   };
   for (const Case& c : bad) {
     CAPTURE(c.field);
@@ -106,21 +106,21 @@ TEST_CASE("check_options refuses every field out of its range, naming the field"
 
 TEST_CASE("values at the ends of each range are accepted") {
   const std::vector<std::function<void(DecomposeOptions&)>> good = {
-      [](DecomposeOptions& o) { o.min_angle_deg = 1e-9; },
-      [](DecomposeOptions& o) { o.min_angle_deg = 89.999; },
-      [](DecomposeOptions& o) { o.min_balance_quality = 1.0; },
-      [](DecomposeOptions& o) { o.min_balance_quality = 1e-9; },
+      [](DecomposeOptions& o) { o.separator_angle_deg = 1e-9; },
+      [](DecomposeOptions& o) { o.separator_angle_deg = 89.999; },
+      [](DecomposeOptions& o) { o.min_split_quality = 1.0; },
+      [](DecomposeOptions& o) { o.min_split_quality = 1e-9; },
       [](DecomposeOptions& o) { o.threads = madd::max_threads; },
       [](DecomposeOptions& o) { o.smoothing_iterations = 0; },
       [](DecomposeOptions& o) { o.smoothing_iterations = 1000; },
-      [](DecomposeOptions& o) { o.rebalance_above = 0.0; },
-      [](DecomposeOptions& o) { o.rebalance_above = 1.0; },
-      [](DecomposeOptions& o) { o.adaptive_refine = 1.0; },
-      [](DecomposeOptions& o) { o.adaptive_refine = 64.0; },
-      [](DecomposeOptions& o) { o.max_refinement_rounds = 0; },
+      [](DecomposeOptions& o) { o.repair_balance_above = 0.0; },
+      [](DecomposeOptions& o) { o.repair_balance_above = 1.0; },
+      [](DecomposeOptions& o) { o.adaptive_boundary_refinement = 1.0; },
+      [](DecomposeOptions& o) { o.adaptive_boundary_refinement = 64.0; },
+      [](DecomposeOptions& o) { o.max_split_retries = 0; },
       [](DecomposeOptions& o) { o.gradation = 0; },
       [](DecomposeOptions& o) { o.time_limit_seconds = 0; },
-      [](DecomposeOptions& o) { o.background_weights = {{{0.5, 0.5}, 0}}; },
+      [](DecomposeOptions& o) { o.weight_samples = {{{0.5, 0.5}, 0}}; },
       [](DecomposeOptions& o) { o.gradation = 2, o.interpolation = 0.5; },
   };
   for (const auto& set : good) {
@@ -133,15 +133,15 @@ TEST_CASE("values at the ends of each range are accepted") {
 TEST_CASE("two sources of the same grading input are refused, not silently dropped") {
   DecomposeOptions o;
   o.weight_function = [](double, double) { return 1.0; };
-  o.background_weights = {{{0.5, 0.5}, 1.0}};
-  CHECK(refused_field([&] { madd::check_options(o); }) == "background_weights");
+  o.weight_samples = {{{0.5, 0.5}, 1.0}};
+  CHECK(refused_field([&] { madd::check_options(o); }) == "weight_samples");
   // Each alone is a valid range: only the combination is wrong.
   CHECK(refused_field([&] { madd::check_option_ranges(o); }).empty());
 
   DecomposeOptions a;
-  a.area_function = [](double, double) { return 0.1; };
-  a.background_areas = {{{0.5, 0.5}, 0.1}};
-  CHECK(refused_field([&] { madd::check_options(a); }) == "background_areas");
+  a.subdomain_area_function = [](double, double) { return 0.1; };
+  a.subdomain_area_samples = {{{0.5, 0.5}, 0.1}};
+  CHECK(refused_field([&] { madd::check_options(a); }) == "subdomain_area_samples");
 
   DecomposeOptions p;
   p.interpolation = 0.5;  // no boundary weights to interpolate
@@ -166,37 +166,37 @@ TEST_CASE("an area function of 0, a negative value or NaN is refused like such a
     CAPTURE(value);
     DecomposeOptions o;
     o.subdomains = 64;
-    o.area_function = [value](double, double) { return value; };
-    CHECK(refused_field([&] { (void)madd::decompose(square(), o); }) == "area_function");
+    o.subdomain_area_function = [value](double, double) { return value; };
+    CHECK(refused_field([&] { (void)madd::decompose(square(), o); }) == "subdomain_area_function");
     DecomposeOptions b;
     b.subdomains = 64;
-    b.background_areas = {{{0.5, 0.5}, value}};
-    CHECK(refused_field([&] { (void)madd::decompose(square(), b); }) == "background_areas");
+    b.subdomain_area_samples = {{{0.5, 0.5}, value}};
+    CHECK(refused_field([&] { (void)madd::decompose(square(), b); }) == "subdomain_area_samples");
   }
   // Positive only in part of the domain is refused too: the value is a size everywhere.
   DecomposeOptions half;
   half.subdomains = 64;
-  half.area_function = [](double x, double) { return x < 0.5 ? 0.01 : -0.01; };
-  CHECK(refused_field([&] { (void)madd::decompose(square(), half); }) == "area_function");
+  half.subdomain_area_function = [](double x, double) { return x < 0.5 ? 0.01 : -0.01; };
+  CHECK(refused_field([&] { (void)madd::decompose(square(), half); }) == "subdomain_area_function");
 }
 
 TEST_CASE("split to a required area, N is a maximum, and the result says how far it got") {
   DecomposeOptions o;
   o.subdomains = 6;
-  o.area_function = [](double, double) { return 0.01; };  // wants about 100 subdomains
+  o.subdomain_area_function = [](double, double) { return 0.01; };  // wants about 100 subdomains
   const madd::Decomposition d = madd::decompose(square(), o);
   CHECK(d.subdomains.size() == 6);
-  CHECK(d.area_ratio_bound == o.area_ratio_bound);
+  CHECK(d.subdomain_area_ratio == o.subdomain_area_ratio);
   CHECK(madd::expected_subdomain_count(d, 6) == 6);
   CHECK(madd::verify_decomposition(d, square(), madd::expected_subdomain_count(d, 6)).ok());
   const madd::Metrics m = madd::metrics(d);
-  CHECK(m.area_ratio_bound == o.area_ratio_bound);
+  CHECK(m.subdomain_area_ratio == o.subdomain_area_ratio);
   double largest_ratio = 0;
   std::uint32_t over = 0;
   for (const madd::Subdomain& s : d.subdomains) {
     CHECK(s.required_area == doctest::Approx(0.01));
     largest_ratio = std::max(largest_ratio, s.area / s.required_area);
-    over += s.area / s.required_area > o.area_ratio_bound ? 1u : 0u;
+    over += s.area / s.required_area > o.subdomain_area_ratio ? 1u : 0u;
   }
   CHECK(m.max_area_over_required == doctest::Approx(largest_ratio));
   CHECK(m.subdomains_over_area_bound == over);
@@ -205,18 +205,18 @@ TEST_CASE("split to a required area, N is a maximum, and the result says how far
 
   // Reached before N: fewer subdomains is the expected count, none over the bound.
   o.subdomains = 1000;
-  o.area_function = [](double, double) { return 0.2; };
+  o.subdomain_area_function = [](double, double) { return 0.2; };
   const madd::Decomposition e = madd::decompose(square(), o);
   CHECK(e.subdomains.size() < 1000);
   CHECK(madd::expected_subdomain_count(e, 1000) == e.subdomains.size());
   CHECK(madd::metrics(e).subdomains_over_area_bound == 0);
-  CHECK(madd::metrics(e).max_area_over_required <= o.area_ratio_bound);
+  CHECK(madd::metrics(e).max_area_over_required <= o.subdomain_area_ratio);
 
   // A uniform decomposition asks for exactly N, and its report has no such keys.
   DecomposeOptions u;
   u.subdomains = 3;
   const madd::Decomposition f = madd::decompose(square(), u);
-  CHECK(f.area_ratio_bound == 0.0);
+  CHECK(f.subdomain_area_ratio == 0.0);
   CHECK(madd::expected_subdomain_count(f, 5) == 5);
   CHECK(madd::format_report_json(madd::metrics(f)).find("area_bound") == std::string::npos);
 }
@@ -231,12 +231,12 @@ TEST_CASE("bisection, partition and picture options are refused as OptionError t
   b.target_fraction = 1.0;
   CHECK(refused_field([&] { (void)madd::bisect(g, b); }) == "target_fraction");
   b = {};
-  b.imbalance_tolerance = -0.1;
-  CHECK(refused_field([&] { madd::check_options(b); }) == "imbalance_tolerance");
+  b.balance_tolerance = -0.1;
+  CHECK(refused_field([&] { madd::check_options(b); }) == "balance_tolerance");
   CHECK(refused_field([&] { (void)madd::partition(g, 0); }) == "k");
   madd::PartitionOptions p;
-  p.imbalance_tolerance = not_a_number;
-  CHECK(refused_field([&] { (void)madd::partition(g, 2, p); }) == "imbalance_tolerance");
+  p.balance_tolerance = not_a_number;
+  CHECK(refused_field([&] { (void)madd::partition(g, 2, p); }) == "balance_tolerance");
   madd::SvgOptions s;
   s.mark_angles_below_deg = 181;
   CHECK(refused_field([&] { madd::check_options(s); }) == "mark_angles_below_deg");

@@ -58,7 +58,7 @@ TEST_CASE("progress: with a required area, target is the maximum and done the co
   const madd::Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/key.poly");
   madd::DecomposeOptions options;
   options.subdomains = 500;
-  options.area_function = [](double x, double) { return x < 0.5 ? 0.02 : 0.2; };
+  options.subdomain_area_function = [](double x, double) { return x < 0.5 ? 0.02 : 0.2; };
   const madd::Decomposition plain = madd::decompose(domain, options);
   std::vector<std::uint32_t> done;
   options.progress = [&](std::uint32_t d, std::uint32_t target) {

@@ -110,7 +110,7 @@ TEST_CASE("the paper's example runs on the pipe (Sec. 6), relative to the curren
   CHECK(result.exited);
   CHECK(result.commands == 6);
   CHECK(log.size() == 5);
-  CHECK(context.options.min_angle_deg == doctest::Approx(63.0));
+  CHECK(context.options.separator_angle_deg == doctest::Approx(63.0));
   REQUIRE(context.decomposition);
   const Decomposition& d = *context.decomposition;
   CHECK(d.subdomains.size() == 40);
@@ -135,19 +135,19 @@ TEST_CASE("set parses every parameter, with or without blanks around '='") {
              "set j=2 seed=9\nset smooth=3 threads=1\n",
              "s.txt", context);
   const DecomposeOptions& o = context.options;
-  CHECK(o.min_angle_deg == doctest::Approx(45.0));
-  CHECK(o.refine == 2.5);
+  CHECK(o.separator_angle_deg == doctest::Approx(45.0));
+  CHECK(o.boundary_refinement == 2.5);
   CHECK(o.gradation == 3.0);
   CHECK(o.interpolation == 0.5);
-  CHECK(o.min_balance_quality == 0.8);
-  CHECK(o.area_ratio_bound == 1.5);
+  CHECK(o.min_split_quality == 0.8);
+  CHECK(o.subdomain_area_ratio == 1.5);
   CHECK(o.subdomains == 12);
   CHECK(o.seed == 9);
   CHECK(o.smoothing_iterations == 3);
   CHECK(o.threads == 1);
   // A line with one bad assignment changes nothing.
   CHECK_THROWS_AS(run_script("set r=7 i=2", "s.txt", context), OptionError);
-  CHECK(context.options.refine == 2.5);
+  CHECK(context.options.boundary_refinement == 2.5);
 }
 
 TEST_CASE("comments, blank lines, dec without N, and exit stopping the script") {
@@ -187,10 +187,10 @@ TEST_CASE("every script error names its line and column") {
 }
 
 TEST_CASE("a value out of its range is a bad option, located and named as the script spells it") {
-  check_script_option_error("set f=0.5", 1, 7, "min_angle_deg", "f (the minimum angle as a fraction of pi");
-  check_script_option_error("set f=0", 1, 7, "min_angle_deg", "strictly between 0 and 90");
+  check_script_option_error("set f=0.5", 1, 7, "separator_angle_deg", "f (the minimum angle as a fraction of pi");
+  check_script_option_error("set f=0", 1, 7, "separator_angle_deg", "strictly between 0 and 90");
   check_script_option_error("set r=1 s=1.5", 1, 11, "smoothing_iterations", "whole number");
-  check_script_option_error("set i=0", 1, 7, "min_balance_quality", "(0, 1]");
+  check_script_option_error("set i=0", 1, 7, "min_split_quality", "(0, 1]");
   check_script_option_error("\nset n=0", 2, 7, "subdomains", "at least 1");
   check_script_option_error("set j=-1", 1, 7, "threads", "whole number");
   check_script_option_error("set j=5000", 1, 7, "threads", "at most 4096");
@@ -200,7 +200,7 @@ TEST_CASE("a value out of its range is a bad option, located and named as the sc
   // A combination is checked at `dec`, with the script's names.
   check_script_option_error("set p=0.5\ndec 4", 2, 5, "interpolation", "p (interpolation) only applies");
   check_script_option_error("set a=2\ndec 4", 2, 5, "gradation", "a (gradation) grades by the domain's vertex weights");
-  check_script_option_error("setAreaFunction 0\ndec 8", 2, 5, "area_function", "setAreaFunction must be finite and > 0");
+  check_script_option_error("setAreaFunction 0\ndec 8", 2, 5, "subdomain_area_function", "setAreaFunction must be finite and > 0");
 }
 
 TEST_CASE("read starts a fresh domain: background weights and areas do not carry over") {
@@ -211,15 +211,15 @@ TEST_CASE("read starts a fresh domain: background weights and areas do not carry
   std::ofstream(areas) << "1 2 1 0\n1 0.5 0.5 0.02\n";
   ScriptContext context;
   run_script("read " + domain + "\nread_areas " + areas, "s.txt", context);
-  CHECK(context.options.background_areas.size() == 1);
+  CHECK(context.options.subdomain_area_samples.size() == 1);
   run_script("read " + domain, "s.txt", context);
-  CHECK(context.options.background_areas.empty());
+  CHECK(context.options.subdomain_area_samples.empty());
   run_script("dec 5", "s.txt", context);
   CHECK(context.decomposition->subdomains.size() == 5);  // uniform again: N is the count
 
   run_script("read_areas " + areas + "\nread_weights none\nread_areas none", "s.txt", context);
-  CHECK(context.options.background_areas.empty());
-  CHECK(context.options.background_weights.empty());
+  CHECK(context.options.subdomain_area_samples.empty());
+  CHECK(context.options.weight_samples.empty());
 }
 
 TEST_CASE("dec before read is an error") {
@@ -326,13 +326,13 @@ TEST_CASE("read_weights and read_areas take the first attribute of a .node file"
   ScriptContext context;
   run_script("read_weights " + node + "\nread_areas " + node, "s.txt", context);
   const std::vector<ValuedPoint> want{{{0.1, 0.1}, 5.0}, {{0.5, 0.5}, 2.5}, {{0.9, 0.2}, 0.25}};
-  CHECK(context.options.background_weights == want);
-  CHECK(context.options.background_areas == want);
+  CHECK(context.options.weight_samples == want);
+  CHECK(context.options.subdomain_area_samples == want);
 
   const std::string zero = (tmp.path / "zero.node").string();
   write_text(zero, "2 2 1 0\n1 0 0 1\n2 1 1 0\n");
   run_script("read_weights " + zero, "s.txt", context);  // a zero weight is fine
-  CHECK(context.options.background_weights.size() == 2);
+  CHECK(context.options.weight_samples.size() == 2);
   try {
     run_script("\nread_areas " + zero, "s.txt", context);  // a zero area is not
     FAIL("no error");
@@ -351,12 +351,12 @@ TEST_CASE("setWeightFunction and setAreaFunction compile expressions") {
   ScriptContext context;
   run_script("setWeightFunction 1e-4*(1 + r^12)   # Fig. 13\nsetAreaFunction min(1, exp(-x))", "s.txt", context);
   REQUIRE(context.options.weight_function);
-  REQUIRE(context.options.area_function);
+  REQUIRE(context.options.subdomain_area_function);
   CHECK(context.options.weight_function(3.0, 4.0) == doctest::Approx(1e-4 * (1 + std::pow(5.0, 12))));
-  CHECK(context.options.area_function(1.0, 0.0) == doctest::Approx(std::exp(-1.0)));
+  CHECK(context.options.subdomain_area_function(1.0, 0.0) == doctest::Approx(std::exp(-1.0)));
   run_script("setWeightFunction none", "s.txt", context);
   CHECK_FALSE(context.options.weight_function);
-  CHECK(context.options.area_function);
+  CHECK(context.options.subdomain_area_function);
 }
 
 TEST_CASE("sandbox: file commands disabled, dec bounded") {

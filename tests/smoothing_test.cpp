@@ -21,7 +21,7 @@ madd::test::SmoothingFigures run(const madd::Pslg& domain, std::uint32_t n, int 
   for (const auto& p : v.problems) INFO(p);
   CHECK(v.ok());
   const auto f = madd::test::smoothing_figures(d, domain.points.size());
-  CHECK(f.min_angle >= o.min_angle_deg);
+  CHECK(f.min_angle >= o.separator_angle_deg);
   return f;
 }
 

@@ -15,7 +15,7 @@
 #include "subdivision/subdivision.hpp"
 
 namespace madd::detail {
-void check_new_angles(const Subdivision& sub, double min_angle_deg);  // subdivision/check.cpp
+void check_new_angles(const Subdivision& sub, double separator_angle_deg);  // subdivision/check.cpp
 }
 
 namespace {

@@ -185,7 +185,7 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) 
   m.point_markers.assign(m.points.size(), 0);
   for (std::uint32_t i = 0; i <= k; ++i) m.point_markers[at(i, 0)] = m.point_markers[at(i, k)] = 1;
   for (std::uint32_t j = 0; j <= k; ++j) m.point_markers[at(0, j)] = m.point_markers[at(k, j)] = 1;
-  m.min_angle_deg = 45.0;
+  m.min_triangle_angle_deg = 45.0;
   m.subdomain_first_triangle.push_back(0);
   const std::uint32_t w = k / strips;
   for (std::uint32_t s = 0; s < strips; ++s) {
@@ -232,7 +232,7 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) 
     }
   }
   if (sheared) {
-    m.min_angle_deg = 53.0;
+    m.min_triangle_angle_deg = 53.0;
     for (auto* points : {&m.points, &d.points, &g.domain.points})
       for (Point& p : *points) p.x -= 0.5 * p.y;
   }
@@ -263,16 +263,16 @@ TEST_CASE("verify_mesh: valid meshes of the bundled domains pass") {
 TEST_CASE("verify_mesh: a synthetic grid mesh passes at its exact bounds") {
   const GridMesh g = grid_mesh(40, 4);
   MeshSizeOptions size;
-  size.max_area = 0.5;  // every triangle's area exactly
-  const madd::Verification v = madd::verify_mesh(g.mesh, g.domain, size);  // min_angle_deg 45: every smallest angle exactly
+  size.max_triangle_area = 0.5;  // every triangle's area exactly
+  const madd::Verification v = madd::verify_mesh(g.mesh, g.domain, size);  // min_triangle_angle_deg 45: every smallest angle exactly
   show(v);
   CHECK(v.ok());
-  size.max_area = 0.4999;
+  size.max_triangle_area = 0.4999;
   CHECK(mentions(madd::verify_mesh(g.mesh, g.domain, size), "above the size bound"));
   GridMesh sheared = grid_mesh(40, 4, true);
-  size.max_area = 0.5;
+  size.max_triangle_area = 0.5;
   CHECK(madd::verify_mesh(sheared.mesh, sheared.domain, size).ok());
-  sheared.mesh.min_angle_deg = 53.2;  // above 53.13: every triangle short
+  sheared.mesh.min_triangle_angle_deg = 53.2;  // above 53.13: every triangle short
   CHECK(mentions(madd::verify_mesh(sheared.mesh, sheared.domain, size), "3200 triangles have a smallest angle below"));
 }
 
@@ -524,25 +524,25 @@ TEST_CASE("verify_mesh: the size bound") {
   double largest = 0.0;
   for (std::uint32_t t = 0; t < f.mesh.triangles.size(); ++t) largest = std::max(largest, 0.5 * twice_area(f.mesh, t));
   MeshSizeOptions size;
-  size.max_area = largest;
+  size.max_triangle_area = largest;
   CHECK(madd::verify_mesh(f.mesh, f.domain, size).ok());
-  size.max_area = largest * (1.0 - 1e-9);
+  size.max_triangle_area = largest * (1.0 - 1e-9);
   CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, size), "above the size bound"));
   // The same bound from the function, and from a background sample.
   MeshSizeOptions by_function;
-  by_function.area_function = [&](double, double) { return largest * 0.9; };
+  by_function.triangle_area_function = [&](double, double) { return largest * 0.9; };
   CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, by_function), "above the size bound"));
   MeshSizeOptions by_samples;
-  by_samples.background_areas = {{{0.0, 0.0}, largest * 0.9}};
+  by_samples.triangle_area_samples = {{{0.0, 0.0}, largest * 0.9}};
   CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, by_samples), "above the size bound"));
-  by_samples.background_areas[0].value = largest;
+  by_samples.triangle_area_samples[0].value = largest;
   CHECK(madd::verify_mesh(f.mesh, f.domain, by_samples).ok());
 }
 
 TEST_CASE("verify_mesh: the angle bound against the shortfall count") {
   Mesh m = pipe8().mesh;
   const std::vector<double> angles = smallest_angles(m);
-  m.min_angle_deg = 25.0;
+  m.min_triangle_angle_deg = 25.0;
   const auto below = static_cast<std::size_t>(
       std::count_if(angles.begin(), angles.end(), [](double a) { return a < 25.0 - 1e-9; }));
   REQUIRE(below > 0);
@@ -556,34 +556,34 @@ TEST_CASE("verify_mesh: the angle bound against the shortfall count") {
   m.shortfall.limit = 2;
   CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "but the shortfall counts " + std::to_string(below + 1)));
   // No bound (0) and a claimed shortfall: a mismatch too.
-  m.min_angle_deg = 0.0;
+  m.min_triangle_angle_deg = 0.0;
   CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "0 triangles have a smallest angle below"));
 }
 
 TEST_CASE("area_bound_at: the smallest of the three bounds") {
   MeshSizeOptions size;
   CHECK(madd::area_bound_at(size, {0, 0}) == std::numeric_limits<double>::infinity());
-  size.max_area = 2.0;
+  size.max_triangle_area = 2.0;
   CHECK(madd::area_bound_at(size, {0, 0}) == 2.0);
-  size.area_function = [](double x, double) { return x; };
+  size.triangle_area_function = [](double x, double) { return x; };
   CHECK(madd::area_bound_at(size, {1.5, 0}) == 1.5);
   CHECK(madd::area_bound_at(size, {3.0, 0}) == 2.0);
   CHECK(madd::area_bound_at(size, {-1.0, 0}) == 2.0);  // <= 0: ignored
   CHECK(madd::area_bound_at(size, {0.0, 0}) == 2.0);
-  size.area_function = [](double, double) { return std::numeric_limits<double>::quiet_NaN(); };
+  size.triangle_area_function = [](double, double) { return std::numeric_limits<double>::quiet_NaN(); };
   CHECK(madd::area_bound_at(size, {1.0, 0}) == 2.0);  // NaN: ignored
-  size.area_function = nullptr;
-  size.background_areas = {{{0, 0}, 5.0}, {{10, 0}, 0.5}};
+  size.triangle_area_function = nullptr;
+  size.triangle_area_samples = {{{0, 0}, 5.0}, {{10, 0}, 0.5}};
   CHECK(madd::area_bound_at(size, {1, 0}) == 2.0);
   CHECK(madd::area_bound_at(size, {9, 0}) == 0.5);
-  size.max_area = 0.0;
+  size.max_triangle_area = 0.0;
   CHECK(madd::area_bound_at(size, {1, 0}) == 5.0);
   // Ties: the lowest index.
   CHECK(madd::area_bound_at(size, {5, 3}) == 5.0);
-  size.background_areas = {{{10, 0}, 0.5}, {{0, 0}, 5.0}};
+  size.triangle_area_samples = {{{10, 0}, 0.5}, {{0, 0}, 5.0}};
   CHECK(madd::area_bound_at(size, {5, 3}) == 0.5);
   // The nearest sample decides even when a farther one is smaller.
-  size.area_function = [](double, double) { return 0.25; };
+  size.triangle_area_function = [](double, double) { return 0.25; };
   CHECK(madd::area_bound_at(size, {1, 0}) == 0.25);
 }
 
@@ -618,7 +618,7 @@ TEST_CASE("area_bound_at: the sample grid agrees with a scan") {
     }
   }
   MeshSizeOptions size;
-  size.background_areas = sets[1];
+  size.triangle_area_samples = sets[1];
   const madd::detail::AreaBound bound(size);
   for (int q = 0; q < 1000; ++q) {
     const Point p{unit(rng) * 20.0 - 0.5, unit(rng) * 20.0 - 0.5};
@@ -636,7 +636,7 @@ struct InteriorMesh {
   madd::test::InteriorFixture f = madd::test::interior_fixture();
   MeshSizeOptions size = [] {
     MeshSizeOptions s;
-    s.max_area = 0.02;
+    s.max_triangle_area = 0.02;
     return s;
   }();
   Mesh mesh = [this] {
@@ -750,7 +750,7 @@ TEST_CASE("verify_mesh: time on a large synthetic mesh") {
   const std::uint32_t k = env != nullptr ? static_cast<std::uint32_t>(std::atoi(env)) : 200;
   const GridMesh g = grid_mesh(k, 8, true);
   MeshSizeOptions size;
-  size.max_area = 0.5;
+  size.max_triangle_area = 0.5;
   const auto start = std::chrono::steady_clock::now();
   const madd::Verification v = madd::verify_mesh(g.mesh, g.domain, size);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -233,8 +233,8 @@ std::string report_json(const cli::MeshArgs& args, const World& world, const Fig
   add("subdomains", args.options.decomposition.subdomains);
   add("triangles", static_cast<double>(f.triangles));
   add("vertices", static_cast<double>(f.vertices));
-  add("min_angle_bound_deg", args.options.size.min_angle_deg);
-  add("max_area_bound", args.options.size.max_area);
+  add("min_angle_bound_deg", args.options.size.min_triangle_angle_deg);
+  add("max_area_bound", args.options.size.max_triangle_area);
   add("min_angle_deg", f.min_angle_deg);
   add("below_bound", static_cast<double>(f.below));
   add("below_bound_input_angle", static_cast<double>(f.below_input_angle));
@@ -282,7 +282,7 @@ void print_summary(const World& world, const cli::MeshArgs& args, const Figures&
                "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
                args.input.c_str(), world.size, args.options.decomposition.subdomains,
                static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
-               f.min_angle_deg, static_cast<unsigned long long>(f.below), args.options.size.min_angle_deg, seconds,
+               f.min_angle_deg, static_cast<unsigned long long>(f.below), args.options.size.min_triangle_angle_deg, seconds,
                args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
   std::vector<double> sorted = f.mesh_seconds;
   std::sort(sorted.begin(), sorted.end());
@@ -301,7 +301,7 @@ int run(const World& world, const cli::MeshArgs& args) {
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.sizes_file.empty()) options.size.background_areas = cli::read_background(args.sizes_file, true);
+    if (!args.sizes_file.empty()) options.size.triangle_area_samples = cli::read_background(args.sizes_file, true);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);

@@ -14,7 +14,7 @@
 //   refinement_passes passes per level. Weights stay doubles; gains live in an
 //   indexed binary max-heap with update-key (no integer scaling, so real
 //   areas and lengths are used exactly as given).
-// - Balance: side s may weigh at most target_s * (1 + imbalance_tolerance), with
+// - Balance: side s may weigh at most target_s * (1 + balance_tolerance), with
 //   target_0 = target_fraction * W (METIS's ubfactor semantics). Coarse levels
 //   get one average vertex weight of extra slack.
 // - Connectivity (options.connected on a connected graph): at every level, if
@@ -35,7 +35,7 @@ namespace madd {
 
 struct BisectOptions {
   double target_fraction = 0.5;  // desired share of total vertex weight on side 0
-  double imbalance_tolerance = 0.03;       // allowed relative deviation from the target (0.03 = 3%)
+  double balance_tolerance = 0.03;  // a side may weigh up to (1 + this) x its target (0.03 = 3%)
   std::uint64_t seed = 1;
   bool sorted_heavy_edge = false;  // visit vertices by heaviest edge instead of random order
   int refinement_passes = 8;       // FM passes per level (at most)
@@ -68,7 +68,7 @@ Verification verify_bisection(const Graph& graph, const Bisection& bisection);
 // Part i of k: recursive bisection, side 0 taking floor(k/2) of the parts and
 // floor(k/2)/k of the weight at each step (explicit work stack, no recursion).
 struct PartitionOptions {
-  double imbalance_tolerance = 0.03;  // per bisection level
+  double balance_tolerance = 0.03;  // per bisection level
   std::uint64_t seed = 1;
   bool connected = false;   // --contig
   int refinement_passes = BisectOptions{}.refinement_passes;  // per level of every bisection (--niter)

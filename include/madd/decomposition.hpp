@@ -15,53 +15,57 @@
 namespace madd {
 
 // Table III of the paper, plus the engineering knobs. Angles are in degrees
-// here (the paper's `f` is a fraction of pi: f = min_angle_deg / 180).
+// here (the paper's `f` is a fraction of pi: f = separator_angle_deg / 180).
 struct DecomposeOptions {
-  std::uint32_t subdomains = 2;     // N
-  double min_angle_deg = 60.0;      // Phi0, criterion C1
-  double refine = 3.0;              // r: uniform refinement factor of the boundary
+  std::uint32_t subdomains = 2;       // N
+  double separator_angle_deg = 60.0;  // Phi0, criterion C1: every new angle a separator makes
+  double boundary_refinement = 3.0;   // r: uniform refinement factor of the boundary
   // The paper's adaptive refine level (Table I): with boundary weights
   // (Sec. 5.2 case 1), a boundary edge heavier than the subdomain's mean is
   // divided into up to this many times more pieces, in proportion to its
   // weight ("segments that have greater weight will be refined more", Sec. 6).
   // 1 refines every edge alike. In [1, 64].
-  double adaptive_refine = 4.0;
-  // i, the paper's acceptable imbalance of one split: a split whose balance
-  // quality (mean / largest final subdomain it implies) is below it is refined
-  // further and tried at other boundary samplings before it is taken, and
-  // smoothing never lowers a split below it (docs/algorithm.md, step 6).
-  double min_balance_quality = 0.75;
-  unsigned threads = 0;             // 0 = hardware concurrency
+  double adaptive_boundary_refinement = 4.0;
+  // i, the paper's acceptable imbalance of one split, as a quality: a split's
+  // quality is mean / largest final subdomain it implies (= 1 / its balance,
+  // docs/api.md, "Names"). A split of lower quality is retried at finer and
+  // other boundary samplings before it is taken, and smoothing never lowers a
+  // split below it (docs/algorithm.md, step 6).
+  double min_split_quality = 0.75;
+  unsigned threads = 0;               // 0 = hardware concurrency
   std::uint64_t seed = 1;
-  int max_refinement_rounds = 4;    // extra refinement attempts before giving up on a split
+  // How many more times a split below min_split_quality is retried, each
+  // time at half the boundary spacing, before the best one found is taken.
+  int max_split_retries = 4;
 
   // Smoothing (Sec. 5.1): iterations of step 2 (0 turns smoothing off,
   // step 1's edge-weight coefficients included). See docs/smoothing.md.
   int smoothing_iterations = 1;
   // Balance repair (C3, our extension; docs/algorithm.md, "Rebalancing"):
-  // once N is reached, a subdomain larger than rebalance_above x the mean
-  // area is merged with one or two smaller neighbours and the union split
-  // again, kept when every new part is smaller than it. 0 turns it off;
-  // otherwise >= 1. Uniform decompositions and those graded by background
-  // weights (on the weights); not other graded runs, nor a required area.
-  double rebalance_above = 1.2;
+  // once N is reached, a subdomain whose balance (its area / the mean area)
+  // is above repair_balance_above is merged with one or two smaller
+  // neighbours and the union split again, kept when every new part is smaller
+  // than it. 0 turns it off; otherwise >= 1. Uniform decompositions and those
+  // graded by weight samples (on the weights); not other graded runs, nor a
+  // required area.
+  double repair_balance_above = 1.2;
 
   // Graded decomposition (Sec. 5.2). A subdomain's density weight is
-  // refine * area + gradation * weight, where weight comes from, in order:
-  // the weight function, the background weights, or the boundary weights
+  // boundary_refinement * area + gradation * weight, where weight comes from,
+  // in order: the weight function, the weight samples, or the boundary weights
   // (vertex attribute 1; used when gradation > 0 and neither of the others is set).
-  // With a weight function or background weights, gradation 0 counts as 1;
+  // With a weight function or weight samples, gradation 0 counts as 1;
   // negative or NaN function values count as 0. See docs/grading.md.
   double gradation = 0.0;           // a
   double interpolation = 0.0;       // p: weight of new separator points = p * lerp of endpoint weights
-  std::function<double(double x, double y)> weight_function;  // case 3, evaluated on a grid per subdomain
-  std::function<double(double x, double y)> area_function;    // case 3: required area at (x, y)
-  std::vector<ValuedPoint> background_weights;  // case 2: a subdomain's weight = sum of those inside it
-  std::vector<ValuedPoint> background_areas;    // case 2: required area = min of those inside it
-  // With a required area (area_function or background_areas), subdomains are
-  // split while area / required area exceeds this bound, up to `subdomains`
-  // (largest ratio first; docs/grading.md gives the exact rule).
-  double area_ratio_bound = 1.0;
+  std::function<double(double x, double y)> weight_function;          // case 3, evaluated on a grid per subdomain
+  std::function<double(double x, double y)> subdomain_area_function;  // case 3: required area at (x, y)
+  std::vector<ValuedPoint> weight_samples;          // case 2: a subdomain's weight = sum of those inside it
+  std::vector<ValuedPoint> subdomain_area_samples;  // case 2: required area = min of those inside it
+  // With a required area (subdomain_area_function or subdomain_area_samples),
+  // subdomains are split while area / required area exceeds this ratio, up
+  // to `subdomains` (largest ratio first; docs/grading.md gives the exact rule).
+  double subdomain_area_ratio = 1.0;
 
   // Resource limits (docs/hostile.md): decompose() throws LimitError when a
   // split, or a refinement round of one, starts after this many seconds, or
@@ -90,7 +94,7 @@ inline constexpr unsigned max_threads = 4096;
 // The one check of every option's range and of options that contradict each
 // other (two sources of weights, two of required areas, an interpolation
 // factor with no boundary weights to interpolate). Throws OptionError naming
-// the field ("min_angle_deg") and the rule it breaks. decompose() calls it;
+// the field ("separator_angle_deg") and the rule it breaks. decompose() calls it;
 // front ends call it to refuse bad options before reading any input.
 void check_options(const DecomposeOptions& options);
 // Only the ranges, each field on its own (for a front end that sets options
@@ -100,8 +104,8 @@ void check_option_ranges(const DecomposeOptions& options);
 // (gradation > 0 with no other weight source) needs vertex attributes.
 void check_options(const DecomposeOptions& options, const Pslg& domain);
 
-// True when the options give a required area (area_function or
-// background_areas, Sec. 5.2): `subdomains` is then a maximum, not a target.
+// True when the options give a required area (subdomain_area_function or
+// subdomain_area_samples, Sec. 5.2): `subdomains` is then a maximum, not a target.
 bool has_required_area(const DecomposeOptions& options) noexcept;
 
 // The name of DecomposeOptions before 0.2 (when every options struct got its stage's prefix).
@@ -142,8 +146,8 @@ struct Decomposition {
   std::vector<Point> holes;         // the input's hole points
   std::vector<Region> regions;      // the input's regions (attribute, area constraint), unchanged
   std::vector<Subdomain> subdomains;
-  double min_angle_deg = 60.0;      // the Phi0 it was built with
-  double area_ratio_bound = 0.0;    // with a required area: the bound it was split to; 0 otherwise
+  double separator_angle_deg = 60.0;  // the Phi0 it was built with
+  double subdomain_area_ratio = 0.0;  // with a required area: the ratio it was split to; 0 otherwise
   friend bool operator==(const Decomposition&, const Decomposition&) = default;
 
   bool is_separator(std::uint32_t segment) const { return segment_origin[segment] == no_index; }
@@ -156,14 +160,14 @@ std::vector<std::uint32_t> interior_segment_owners(const Decomposition& decompos
 
 
 // Decomposes a validated domain into options.subdomains connected subdomains
-// (Algorithm 4). Every new angle is >= options.min_angle_deg. Deterministic:
+// (Algorithm 4). Every new angle is >= options.separator_angle_deg. Deterministic:
 // the result is identical for any thread count. Throws DecompositionError
 // naming the subdomain that could not be split; never returns a partial result.
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options = {});
 
 // The subdomain count verify_decomposition should expect of a decomposition
 // asked for `requested` subdomains: `requested`, or, when it was split to a
-// required area (area_ratio_bound > 0, where N is a maximum), the count made
+// required area (subdomain_area_ratio > 0, where N is a maximum), the count made
 // if it lies between 1 and `requested`.
 std::uint32_t expected_subdomain_count(const Decomposition& decomposition, std::uint32_t requested) noexcept;
 
@@ -192,7 +196,7 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
 // forming one chain along each input segment, off it by no more than the
 // rounding of their interpolation, with the right markers, stored areas
 // within rings_area's rounding bound of the exact ones, every new angle
-// >= decomposition.min_angle_deg - 1e-9 deg, interior and hole points strictly
+// >= decomposition.separator_angle_deg - 1e-9 deg, interior and hole points strictly
 // inside. Never throws on a malformed decomposition: it reports problems.
 Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,
                                   std::uint32_t expected_count);

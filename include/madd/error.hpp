@@ -34,7 +34,7 @@ private:
 };
 
 // An option is out of its range or contradicts another one (ErrorKind::bad_option).
-// option() names the field as the options struct spells it ("min_angle_deg"),
+// option() names the field as the options struct spells it ("separator_angle_deg"),
 // so that a front end can say it in its own words ("--min-angle", "f");
 // requirement() is the rule it broke ("must lie strictly between 0 and 90 degrees").
 // what() is "option requirement", or a located message given by a front end.
@@ -112,15 +112,15 @@ private:
 class DecompositionError : public Error {
 public:
   DecompositionError(const std::string& message, std::int64_t subdomain = -1, double area = 0.0,
-                     double min_angle_deg = 0.0);
+                     double separator_angle_deg = 0.0);
   std::int64_t subdomain() const noexcept { return subdomain_; }
   double area() const noexcept { return area_; }
-  double min_angle_deg() const noexcept { return min_angle_deg_; }
+  double separator_angle_deg() const noexcept { return separator_angle_deg_; }
 
 private:
   std::int64_t subdomain_;
   double area_;
-  double min_angle_deg_;
+  double separator_angle_deg_;
 };
 
 // An input file could not be opened or read (ErrorKind::bad_input, like any

@@ -39,7 +39,7 @@ public:
   // Never throws.
   double operator()(double x, double y) const noexcept;
 
-  // A copy wrapped for DecomposeOptions::weight_function / DecomposeOptions::area_function.
+  // A copy wrapped for DecomposeOptions::weight_function / DecomposeOptions::subdomain_area_function.
   std::function<double(double x, double y)> function() const;
 
   // The text it was compiled from.

@@ -42,7 +42,7 @@ struct BoundaryLinks {
 };
 
 struct MedialOptions {
-  double min_angle_deg = 60.0;  // Phi0
+  double separator_angle_deg = 60.0;  // Phi0
   bool smooth = true;           // scale edge weights by the Sec. 5.1 angle coefficient and end bonuses
 };
 
@@ -77,7 +77,7 @@ struct JunctionTest {
 // make angles >= Phi0 with the boundary and with each other. Keeps the largest
 // such set of spokes (all pairwise angles at the centre >= Phi0).
 JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<const BoundaryLinks> links,
-                           double min_angle_deg);
+                           double separator_angle_deg);
 
 // One edge of G_D and the partial-separator segment it stands for: a triangle
 // edge or a spoke from a junction circumcentre, as indices into
@@ -87,7 +87,7 @@ struct MedialEdge {
   std::uint32_t right = 0;
   std::uint32_t from = 0;
   std::uint32_t to = 0;
-  double min_angle_deg = 180.0;  // the smallest angle it makes (boundary, other spokes)
+  double smallest_angle_deg = 180.0;  // the smallest angle it makes (boundary, other spokes)
   bool acceptable = false;       // every angle it makes is >= Phi0
 };
 

@@ -20,22 +20,26 @@
 
 namespace madd {
 
-// The size bounds and the angle bound of a mesh. A triangle is too large
-// when its area exceeds the smallest of max_area, area_function at its
-// centroid and the background area there (each when set), and the max_area
-// of the input region it lies in (Region::max_area > 0; Triangle's -a with
-// regional constraints).
+// The size bounds and the angle bound of a mesh's triangles (not the
+// decomposition's subdomains: DecomposeOptions has their own). A triangle is
+// too large when its area exceeds the smallest of max_triangle_area,
+// triangle_area_function at its centroid and the nearest triangle area
+// sample (each when set), and the max_area of the input region it lies in
+// (Region::max_area > 0; Triangle's -a with regional constraints).
 struct MeshSizeOptions {
-  double min_angle_deg = 30.0;  // -q: every triangle's smallest angle at least this, away from small input angles
-  double max_area = 0.0;        // -a: 0 = no bound
+  double min_triangle_angle_deg = 30.0;  // -q: every triangle's smallest angle at least this, away from small input angles
+  double max_triangle_area = 0.0;       // -a: 0 = no bound
   // --size-fn: the largest allowed triangle area at (x, y); values <= 0 or
   // NaN are ignored there (no bound).
-  std::function<double(double x, double y)> area_function;
-  // A background size file: samples of the largest allowed area; the bound at
-  // a point is the value of the nearest sample (ties: the lowest index).
-  std::vector<ValuedPoint> background_areas;
+  std::function<double(double x, double y)> triangle_area_function;
+  // --sizes, a background size file: samples of the largest allowed triangle
+  // area; the bound at a point is the value of the nearest sample (ties: the
+  // lowest index).
+  std::vector<ValuedPoint> triangle_area_samples;
 
-  bool has_size_bound() const noexcept { return max_area > 0.0 || area_function || !background_areas.empty(); }
+  bool has_size_bound() const noexcept {
+    return max_triangle_area > 0.0 || triangle_area_function || !triangle_area_samples.empty();
+  }
 };
 
 struct MeshOptions {
@@ -47,7 +51,7 @@ struct MeshOptions {
   // decomposition): a thread's time is its subdomains' triangles.
   DecomposeOptions decomposition = [] {
     DecomposeOptions d;
-    d.rebalance_above = 1.1;
+    d.repair_balance_above = 1.1;
     return d;
   }();
   MeshSizeOptions size;
@@ -120,7 +124,7 @@ struct Mesh {
   // piece, then along it.
   std::vector<MeshSegment> segments;
   MeshShortfall shortfall;
-  double min_angle_deg = 30.0;  // the bound it was refined to
+  double min_triangle_angle_deg = 30.0;  // the bound it was refined to
 
   std::size_t triangle_count() const noexcept { return triangles.size(); }
   std::uint32_t subdomain_count() const noexcept {
@@ -138,8 +142,8 @@ struct MeshReport {
   std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance by work")
 };
 
-// The ranges of the mesh options (min_angle_deg in [0, 60), max_area finite
-// and >= 0, background samples finite with areas > 0); throws OptionError
+// The ranges of the mesh options (min_triangle_angle_deg in [0, 60),
+// max_triangle_area finite and >= 0, area samples finite with areas > 0); throws OptionError
 // naming the field. mesh() calls it; the decomposition options are checked by
 // decompose().
 void check_options(const MeshOptions& options);

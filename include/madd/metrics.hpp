@@ -50,12 +50,12 @@ struct Metrics {
   // Shortest new segment (separator, or piece of a split boundary segment) / sqrt(mean area).
   double shortest_new_segment_norm = 0.0;
 
-  // Split to a required area (Sec. 5.2; Decomposition::area_ratio_bound > 0),
+  // Split to a required area (Sec. 5.2; Decomposition::subdomain_area_ratio > 0),
   // else NaN and 0: the largest area / required area over the subdomains
   // (unconstrained ones count 0), the bound, and how many subdomains are
   // still above it (> 0 when N, the maximum count, was reached first).
   double max_area_over_required = 0.0;
-  double area_ratio_bound = 0.0;
+  double subdomain_area_ratio = 0.0;
   std::uint32_t subdomains_over_area_bound = 0;
 
   std::vector<PhaseTime> times;

@@ -23,7 +23,7 @@ namespace madd {
 namespace detail {
 
 // New-angle check of the committed geometry (C1), independent of the split logic.
-void check_new_angles(const Subdivision& sub, double min_angle_deg);
+void check_new_angles(const Subdivision& sub, double separator_angle_deg);
 
 } // namespace detail
 
@@ -44,9 +44,9 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
   d.segment_origin = sub.origin;
   d.holes = domain.holes;
   d.regions = domain.regions;
-  d.min_angle_deg = options.min_angle_deg;
+  d.separator_angle_deg = options.separator_angle_deg;
   const bool required_area = has_required_area(options);
-  if (required_area) d.area_ratio_bound = options.area_ratio_bound;
+  if (required_area) d.subdomain_area_ratio = options.subdomain_area_ratio;
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
     Subdomain s;
     s.rings = sub.faces[f].rings;
@@ -66,7 +66,7 @@ Decomposition to_decomposition(const Subdivision& sub, const Pslg& domain, const
 }
 
 // Area-driven grading (Sec. 5.2): each round plans one split for every face
-// whose area exceeds area_ratio_bound x its required area (the smallest
+// whose area exceeds subdomain_area_ratio x its required area (the smallest
 // required area inside it; none inside: unconstrained), the largest ratios
 // first (ties: lower face id), while the total stays <= options.subdomains.
 void plan_area_round(Subdivision& sub, const detail::GradingState& grading, const DecomposeOptions& options,
@@ -77,7 +77,7 @@ void plan_area_round(Subdivision& sub, const detail::GradingState& grading, cons
     const double required = grading.required(sub, f);
     if (!std::isfinite(required)) continue;
     const double ratio = sub.face_area(f) / required;
-    if (ratio > options.area_ratio_bound) over.emplace_back(-ratio, f);
+    if (ratio > options.subdomain_area_ratio) over.emplace_back(-ratio, f);
   }
   std::sort(over.begin(), over.end());
   const std::size_t budget = options.subdomains > sub.faces.size() ? options.subdomains - sub.faces.size() : 0;
@@ -91,13 +91,13 @@ void report_progress(const DecomposeOptions& options, const Subdivision& sub) {
 
 detail::SplitOptions split_options_of(const DecomposeOptions& options) {
   detail::SplitOptions split_options;
-  split_options.min_angle_deg = options.min_angle_deg;
-  split_options.refine = options.refine;
-  split_options.min_balance_quality = options.min_balance_quality;
-  split_options.max_refinement_rounds = std::max(0, options.max_refinement_rounds);
+  split_options.separator_angle_deg = options.separator_angle_deg;
+  split_options.boundary_refinement = options.boundary_refinement;
+  split_options.min_split_quality = options.min_split_quality;
+  split_options.max_split_retries = std::max(0, options.max_split_retries);
   split_options.seed = options.seed;
   split_options.smoothing_iterations = std::max(0, options.smoothing_iterations);
-  split_options.adaptive_refine = options.adaptive_refine;
+  split_options.adaptive_boundary_refinement = options.adaptive_boundary_refinement;
   return split_options;
 }
 
@@ -158,18 +158,18 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
     grading.end_round(sub);
   }
   double rebalance_seconds = 0.0;
-  if (options.rebalance_above > 0.0 && !area_driven && !grading.mode().graded()) {
+  if (options.repair_balance_above > 0.0 && !area_driven && !grading.mode().graded()) {
     detail::Stopwatch clock;
-    detail::rebalance(sub, split_options, guard, {.target = options.rebalance_above});
+    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above});
     rebalance_seconds = clock.lap();
-  } else if (options.rebalance_above > 0.0 && grading.can_rebalance()) {
+  } else if (options.repair_balance_above > 0.0 && grading.can_rebalance()) {
     // Background weights (madd mesh balances expected triangles this way):
     // the same repair, on the graded weights.
     detail::Stopwatch clock;
     const detail::FaceMeasure measure{
         [&](const detail::Subdivision& s, std::uint32_t f) { return grading.weight_from_scratch(s, f); },
         [&](const detail::Subdivision& s, std::uint32_t f) { return grading.density_from_scratch(s, f); }};
-    detail::rebalance(sub, split_options, guard, {.target = options.rebalance_above}, measure);
+    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above}, measure);
     grading.reassign(sub);
     rebalance_seconds = clock.lap();
   }
@@ -180,7 +180,7 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
   phases.push_back({"insert", insert_seconds});
   phases.push_back({"rebalance", rebalance_seconds});
   if (sub.faces.size() == 1) sub.faces[0].interior = detail::largest_triangle_centroid(domain);
-  detail::check_new_angles(sub, options.min_angle_deg);
+  detail::check_new_angles(sub, options.separator_angle_deg);
   return to_decomposition(sub, domain, options, grading);
 }
 

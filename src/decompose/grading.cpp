@@ -17,13 +17,13 @@ namespace madd::detail {
 
 GradingMode grading_mode(const DecomposeOptions& options) {
   GradingMode m;
-  m.area_driven = static_cast<bool>(options.area_function) || !options.background_areas.empty();
+  m.area_driven = static_cast<bool>(options.subdomain_area_function) || !options.subdomain_area_samples.empty();
   m.a = options.gradation;
   m.p = options.interpolation;
-  m.r = options.refine;
+  m.r = options.boundary_refinement;
   if (options.weight_function) {
     m.weights = WeightSource::function;
-  } else if (!options.background_weights.empty()) {
+  } else if (!options.weight_samples.empty()) {
     m.weights = WeightSource::background;
   } else if (options.gradation > 0.0) {
     m.weights = WeightSource::boundary;
@@ -44,12 +44,12 @@ namespace {
 // A required area is a size: 0, a negative value or NaN has no meaning, and
 // would either stop all splitting or never stop it, so it is refused like a
 // background area of that value (check_options).
-double checked_required_area(const std::function<double(double, double)>& area_function, Point q) {
-  const double v = area_function(q.x, q.y);
+double checked_required_area(const std::function<double(double, double)>& subdomain_area_function, Point q) {
+  const double v = subdomain_area_function(q.x, q.y);
   if (std::isfinite(v) && v > 0.0) return v;
   char where[96];
   std::snprintf(where, sizeof where, "(%.9g, %.9g) it is %.9g", q.x, q.y, v);
-  throw OptionError("area_function", std::string("must be finite and > 0 everywhere in the domain; at ") + where);
+  throw OptionError("subdomain_area_function", std::string("must be finite and > 0 everywhere in the domain; at ") + where);
 }
 } // namespace
 
@@ -63,7 +63,7 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const D
     // A density cannot be negative: negative and NaN values count as 0.
     const double f = options.weight_function ? options.weight_function(q.x, q.y) : 0.0;
     if (options.weight_function) out.weights.push_back({q, f > 0.0 ? f * cell_area : 0.0});
-    if (options.area_function) out.areas.push_back({q, checked_required_area(options.area_function, q)});
+    if (options.subdomain_area_function) out.areas.push_back({q, checked_required_area(options.subdomain_area_function, q)});
   };
   // Cell centres, so that the weight is a midpoint-rule integral of f over the face.
   for (int i = 0; i < grid_cells; ++i) {
@@ -80,8 +80,8 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const D
 FaceSamples background_samples(const DecomposeOptions& options, const std::vector<std::uint32_t>& weights_inside,
                                const std::vector<std::uint32_t>& areas_inside) {
   FaceSamples out;
-  for (std::uint32_t i : weights_inside) out.weights.push_back(options.background_weights[i]);
-  for (std::uint32_t i : areas_inside) out.areas.push_back(options.background_areas[i]);
+  for (std::uint32_t i : weights_inside) out.weights.push_back(options.weight_samples[i]);
+  for (std::uint32_t i : areas_inside) out.areas.push_back(options.subdomain_area_samples[i]);
   return out;
 }
 

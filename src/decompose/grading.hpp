@@ -16,7 +16,7 @@ enum class WeightSource : std::uint8_t { none, boundary, background, function };
 // The grading a run uses, decided once from the options.
 struct GradingMode {
   WeightSource weights = WeightSource::none;
-  bool area_driven = false;  // area_function or background_areas set
+  bool area_driven = false;  // subdomain_area_function or subdomain_area_samples set
   double r = 1.0;            // density weight = r * area + a * weight
   double a = 0.0;
   double p = 0.0;            // interpolation factor of new separator points (case 1)

@@ -20,18 +20,18 @@ GradingState::GradingState(const DecomposeOptions& options, const Pslg& domain)
   weights_inside_.resize(1);
   areas_inside_.resize(1);
   if (mode_.weights == WeightSource::background) {
-    weights_inside_[0].resize(options.background_weights.size());
+    weights_inside_[0].resize(options.weight_samples.size());
     std::iota(weights_inside_[0].begin(), weights_inside_[0].end(), 0u);
   }
-  if (!options.area_function && !options.background_areas.empty()) {
-    areas_inside_[0].resize(options.background_areas.size());
+  if (!options.subdomain_area_function && !options.subdomain_area_samples.empty()) {
+    areas_inside_[0].resize(options.subdomain_area_samples.size());
     std::iota(areas_inside_[0].begin(), areas_inside_[0].end(), 0u);
   }
 }
 
 FaceSamples GradingState::samples(const Subdivision& sub, std::uint32_t face) const {
   FaceSamples out;
-  if (options_.weight_function || options_.area_function) out = function_samples(sub, face, options_);
+  if (options_.weight_function || options_.subdomain_area_function) out = function_samples(sub, face, options_);
   FaceSamples bg = background_samples(options_, weights_inside_[face], areas_inside_[face]);
   // The first face holds every point, some perhaps outside the domain: filter them.
   const bool filter = sub.faces.size() == 1;
@@ -40,7 +40,7 @@ FaceSamples GradingState::samples(const Subdivision& sub, std::uint32_t face) co
       if (!filter || point_in_face(sub, face, p.at)) out.weights.push_back(p);
     }
   }
-  if (!options_.area_function) {
+  if (!options_.subdomain_area_function) {
     for (const ValuedPoint& p : bg.areas) {
       if (!filter || point_in_face(sub, face, p.at)) out.areas.push_back(p);
     }
@@ -83,7 +83,7 @@ void GradingState::after_commit(const Subdivision& sub, std::uint32_t face, std:
   areas_inside_.resize(sub.faces.size());
   // Each point goes to exactly one side: the face it is in, else the other.
   for (auto* lists : {&weights_inside_, &areas_inside_}) {
-    const auto& pts = lists == &weights_inside_ ? options_.background_weights : options_.background_areas;
+    const auto& pts = lists == &weights_inside_ ? options_.weight_samples : options_.subdomain_area_samples;
     std::vector<std::uint32_t> keep, moved;
     const bool first = sub.faces.size() == 2;
     for (std::uint32_t i : (*lists)[face]) {
@@ -109,7 +109,7 @@ std::vector<ValuedPoint> GradingState::weights_in(const Subdivision& sub, std::u
   Box box;
   for (const std::uint32_t v : sub.faces[face].rings[0]) box.add(sub.points[v]);
   std::vector<ValuedPoint> out;
-  for (const ValuedPoint& p : options_.background_weights) {
+  for (const ValuedPoint& p : options_.weight_samples) {
     if (p.at.x < box.lo.x || p.at.x > box.hi.x || p.at.y < box.lo.y || p.at.y > box.hi.y) continue;
     if (point_in_face(sub, face, p.at)) out.push_back(p);
   }
@@ -137,7 +137,7 @@ void GradingState::reassign(const Subdivision& sub) {
     for (const std::uint32_t v : sub.faces[f].rings[0]) boxes[f].add(sub.points[v]);
   }
   for (auto* lists : {&weights_inside_, &areas_inside_}) {
-    const auto& pts = lists == &weights_inside_ ? options_.background_weights : options_.background_areas;
+    const auto& pts = lists == &weights_inside_ ? options_.weight_samples : options_.subdomain_area_samples;
     if (pts.empty()) continue;
     lists->assign(sub.faces.size(), {});
     for (std::uint32_t i = 0; i < pts.size(); ++i) {

@@ -158,7 +158,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
   // One refinement round for the repair splits: on every run of the sweeps
   // (docs/performance.md) the result is the same as with four, in less time.
   SplitOptions split_options = split_options_in;
-  split_options.max_refinement_rounds = std::min(split_options.max_refinement_rounds, 1);
+  split_options.max_split_retries = std::min(split_options.max_split_retries, 1);
   const auto n = static_cast<std::uint32_t>(sub.faces.size());
   if (n < 2) return 0;
   // `area` holds what is balanced: the areas, or the measure's weights.

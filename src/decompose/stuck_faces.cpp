@@ -14,7 +14,7 @@ void StuckFaces::mark(Subdivision& sub, std::uint32_t face, const DecompositionE
   last_error_ = error.what();
   last_face_ = error.subdomain();
   last_area_ = error.area();
-  min_angle_deg_ = error.min_angle_deg();
+  separator_angle_deg_ = error.separator_angle_deg();
 }
 
 void StuckFaces::release_changed(const Subdivision& sub) {
@@ -49,8 +49,8 @@ void StuckFaces::replan(Subdivision& sub, const GradingState& grading, std::uint
     std::snprintf(message, sizeof message,
                   "no subdomain can be split with every new angle >= %g degrees: reached %u of %u subdomains "
                   "(%zu cannot be split; the last: %s)",
-                  min_angle_deg_, faces, target, count(), last_error_.c_str());
-    throw DecompositionError(message, last_face_, last_area_, min_angle_deg_);
+                  separator_angle_deg_, faces, target, count(), last_error_.c_str());
+    throw DecompositionError(message, last_face_, last_area_, separator_angle_deg_);
   }
   for (; left > 0; --left) {
     const auto f = static_cast<std::uint32_t>(-open.top().second);

@@ -39,7 +39,7 @@ private:
   bool changed_ = false;               // a face failed or was released since the last replan
   std::string last_error_;
   std::int64_t last_face_ = -1;
-  double last_area_ = 0.0, min_angle_deg_ = 0.0;
+  double last_area_ = 0.0, separator_angle_deg_ = 0.0;
 };
 
 } // namespace madd::detail

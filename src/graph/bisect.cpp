@@ -44,8 +44,8 @@ void check_input(const Graph& g, const BisectOptions& o) {
 void check_options(const BisectOptions& o) {
   if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
     throw OptionError("target_fraction", "must lie strictly between 0 and 1");
-  if (!(std::isfinite(o.imbalance_tolerance) && o.imbalance_tolerance >= 0.0))
-    throw OptionError("imbalance_tolerance", "must be a finite number >= 0");
+  if (!(std::isfinite(o.balance_tolerance) && o.balance_tolerance >= 0.0))
+    throw OptionError("balance_tolerance", "must be a finite number >= 0");
   if (o.refinement_passes < 0) throw OptionError("refinement_passes", "must be >= 0");
 }
 
@@ -82,7 +82,7 @@ std::vector<std::uint8_t> bisect_work_graph(const Graph& g, const BisectOptions&
   std::vector<std::uint8_t> side = detail::multilevel_bisect(g, o, rng, connect);
   if (connect && !detail::sides_connected(g, side)) {  // a safety net: refine_level already repaired
     const double total = std::accumulate(g.vertex_weights.begin(), g.vertex_weights.end(), 0.0);
-    detail::repair_connectivity(g, side, detail::make_balance(total, o.target_fraction, o.imbalance_tolerance));
+    detail::repair_connectivity(g, side, detail::make_balance(total, o.target_fraction, o.balance_tolerance));
   }
   return side;
 }

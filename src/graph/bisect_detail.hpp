@@ -36,6 +36,6 @@ void refine_level(const Graph& graph, std::vector<std::uint8_t>& side, const Bal
 void repair_connectivity(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance);
 
 // The balance constraint for a graph of total weight `total`.
-Balance make_balance(double total, double target_fraction, double imbalance_tolerance, double slack = 0.0);
+Balance make_balance(double total, double target_fraction, double balance_tolerance, double slack = 0.0);
 
 } // namespace madd::detail

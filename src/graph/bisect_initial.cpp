@@ -8,11 +8,11 @@
 
 namespace madd::detail {
 
-Balance make_balance(double total, double target_fraction, double imbalance_tolerance, double slack) {
+Balance make_balance(double total, double target_fraction, double balance_tolerance, double slack) {
   Balance b;
   b.target[0] = total * target_fraction;
   b.target[1] = total - b.target[0];
-  for (int s = 0; s < 2; ++s) b.max[s] = b.target[s] * (1.0 + imbalance_tolerance) + slack;
+  for (int s = 0; s < 2; ++s) b.max[s] = b.target[s] * (1.0 + balance_tolerance) + slack;
   return b;
 }
 
@@ -112,7 +112,7 @@ std::vector<std::uint8_t> multilevel_bisect(const Graph& graph, const BisectOpti
   auto level_balance = [&](std::size_t level) {
     const Graph& g = level == 0 ? graph : h.graphs[level - 1];
     const double slack = level == 0 ? 0.0 : total / static_cast<double>(std::max<std::size_t>(g.vertex_count(), 1));
-    return make_balance(total, options.target_fraction, options.imbalance_tolerance, slack);
+    return make_balance(total, options.target_fraction, options.balance_tolerance, slack);
   };
   const std::size_t depth = h.depth();
   const Graph& coarsest = depth == 0 ? graph : h.graphs.back();

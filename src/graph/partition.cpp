@@ -16,8 +16,8 @@ struct Task {
 } // namespace
 
 void check_options(const PartitionOptions& options) {
-  if (!(std::isfinite(options.imbalance_tolerance) && options.imbalance_tolerance >= 0.0))
-    throw OptionError("imbalance_tolerance", "must be a finite number >= 0");
+  if (!(std::isfinite(options.balance_tolerance) && options.balance_tolerance >= 0.0))
+    throw OptionError("balance_tolerance", "must be a finite number >= 0");
 }
 
 Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions& options) {
@@ -44,7 +44,7 @@ Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions&
     const std::uint32_t left = task.parts / 2;
     BisectOptions bo;
     bo.target_fraction = static_cast<double>(left) / static_cast<double>(task.parts);
-    bo.imbalance_tolerance = options.imbalance_tolerance;
+    bo.balance_tolerance = options.balance_tolerance;
     bo.seed = options.seed + 0x9e3779b97f4a7c15ull * task_index++;
     bo.connected = options.connected;
     bo.refinement_passes = options.refinement_passes;

@@ -60,7 +60,7 @@ InvalidInputError::InvalidInputError(InputProblem problem, const std::string& me
       points_(std::move(points)), path_(std::move(path)), line_(line), column_(column) {}
 
 DecompositionError::DecompositionError(const std::string& message, std::int64_t subdomain, double area,
-                                       double min_angle_deg)
-    : Error(ErrorKind::decomposition, message), subdomain_(subdomain), area_(area), min_angle_deg_(min_angle_deg) {}
+                                       double separator_angle_deg)
+    : Error(ErrorKind::decomposition, message), subdomain_(subdomain), area_(area), separator_angle_deg_(separator_angle_deg) {}
 
 } // namespace madd

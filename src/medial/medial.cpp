@@ -20,9 +20,9 @@ namespace {
 constexpr double angle_margin_deg = 1e-9;
 
 // Sec. 5.1: f0 = 1 / (phi - Phi0 + 1) with angles in radians, phi capped at pi/2.
-double angle_coefficient(double angle_deg, double min_angle_deg) {
+double angle_coefficient(double angle_deg, double separator_angle_deg) {
   const double phi = radians(std::min(angle_deg, 90.0));
-  return 1.0 / (phi - radians(min_angle_deg) + 1.0);
+  return 1.0 / (phi - radians(separator_angle_deg) + 1.0);
 }
 
 double end_angle(const Triangulation& tri, std::span<const BoundaryLinks> links, std::uint32_t at, Point towards) {
@@ -61,7 +61,7 @@ double boundary_angle(Point at, Point prev, Point next, Point towards) {
 }
 
 JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<const BoundaryLinks> links,
-                           double min_angle_deg) {
+                           double separator_angle_deg) {
   JunctionTest out;
   const auto& v = tri.triangles[t];
   const Point p[3] = {tri.points[v[0]], tri.points[v[1]], tri.points[v[2]]};
@@ -78,7 +78,7 @@ JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<
   }
   if (interior < 2) return out;
   // Property 3: at least two spokes good with the boundary and with each other.
-  const double bound = min_angle_deg + angle_margin_deg;
+  const double bound = separator_angle_deg + angle_margin_deg;
   double b[3], central[3][3];
   for (int i = 0; i < 3; ++i) b[i] = end_angle(tri, links, v[i], c);
   for (int i = 0; i < 3; ++i) {
@@ -123,13 +123,13 @@ std::array<Point, 3> vertex_triangle_corners(const MedialGraph& graph, const Tri
 namespace {
 
 void add_vertices(MedialGraph& g, const Triangulation& tri, std::span<const BoundaryLinks> links,
-                  double min_angle_deg, std::vector<double>& weights, std::vector<JunctionTest>& tests) {
+                  double separator_angle_deg, std::vector<double>& weights, std::vector<JunctionTest>& tests) {
   const auto count = static_cast<std::uint32_t>(tri.triangle_count());
   g.centre.assign(count, no_index);
   g.first_vertex.assign(count, 0);
   tests.resize(count);
   for (std::uint32_t t = 0; t < count; ++t) {
-    tests[t] = test_junction(tri, t, links, min_angle_deg);
+    tests[t] = test_junction(tri, t, links, separator_angle_deg);
     g.first_vertex[t] = static_cast<std::uint32_t>(weights.size());
     const auto& v = tri.triangles[t];
     if (!tests[t].junction) {
@@ -152,7 +152,7 @@ void add_vertices(MedialGraph& g, const Triangulation& tri, std::span<const Boun
 std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::span<const BoundaryLinks> links,
                               const MedialOptions& options, const std::vector<JunctionTest>& tests) {
   std::vector<double> lengths;
-  const double bound = options.min_angle_deg + angle_margin_deg;
+  const double bound = options.separator_angle_deg + angle_margin_deg;
   auto gd_vertex = [&](std::uint32_t t, int edge) {
     return g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>(edge) : 0u);
   };
@@ -172,8 +172,8 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
       e.right = gd_vertex(n, j);
       const double a = end_angle(tri, links, e.from, tri.points[e.to]);
       const double b = end_angle(tri, links, e.to, tri.points[e.from]);
-      e.min_angle_deg = std::min(a, b);
-      e.acceptable = tri.segment_of[t][i] == no_index && e.min_angle_deg >= bound;
+      e.smallest_angle_deg = std::min(a, b);
+      e.acceptable = tri.segment_of[t][i] == no_index && e.smallest_angle_deg >= bound;
       g.edges.push_back(e);
       double w = distance(tri.points[e.from], tri.points[e.to]);
       if (options.smooth) w *= static_cast<double>(links[e.from].bonus) * static_cast<double>(links[e.to].bonus);
@@ -186,7 +186,7 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
       e.to = v[k];
       e.left = g.first_vertex[t] + static_cast<std::uint32_t>((k + 2) % 3);
       e.right = g.first_vertex[t] + static_cast<std::uint32_t>((k + 1) % 3);
-      e.min_angle_deg = tests[t].spoke_angle[k];
+      e.smallest_angle_deg = tests[t].spoke_angle[k];
       e.acceptable = tests[t].spoke_ok[k];
       g.edges.push_back(e);
       double w = distance(g.points[e.from], tri.points[e.to]);
@@ -196,7 +196,7 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
   }
   if (options.smooth) {
     for (std::size_t k = 0; k < g.edges.size(); ++k) {
-      if (g.edges[k].acceptable) lengths[k] *= angle_coefficient(g.edges[k].min_angle_deg, options.min_angle_deg);
+      if (g.edges[k].acceptable) lengths[k] *= angle_coefficient(g.edges[k].smallest_angle_deg, options.separator_angle_deg);
     }
   }
   return lengths;
@@ -258,7 +258,7 @@ MedialGraph build_medial_graph(const Triangulation& tri, std::span<const Boundar
   g.points = tri.points;
   std::vector<double> weights;
   std::vector<JunctionTest> tests;
-  add_vertices(g, tri, links, options.min_angle_deg, weights, tests);
+  add_vertices(g, tri, links, options.separator_angle_deg, weights, tests);
   const std::vector<double> lengths = add_edges(g, tri, links, options, tests);
   std::vector<WeightedEdge> gd_edges;
   gd_edges.reserve(g.edges.size());

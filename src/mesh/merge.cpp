@@ -118,12 +118,12 @@ void link_across_separators(Mesh& m) {
 
 } // namespace
 
-Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_angle_deg,
+Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
            const std::vector<bool>* kept) {
   const auto is_kept = [kept](std::uint32_t k) { return kept == nullptr || (*kept)[k]; };
   Mesh m;
   m.decomposition = d;
-  m.min_angle_deg = min_angle_deg;
+  m.min_triangle_angle_deg = min_triangle_angle_deg;
   m.points = d.points;
   m.point_markers.assign(d.points.size(), 0);
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {

@@ -28,12 +28,12 @@ namespace madd {
 
 void check_options(const MeshOptions& options) {
   const MeshSizeOptions& s = options.size;
-  if (!(s.min_angle_deg >= 0 && s.min_angle_deg < 60))
-    throw OptionError("min_angle_deg", "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
-  if (!(s.max_area >= 0) || !std::isfinite(s.max_area)) throw OptionError("max_area", "must be finite and >= 0");
-  for (const ValuedPoint& v : s.background_areas) {
+  if (!(s.min_triangle_angle_deg >= 0 && s.min_triangle_angle_deg < 60))
+    throw OptionError("min_triangle_angle_deg", "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
+  if (!(s.max_triangle_area >= 0) || !std::isfinite(s.max_triangle_area)) throw OptionError("max_triangle_area", "must be finite and >= 0");
+  for (const ValuedPoint& v : s.triangle_area_samples) {
     if (!(v.value > 0) || !std::isfinite(v.value) || !std::isfinite(v.at.x) || !std::isfinite(v.at.y))
-      throw OptionError("background_areas", "every sample must have finite coordinates and a finite area > 0");
+      throw OptionError("triangle_area_samples", "every sample must have finite coordinates and a finite area > 0");
   }
 }
 
@@ -56,7 +56,7 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
   std::vector<std::uint32_t> order = todo;
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return work[a] > work[b]; });
   detail::RefineSettings settings;
-  settings.min_angle_deg = options.size.min_angle_deg;
+  settings.min_triangle_angle_deg = options.size.min_triangle_angle_deg;
   settings.size = field.bounded() ? &field : nullptr;
   settings.off_centres = options.off_centres;
   settings.guard = &guard;
@@ -167,7 +167,7 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   std::vector<std::vector<Region>> regions;
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces, regions);
   report.phases.push_back({"refine", clock.lap()});
-  Mesh m = detail::merge(d, pieces, options.size.min_angle_deg);
+  Mesh m = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
   const Verification v = options.verify ? verify_mesh(m, domain, options.size) : Verification{};
   report.phases.push_back({"verify", clock.lap()});

@@ -92,7 +92,7 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const st
   std::iota(dk.segment_origin.begin(), dk.segment_origin.end(), 0u);
   dk.holes = out.domain.holes;
   dk.regions = out.domain.regions;
-  dk.min_angle_deg = d.min_angle_deg;
+  dk.separator_angle_deg = d.separator_angle_deg;
   Subdomain s = d.subdomains[k];
   std::uint32_t next = 0;
   for (std::size_t r = 0; r < s.rings.size(); ++r)
@@ -115,7 +115,7 @@ void verify_subdomain(const Decomposition& d, std::uint32_t k, const std::vector
                       const detail::SubdomainMesh& piece, const MeshOptions& options) {
   const SubdomainAlone alone = subdomain_alone(d, k, regions);
   std::vector<detail::SubdomainMesh> one{piece};
-  const Mesh m = detail::merge(alone.decomposition, one, options.size.min_angle_deg);
+  const Mesh m = detail::merge(alone.decomposition, one, options.size.min_triangle_angle_deg);
   const Verification v = verify_mesh(m, alone.domain, options.size);
   if (v.ok()) return;
   Verification named;
@@ -231,7 +231,7 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
   const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
   part.total_points = d.points.size() + steiner_total;
 
-  part.mesh = detail::merge(d, pieces, options.size.min_angle_deg, &mine);
+  part.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine);
   const std::size_t p = d.points.size();
   std::vector<std::uint64_t> ids(part.mesh.points.size());
   std::iota(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(p), std::uint64_t{0});

@@ -68,7 +68,7 @@ public:
   // region's; +infinity for none).
   Refiner(RefinementMesh& mesh, const RefineSettings& settings, const std::vector<double>& label_area)
       : m_(mesh), settings_(settings), label_area_(label_area) {
-    const double theta = settings.min_angle_deg * std::numbers::pi / 180.0;
+    const double theta = settings.min_triangle_angle_deg * std::numbers::pi / 180.0;
     beta_ = theta > 0 ? 1.0 / (2.0 * std::sin(theta)) : std::numeric_limits<double>::infinity();
     find_sharp_corners();
   }
@@ -485,7 +485,7 @@ MeshShortfall Refiner::shortfall(std::vector<std::uint32_t>& blocking) const {
     if (!m_.alive(t)) continue;
     // Counted with verify_mesh's own measure, so the two always agree.
     if (smallest_angle_deg(m_.point(m_.corner(t, 0)), m_.point(m_.corner(t, 1)), m_.point(m_.corner(t, 2))) >=
-        settings_.min_angle_deg - mesh_angle_slack_deg)
+        settings_.min_triangle_angle_deg - mesh_angle_slack_deg)
       continue;
     switch (t < reason_.size() ? reason_[t] : Reason::none) {
       case Reason::input_angle: ++f.input_angle; break;

@@ -18,7 +18,7 @@
 namespace madd::detail {
 
 struct RefineSettings {
-  double min_angle_deg = 30.0;
+  double min_triangle_angle_deg = 30.0;
   const SizeField* size = nullptr;  // the area bound (nullptr = none)
   bool off_centres = true;
   std::size_t max_steiner_points = 0;  // 0 = no budget
@@ -53,7 +53,7 @@ struct SubdomainMesh {
 // vertices inside). Segment i may be split when splittable[i]. pslg.regions
 // are the subdomain's regions (Triangle's -A and -a: each triangle gets the
 // attribute of the region whose face holds it, and no more than its
-// max_area when > 0). Deterministic.
+// max_triangle_area when > 0). Deterministic.
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings);
 
 } // namespace madd::detail

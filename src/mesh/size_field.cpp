@@ -13,7 +13,7 @@ constexpr double unbounded = std::numeric_limits<double>::infinity();
 }
 
 SizeField::SizeField(const MeshSizeOptions& size) : size_(&size), bounded_(size.has_size_bound()) {
-  const auto& samples = size.background_areas;
+  const auto& samples = size.triangle_area_samples;
   if (samples.empty()) return;
   double x1 = samples[0].at.x, y1 = samples[0].at.y;
   x0_ = x1;
@@ -47,7 +47,7 @@ SizeField::SizeField(const MeshSizeOptions& size) : size_(&size), bounded_(size.
 // Rings of cells around p's cell, outwards, until the ring is farther than
 // the best sample found (ties broken by the lower index).
 double SizeField::nearest_sample_value(Point p) const {
-  const auto& samples = size_->background_areas;
+  const auto& samples = size_->triangle_area_samples;
   const double fc = std::clamp(std::floor((p.x - x0_) / cell_), 0.0, static_cast<double>(cols_ - 1));
   const double fr = std::clamp(std::floor((p.y - y0_) / cell_), 0.0, static_cast<double>(rows_ - 1));
   const auto c0 = static_cast<std::int64_t>(fc), r0 = static_cast<std::int64_t>(fr);
@@ -85,12 +85,12 @@ double SizeField::nearest_sample_value(Point p) const {
 }
 
 double SizeField::area_at(Point p) const {
-  double bound = size_->max_area > 0 ? size_->max_area : unbounded;
-  if (size_->area_function) {
-    const double v = size_->area_function(p.x, p.y);
+  double bound = size_->max_triangle_area > 0 ? size_->max_triangle_area : unbounded;
+  if (size_->triangle_area_function) {
+    const double v = size_->triangle_area_function(p.x, p.y);
     if (v > 0) bound = std::min(bound, v);  // <= 0 and NaN: no bound here
   }
-  if (!size_->background_areas.empty()) bound = std::min(bound, nearest_sample_value(p));
+  if (!size_->triangle_area_samples.empty()) bound = std::min(bound, nearest_sample_value(p));
   return bound;
 }
 

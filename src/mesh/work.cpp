@@ -103,7 +103,7 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const SizeField
 std::vector<double> expected_triangles(const Decomposition& d, const SizeField& size) {
   std::vector<double> out;
   out.reserve(d.subdomains.size());
-  const bool uniform = !size.options().area_function && size.options().background_areas.empty();
+  const bool uniform = !size.options().triangle_area_function && size.options().triangle_area_samples.empty();
   const RegionView regions = region_view(d);
   for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
     const Subdomain& s = d.subdomains[sub];
@@ -192,8 +192,8 @@ void add_interior_samples(const Triangulation& tri, const SizeField& size, std::
 } // namespace
 
 void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size) {
-  if (options.weight_function || !options.background_weights.empty() || options.gradation > 0 ||
-      options.area_function || !options.background_areas.empty() || !size.bounded())
+  if (options.weight_function || !options.weight_samples.empty() || options.gradation > 0 ||
+      options.subdomain_area_function || !options.subdomain_area_samples.empty() || !size.bounded())
     return;
   // The boundary layer's work as background weights (Sec. 5.2, case 2),
   // beta / sqrt(A) triangles per unit of boundary: each input segment cut
@@ -205,10 +205,10 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeFiel
   std::vector<std::uint8_t> found;
   points_inside_next_to_segments(tri, domain.segments.size(), inside, found);
   // With one area bound everywhere, the decomposition's own area term
-  // (refine x area) counts the interior exactly, and the samples are put in
+  // (boundary_refinement x area) counts the interior exactly, and the samples are put in
   // its units (kappa A per triangle). With a varying bound the interior is
   // sampled too, and everything is scaled to drown the area term.
-  const bool uniform = !size.options().area_function && size.options().background_areas.empty();
+  const bool uniform = !size.options().triangle_area_function && size.options().triangle_area_samples.empty();
   std::vector<ValuedPoint> samples;
   double boundary = 0;
   for (std::uint32_t j = 0; j < domain.segments.size(); ++j) {
@@ -240,8 +240,8 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeFiel
     if (!(total > 0)) return;
     for (ValuedPoint& v : samples) v.value *= 100.0 * area / total;
   }
-  options.background_weights = cluster_samples(samples);
-  options.gradation = options.refine;
+  options.weight_samples = cluster_samples(samples);
+  options.gradation = options.boundary_refinement;
 }
 
 std::size_t steiner_budget(double expected_triangles, std::size_t ring_vertices) {

@@ -86,8 +86,8 @@ std::string format_report_json(const Metrics& m) {
   o.number("max_weight_over_mean", m.max_weight_over_mean);
   o.number("min_weight_over_mean", m.min_weight_over_mean);
   o.number("shortest_new_segment_norm", m.shortest_new_segment_norm);
-  if (m.area_ratio_bound > 0.0) {  // only for a decomposition split to a required area
-    o.number("area_ratio_bound", m.area_ratio_bound);
+  if (m.subdomain_area_ratio > 0.0) {  // only for a decomposition split to a required area
+    o.number("area_ratio_bound", m.subdomain_area_ratio);
     o.number("max_area_over_required", m.max_area_over_required);
     o.count("subdomains_over_area_bound", m.subdomains_over_area_bound);
   }

@@ -1,4 +1,4 @@
-// The size bound at a point: max_area, the area function and the nearest
+// The size bound at a point: max_triangle_area, the area function and the nearest
 // background sample, the smallest of those that are set (area_bound.hpp).
 #include "quality/area_bound.hpp"
 
@@ -136,20 +136,20 @@ std::uint32_t NearestSample::nearest(Point p) const noexcept {
   return best_index;
 }
 
-AreaBound::AreaBound(const MeshSizeOptions& size) : size_(size), background_(size.background_areas) {}
+AreaBound::AreaBound(const MeshSizeOptions& size) : size_(size), background_(size.triangle_area_samples) {}
 
 double AreaBound::at(Point p) const { return combine_area_bounds(size_, p, background_.nearest(p)); }
 
 double combine_area_bounds(const MeshSizeOptions& size, Point p, std::uint32_t nearest) {
   double bound = infinity;
-  if (size.max_area > 0.0) bound = size.max_area;
-  if (size.area_function) {
-    const double v = size.area_function(p.x, p.y);
+  if (size.max_triangle_area > 0.0) bound = size.max_triangle_area;
+  if (size.triangle_area_function) {
+    const double v = size.triangle_area_function(p.x, p.y);
     if (v > 0.0) bound = std::min(bound, v);  // false for NaN too: ignored
   }
   // A sample's value is read like the function's: <= 0 or NaN is no bound.
-  if (nearest != no_index && size.background_areas[nearest].value > 0.0)
-    bound = std::min(bound, size.background_areas[nearest].value);
+  if (nearest != no_index && size.triangle_area_samples[nearest].value > 0.0)
+    bound = std::min(bound, size.triangle_area_samples[nearest].value);
   return bound;
 }
 
@@ -158,7 +158,7 @@ double combine_area_bounds(const MeshSizeOptions& size, Point p, std::uint32_t n
 // One query: a scan of the samples (O(samples)). For many queries with the
 // same options build a detail::AreaBound once (src/quality/area_bound.hpp).
 double area_bound_at(const MeshSizeOptions& size, Point p) {
-  return detail::combine_area_bounds(size, p, detail::nearest_sample_by_scan(size.background_areas, p));
+  return detail::combine_area_bounds(size, p, detail::nearest_sample_by_scan(size.triangle_area_samples, p));
 }
 
 } // namespace madd

@@ -6,8 +6,8 @@
 
 namespace madd::detail {
 
-// A triangle is below the bound `min_angle_deg` when its smallest angle is
-// below min_angle_deg - mesh_angle_slack_deg. The slack is far above the
+// A triangle is below the bound `min_triangle_angle_deg` when its smallest angle is
+// below min_triangle_angle_deg - mesh_angle_slack_deg. The slack is far above the
 // rounding of the measure (angle_rounding_bound_deg, src/kernel/angles.hpp,
 // 1e-12 degrees), so a triangle the mesher refined to the bound by any
 // reasonable measure of its own is never counted, and far below anything a

@@ -102,15 +102,15 @@ namespace {
 // subdomain against the bound the decomposition was split to.
 void fill_required_area(const Decomposition& d, const std::vector<double>& areas, Metrics& m) {
   m.max_area_over_required = nan_value;
-  m.area_ratio_bound = nan_value;
-  if (!(d.area_ratio_bound > 0.0)) return;
-  m.area_ratio_bound = d.area_ratio_bound;
+  m.subdomain_area_ratio = nan_value;
+  if (!(d.subdomain_area_ratio > 0.0)) return;
+  m.subdomain_area_ratio = d.subdomain_area_ratio;
   m.max_area_over_required = 0.0;
   for (std::size_t k = 0; k < d.subdomains.size(); ++k) {
     const double required = d.subdomains[k].required_area;
     const double ratio = std::isfinite(required) && required > 0.0 ? areas[k] / required : 0.0;
     m.max_area_over_required = std::max(m.max_area_over_required, ratio);
-    if (ratio > d.area_ratio_bound) ++m.subdomains_over_area_bound;
+    if (ratio > d.subdomain_area_ratio) ++m.subdomains_over_area_bound;
   }
 }
 } // namespace
@@ -120,7 +120,7 @@ Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
   m.subdomains = static_cast<std::uint32_t>(d.subdomains.size());
   m.points = static_cast<std::uint32_t>(d.points.size());
   m.segments = static_cast<std::uint32_t>(d.segments.size());
-  m.min_angle_bound_deg = d.min_angle_deg;
+  m.min_angle_bound_deg = d.separator_angle_deg;
   m.times = std::move(times);
 
   std::vector<double> areas;

@@ -231,10 +231,10 @@ void check_inner_points(const Decomposition& d, ProblemLog& log) {
 
 void check_angles(const Decomposition& d, ProblemLog& log) {
   // Phi0 less what computing the angle of the stored points can be off by.
-  const double bound = d.min_angle_deg - detail::angle_rounding_bound_deg;
+  const double bound = d.separator_angle_deg - detail::angle_rounding_bound_deg;
   detail::for_each_new_angle(d, [&](std::uint32_t s, std::uint32_t r, std::uint32_t k, double angle) {
     if (angle < bound)
-      log.add(sub_name(s) + " has a new angle of " + detail::number_text(angle) + " deg < " + detail::number_text(d.min_angle_deg) +
+      log.add(sub_name(s) + " has a new angle of " + detail::number_text(angle) + " deg < " + detail::number_text(d.separator_angle_deg) +
               " at " + point_text(d.points[d.subdomains[s].rings[r][k]]));
   });
 }

@@ -54,9 +54,9 @@ void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vect
 
 // The angle measure is smallest_angle_deg (quality/mesh_angle.hpp), the one
 // the mesher's shortfall count must use too; a triangle counts when it is
-// below min_angle_deg by more than mesh_angle_slack_deg.
+// below min_triangle_angle_deg by more than mesh_angle_slack_deg.
 void check_mesh_angles(const Mesh& m, ProblemLog& log) {
-  const double below = m.min_angle_deg - mesh_angle_slack_deg;
+  const double below = m.min_triangle_angle_deg - mesh_angle_slack_deg;
   std::size_t count = 0;
   double worst = std::numeric_limits<double>::infinity();
   std::uint32_t worst_t = no_index;
@@ -76,7 +76,7 @@ void check_mesh_angles(const Mesh& m, ProblemLog& log) {
   }
   if (count == claimed) return;
   std::string text = std::to_string(count) + " triangles have a smallest angle below the bound " +
-                     number_text(m.min_angle_deg) + " deg, but the shortfall counts " + std::to_string(claimed) + " (" +
+                     number_text(m.min_triangle_angle_deg) + " deg, but the shortfall counts " + std::to_string(claimed) + " (" +
                      std::to_string(m.shortfall.input_angle) + " input angle, " + std::to_string(m.shortfall.separator) +
                      " separator, " + std::to_string(m.shortfall.precision) + " precision, " +
                      std::to_string(m.shortfall.limit) + " limit)";

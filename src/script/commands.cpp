@@ -99,9 +99,9 @@ void script_read(const ScriptCommand& c, ScriptContext& context) {
   context.requested_subdomains = 0;
   // Background weights and areas are points of the previous domain's
   // background mesh (Sec. 5.2 case 2): a new domain starts without them.
-  const bool dropped = !context.options.background_weights.empty() || !context.options.background_areas.empty();
-  context.options.background_weights.clear();
-  context.options.background_areas.clear();
+  const bool dropped = !context.options.weight_samples.empty() || !context.options.subdomain_area_samples.empty();
+  context.options.weight_samples.clear();
+  context.options.subdomain_area_samples.clear();
   if (dropped) say(context, "read " + file.text + ": background weights and areas of the previous domain cleared");
   say(context, "read " + file.text + ": " + count_text(domain.points.size(), "point") + ", " +
                    count_text(domain.segments.size(), "segment") + ", " + count_text(domain.holes.size(), "hole"));
@@ -115,7 +115,7 @@ void script_read_values(const ScriptCommand& c, ScriptContext& context, bool are
   const char* usage = areas ? "read_areas FILE|none" : "read_weights FILE|none";
   c.expect_arguments(1, 1, usage);
   const ScriptWord& file = c.words[1];
-  auto& target = areas ? context.options.background_areas : context.options.background_weights;
+  auto& target = areas ? context.options.subdomain_area_samples : context.options.weight_samples;
   if (file.text == "none") {  // clears the source, as setWeightFunction none does
     target.clear();
     say(context, std::string(areas ? "read_areas" : "read_weights") + " none");

@@ -34,7 +34,7 @@ void rethrow_located(const ScriptCommand& c, std::size_t column, const Error& er
   if (const auto* e = dynamic_cast<const InvalidInputError*>(&error))
     throw InvalidInputError(e->problem(), message, e->ids(), e->points());
   if (const auto* e = dynamic_cast<const DecompositionError*>(&error))
-    throw DecompositionError(message, e->subdomain(), e->area(), e->min_angle_deg());
+    throw DecompositionError(message, e->subdomain(), e->area(), e->separator_angle_deg());
   if (const auto* e = dynamic_cast<const OptionError*>(&error))
     throw OptionError(e->option(), e->requirement(), message);
   switch (error.kind()) {

@@ -34,14 +34,14 @@ struct Parameter {
   ValueType type;
 };
 constexpr Parameter parameters[] = {
-    {"f", "min_angle_deg", "the minimum angle as a fraction of pi", ValueType::real},
-    {"r", "refine", "the refinement factor", ValueType::real},
+    {"f", "separator_angle_deg", "the minimum angle as a fraction of pi", ValueType::real},
+    {"r", "boundary_refinement", "the refinement factor", ValueType::real},
     {"a", "gradation", "the gradation factor", ValueType::real},
     {"p", "interpolation", "the interpolation factor", ValueType::real},
-    {"i", "min_balance_quality", "the acceptable imbalance", ValueType::real},
+    {"i", "min_split_quality", "the acceptable imbalance", ValueType::real},
     {"s", "smoothing_iterations", "smoothing iterations", ValueType::whole},
     {"smooth", "smoothing_iterations", "smoothing iterations", ValueType::whole},
-    {"ratio", "area_ratio_bound", "the area ratio bound", ValueType::real},
+    {"ratio", "subdomain_area_ratio", "the area ratio bound", ValueType::real},
     {"n", "subdomains", "the number of subdomains", ValueType::whole},
     {"j", "threads", "worker threads, 0 = all cores", ValueType::whole},
     {"threads", "threads", "worker threads, 0 = all cores", ValueType::whole},
@@ -62,12 +62,12 @@ bool assign(const Parameter& p, const std::string& value, DecomposeOptions& o) {
   const std::string field = p.field;
   if (p.type == ValueType::real) {
     if (!parse_real(value, x)) return false;
-    if (field == "min_angle_deg") o.min_angle_deg = x * 180.0;  // the paper's f: f = 1/3 is 60 degrees
-    if (field == "refine") o.refine = x;
+    if (field == "separator_angle_deg") o.separator_angle_deg = x * 180.0;  // the paper's f: f = 1/3 is 60 degrees
+    if (field == "boundary_refinement") o.boundary_refinement = x;
     if (field == "gradation") o.gradation = x;
     if (field == "interpolation") o.interpolation = x;
-    if (field == "min_balance_quality") o.min_balance_quality = x;
-    if (field == "area_ratio_bound") o.area_ratio_bound = x;
+    if (field == "min_split_quality") o.min_split_quality = x;
+    if (field == "subdomain_area_ratio") o.subdomain_area_ratio = x;
     return true;
   }
   if (!parse_whole(value, field == "seed" ? ~0ull : 0xFFFFFFFFull, k)) return false;
@@ -91,9 +91,9 @@ std::string parameter_names() {
 
 std::string script_name_of(const std::string& field) {
   if (field == "weight_function") return "setWeightFunction";
-  if (field == "area_function") return "setAreaFunction";
-  if (field == "background_weights") return "read_weights";
-  if (field == "background_areas") return "read_areas";
+  if (field == "subdomain_area_function") return "setAreaFunction";
+  if (field == "weight_samples") return "read_weights";
+  if (field == "subdomain_area_samples") return "read_areas";
   for (const Parameter& p : parameters)
     if (field == p.field) return std::string(p.name) + " (" + field + ")";
   return field;
@@ -181,7 +181,7 @@ void script_set(const ScriptCommand& c, ScriptContext& context) {
 // `none` removes the function.
 void script_set_function(const ScriptCommand& c, ScriptContext& context, bool areas) {
   const std::string command = c.words[0].text;
-  auto& target = areas ? context.options.area_function : context.options.weight_function;
+  auto& target = areas ? context.options.subdomain_area_function : context.options.weight_function;
   if (c.words.size() == 1)
     c.fail(c.end_column, "missing the expression in x, y and r (for example: " + command + " 1e-4*(1+r^12))");
   if (c.words.size() == 3 && looks_like_library(c.words[1].text))

@@ -80,10 +80,10 @@ Point rotate(Point d, double angle) {
   return {c * d.x - s * d.y, s * d.x + c * d.y};
 }
 
-std::vector<Cone> cones(const FaceDomain& fd, const Ring& ring, double min_angle_deg) {
+std::vector<Cone> cones(const FaceDomain& fd, const Ring& ring, double separator_angle_deg) {
   const auto& pts = fd.pslg.points;
   std::vector<Cone> out(ring.at.size());
-  const double phi = radians(min_angle_deg);
+  const double phi = radians(separator_angle_deg);
   for (std::size_t k = 0; k < ring.at.size(); ++k) {
     const std::uint32_t v = ring.at[k];
     const Point o = pts[v], next = pts[fd.links[v].next] - o, prev = pts[fd.links[v].prev] - o;
@@ -262,7 +262,7 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
   const double total = 0.5 * ring.prefix[n];
   std::vector<Pair> out;
   if (!(total > 0.0)) return out;
-  const std::vector<Cone> cone = cones(fd, ring, o.min_angle_deg);
+  const std::vector<Cone> cone = cones(fd, ring, o.separator_angle_deg);
   const auto ranges = balanced_area_ranges(o.plan, total, o.min_quality);
   const auto& pts = fd.pslg.points;
   for (std::size_t i = 0; i < n; ++i) {
@@ -291,7 +291,7 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
   if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
   const std::size_t n = ring.at.size();
-  const double min_angle = options.min_angle_deg + angle_margin_deg;
+  const double min_angle = options.separator_angle_deg + angle_margin_deg;
   for (std::size_t k = 0; k < std::min(pairs.size(), max_exact_checks); ++k) {
     const Pair& c = pairs[k];
     const std::uint32_t p = ring.at[c.i], r = ring.at[c.j];

@@ -20,7 +20,7 @@
 namespace madd::detail {
 
 struct ChordOptions {
-  double min_angle_deg = 60.0;  // Phi0: both ends, both sides
+  double separator_angle_deg = 60.0;  // Phi0: both ends, both sides
   std::uint32_t plan = 2;       // final subdomains of the face
   // Chords are rated by a two-sided balance quality: like balance_quality
   // (split.hpp), but the lightest final subdomain counts as well as the

@@ -38,7 +38,7 @@ struct FaceDomain {
 // whose end weights exceed the face's mean vertex weight gets up to
 // `adaptive_level` times more pieces (in proportion to its weight over the
 // mean): heavier segments are refined more, the paper's adaptive refine level
-// (Table I, setAdaptiveRefineLevel; DecomposeOptions::adaptive_refine).
+// (Table I, setAdaptiveRefineLevel; DecomposeOptions::adaptive_boundary_refinement).
 // `pin_isolated`: the face's isolated points become working points where no
 // separator may end (FaceDomain::pinned), the fallback when keeping the
 // separators off them finds none (a point exactly where every separator of

@@ -70,7 +70,7 @@ bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const M
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
                                                                      std::span<const BoundaryLinks> links,
                                                                      const std::vector<std::uint8_t>& side,
-                                                                     double min_angle_deg) {
+                                                                     double separator_angle_deg) {
   std::vector<std::uint8_t> used(links.size(), 0);  // bit s: a cut separator ends there on side s
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
   std::unordered_map<std::uint32_t, std::uint32_t> at_tip;  // tip -> the first cut edge through it (index)
@@ -90,7 +90,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const Media
         const Point o = g.points[p], along = g.points[links[p].next];
         const double a1 = detail::ccw_angle_deg(o, along, g.points[f.from == p ? f.to : f.from]);
         const double a2 = detail::ccw_angle_deg(o, along, g.points[other]);
-        clash = clash || (used[p] & 1U) != 0 || std::abs(a1 - a2) < min_angle_deg + 1e-9;
+        clash = clash || (used[p] & 1U) != 0 || std::abs(a1 - a2) < separator_angle_deg + 1e-9;
         used[p] |= 1U;
         continue;
       }
@@ -256,17 +256,17 @@ IsolatedIn locate_isolated(const FaceDomain& fd, const Triangulation& tri, const
 // (Sec. 4.3) or run through an isolated point. Returns an empty side vector
 // when no valid bisection is found.
 std::vector<std::uint8_t> valid_bisection(const MedialGraph& g, std::span<const BoundaryLinks> links,
-                                          const IsolatedIn& isolated_in, double min_angle_deg, double target,
+                                          const IsolatedIn& isolated_in, double separator_angle_deg, double target,
                                           std::uint64_t seed, double weights[2]) {
   BisectOptions bo;
   bo.target_fraction = target;
-  bo.imbalance_tolerance = 0.02;
+  bo.balance_tolerance = 0.02;
   bo.seed = seed;
   bo.connected = true;
   for (int attempt = 0; attempt < max_repartitions; ++attempt) {
     Bisection b = bisect(g.contracted, bo);
     if (!b.connected[0] || !b.connected[1] || !(b.weight[0] > 0.0) || !(b.weight[1] > 0.0)) return {};
-    auto conflicts = pinch_conflicts(g, links, b.side, min_angle_deg);
+    auto conflicts = pinch_conflicts(g, links, b.side, separator_angle_deg);
     isolated_conflicts(g, isolated_in, b.side, conflicts);
     if (conflicts.empty()) {
       weights[0] = b.weight[0];
@@ -290,7 +290,7 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
   std::vector<std::uint8_t> best_side;
   const auto consider = [&](double fraction, std::uint64_t target_seed) {
     double w[2] = {0.0, 0.0};
-    auto side = valid_bisection(g, fd.links, isolated_in, options.min_angle_deg, fraction, target_seed, w);
+    auto side = valid_bisection(g, fd.links, isolated_in, options.separator_angle_deg, fraction, target_seed, w);
     if (side.empty()) return;
     const double q = balance_quality(plan, w[0], w[1]);
     if (q > out.quality) {
@@ -312,9 +312,9 @@ Candidate best_separator(const Subdivision& sub, std::uint32_t face, std::uint32
   if (smooth) {
     double w[2] = {0.0, 0.0};
     for (std::uint32_t v = 0; v < g.contracted.vertex_count(); ++v) w[best_side[v]] += g.contracted.vertex_weights[v];
-    const double floor = std::max(options.min_balance_quality, out.quality - options.smoothing_tolerance);
+    const double floor = std::max(options.min_split_quality, out.quality - options.smoothing_tolerance);
     ends.iterations = options.smoothing_iterations;
-    ends.min_angle_deg = options.min_angle_deg;
+    ends.separator_angle_deg = options.separator_angle_deg;
     ends.plan = plan;
     ends.min_quality = floor;
     double area = 0.0;
@@ -337,18 +337,18 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
                       std::span<const double> fractions = {}, bool pin_isolated = false) {
   Stopwatch clock;
   const FaceDomain fd =
-      refine_face(sub, face, spacing, density.point_weights, options.adaptive_refine, pin_isolated);
+      refine_face(sub, face, spacing, density.point_weights, options.adaptive_boundary_refinement, pin_isolated);
   times.refine += clock.lap();
   const Triangulation tri = triangulate(fd.pslg);
   times.triangulate += clock.lap();
   const bool smooth = options.smoothing_iterations > 0;
-  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.min_angle_deg, smooth});
+  MedialGraph g = build_medial_graph(tri, fd.links, MedialOptions{options.separator_angle_deg, smooth});
   if (density.graded && g.contracted.vertex_count() >= 2) set_vertex_weights(g, density_weights(g, tri, fd, density));
   times.graph += clock.lap();
   if (g.contracted.vertex_count() < 2) return Candidate{};
   const IsolatedIn isolated_in = locate_isolated(fd, tri, g, face);
   Candidate out = best_separator(sub, face, plan, round, options, fd, tri, g, isolated_in, fractions);
-  out.result.snap = {snap_fraction * spacing, options.min_angle_deg};
+  out.result.snap = {snap_fraction * spacing, options.separator_angle_deg};
   times.bisect += clock.lap();
   return out;
 }
@@ -360,18 +360,18 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
                                  const SplitOptions& options, double best, SplitTimes& times) {
   const double area = sub.face_area(face);
   const double h =
-      std::max(0.5 * std::sqrt(area) / (points_per_side * options.refine), face_perimeter(sub, face) / max_chord_points);
+      std::max(0.5 * std::sqrt(area) / (points_per_side * options.boundary_refinement), face_perimeter(sub, face) / max_chord_points);
   ChordOptions co;
-  co.min_angle_deg = options.min_angle_deg;
+  co.separator_angle_deg = options.separator_angle_deg;
   co.plan = plan;
-  co.min_quality = best < 0.0 ? options.min_balance_quality : best + chord_gain;
+  co.min_quality = best < 0.0 ? options.min_split_quality : best + chord_gain;
   co.good_quality = options.good_balance;
   co.end_bonus = options.smoothing_iterations > 0;
   Stopwatch clock;
   const FaceDomain fd = refine_face(sub, face, h);
   times.refine += clock.lap();
   auto chord = best_chord(fd, co);
-  if (chord) chord->result.snap = {snap_fraction * h, options.min_angle_deg};
+  if (chord) chord->result.snap = {snap_fraction * h, options.separator_angle_deg};
   times.bisect += clock.lap();
   return chord;
 }
@@ -389,11 +389,11 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (const auto& ring : sub.faces[face].rings) vertices += ring.size();
   const double point_cap =
       std::min(max_working_points, std::max(min_point_cap, points_per_vertex_cap * static_cast<double>(vertices)));
-  const double first_spacing = std::sqrt(area) / (points_per_side * options.refine);
+  const double first_spacing = std::sqrt(area) / (points_per_side * options.boundary_refinement);
   double spacing = first_spacing;
   Candidate best;
   SplitTimes times;
-  for (int round = 0; round <= options.max_refinement_rounds; ++round, spacing *= 0.5) {
+  for (int round = 0; round <= options.max_split_retries; ++round, spacing *= 0.5) {
     if (limits != nullptr && round > 0) limits->check(sub.faces.size());
     const double h = std::max(spacing, perimeter / point_cap);
     Candidate c = try_spacing(sub, face, plan, h, round, options, density, times);
@@ -401,7 +401,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     // limit is the shape (where acceptable separators exist), not the spacing.
     const bool stalled = round > 0 && c.quality < best.quality + 0.01;
     if (c.quality > best.quality) best = std::move(c);
-    if (stalled && best.quality >= options.min_balance_quality) break;
+    if (stalled && best.quality >= options.min_split_quality) break;
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }
@@ -418,14 +418,14 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (int k = 0; best.quality < 0.0 && k < uneven_rounds; ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + k, options, density, times,
+    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times,
                               uneven_fractions);
     if (c.quality > best.quality) best = std::move(c);
   }
-  for (std::size_t k = 0; best.quality < options.min_balance_quality && k < std::size(offset_spacings); ++k) {
+  for (std::size_t k = 0; best.quality < options.min_split_quality && k < std::size(offset_spacings); ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(offset_spacings[k] * first_spacing, perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + uneven_rounds + static_cast<int>(k),
+    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + uneven_rounds + static_cast<int>(k),
                               options, density, times);
     if (c.quality > best.quality) best = std::move(c);
   }
@@ -434,15 +434,15 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (int k = 0; best.quality < 0.0 && !sub.faces[face].inner_points.empty() && k < uneven_rounds; ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, options.max_refinement_rounds + 1 + k, options, density, times, {},
+    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times, {},
                               true);
     if (c.quality > best.quality) best = std::move(c);
   }
   if (best.quality < 0.0) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "no separator with angles >= %g degrees found for subdomain %u (area %g)",
-                  options.min_angle_deg, face, area);
-    throw DecompositionError(buf, face, area, options.min_angle_deg);
+                  options.separator_angle_deg, face, area);
+    throw DecompositionError(buf, face, area, options.separator_angle_deg);
   }
   best.result.times = times;
   return std::move(best.result);

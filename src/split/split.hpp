@@ -17,15 +17,15 @@
 namespace madd::detail {
 
 struct SplitOptions {
-  double min_angle_deg = 60.0;
-  double refine = 3.0;          // r
-  double min_balance_quality = 0.75;  // accept when each side has >= this share of its target
+  double separator_angle_deg = 60.0;
+  double boundary_refinement = 3.0;          // r
+  double min_split_quality = 0.75;  // accept when each side has >= this share of its target
   double good_balance = 0.95;   // stop trying targets and refining at this balance quality
-  int max_refinement_rounds = 4;
+  int max_split_retries = 4;
   std::uint64_t seed = 1;
   int smoothing_iterations = 1;  // Sec. 5.1: 0 turns both smoothing steps off
-  double adaptive_refine = 4.0;  // graded runs: heavier edges get up to this many times more pieces (refine.hpp)
-  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below min_balance_quality)
+  double adaptive_boundary_refinement = 4.0;  // graded runs: heavier edges get up to this many times more pieces (refine.hpp)
+  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below min_split_quality)
 };
 
 // What the parts of a face weigh in a graded decomposition (Sec. 5.2). Not
@@ -68,7 +68,7 @@ std::uint32_t side0_plan(std::uint32_t plan, double w0, double w1);
 std::vector<std::pair<std::uint32_t, std::uint32_t>> pinch_conflicts(const MedialGraph& g,
                                                                      std::span<const BoundaryLinks> links,
                                                                      const std::vector<std::uint8_t>& side,
-                                                                     double min_angle_deg);
+                                                                     double separator_angle_deg);
 
 struct FaceDomain;
 
@@ -81,7 +81,7 @@ struct CutEnd {
 
 struct EndSmoothing {
   int iterations = 1;
-  double min_angle_deg = 60.0;
+  double separator_angle_deg = 60.0;
   std::uint32_t plan = 2;
   double min_quality = 0.0;      // balance_quality floor
   double weight_per_area = 1.0;  // to move weight with the swept area

@@ -15,17 +15,17 @@ namespace madd::detail {
 
 namespace {
 
-[[noreturn]] void fail_angle(const Subdivision& sub, std::uint32_t f, double angle, double min_angle_deg) {
+[[noreturn]] void fail_angle(const Subdivision& sub, std::uint32_t f, double angle, double separator_angle_deg) {
   char buf[200];
   std::snprintf(buf, sizeof buf, "subdomain %u has a new angle of %.6g degrees < %g (internal error)", f, angle,
-                min_angle_deg);
-  throw DecompositionError(buf, f, sub.face_area(f), min_angle_deg);
+                separator_angle_deg);
+  throw DecompositionError(buf, f, sub.face_area(f), separator_angle_deg);
 }
 
 // The interior pieces of face f inside a corner of its rings split that
 // corner: each one next to a separator of the corner makes a new angle with
 // it (a separator crosses an interior segment only at a vertex, on both sides).
-void check_inner_angles(const Subdivision& sub, std::uint32_t f, double min_angle_deg, double bound) {
+void check_inner_angles(const Subdivision& sub, std::uint32_t f, double separator_angle_deg, double bound) {
   const Face& face = sub.faces[f];
   if (face.inner_segments.empty()) return;
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> inner_at;  // vertex -> far ends of interior pieces
@@ -49,8 +49,8 @@ void check_inner_angles(const Subdivision& sub, std::uint32_t f, double min_angl
         const double from_out = ccw_angle_deg(v, next, sub.points[w]);
         const double to_in = ccw_angle_deg(v, sub.points[w], prev);
         if (std::abs(from_out + to_in - corner) > 1e-6) continue;  // in another corner at this vertex
-        if (out_new && from_out < bound) fail_angle(sub, f, from_out, min_angle_deg);
-        if (in_new && to_in < bound) fail_angle(sub, f, to_in, min_angle_deg);
+        if (out_new && from_out < bound) fail_angle(sub, f, from_out, separator_angle_deg);
+        if (in_new && to_in < bound) fail_angle(sub, f, to_in, separator_angle_deg);
       }
     }
   }
@@ -58,10 +58,10 @@ void check_inner_angles(const Subdivision& sub, std::uint32_t f, double min_angl
 
 } // namespace
 
-void check_new_angles(const Subdivision& sub, double min_angle_deg) {
+void check_new_angles(const Subdivision& sub, double separator_angle_deg) {
   constexpr double tolerance_deg = angle_rounding_bound_deg;  // the splits keep a margin far above it
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
-    check_inner_angles(sub, f, min_angle_deg, min_angle_deg - tolerance_deg);
+    check_inner_angles(sub, f, separator_angle_deg, separator_angle_deg - tolerance_deg);
     const Face& face = sub.faces[f];
     for (std::size_t r = 0; r < face.rings.size(); ++r) {
       const auto& ring = face.rings[r];
@@ -73,7 +73,7 @@ void check_new_angles(const Subdivision& sub, double min_angle_deg) {
         // The face is on the left: its interior angle turns from the outgoing edge to the incoming one.
         const double angle =
             ccw_angle_deg(sub.points[ring[k]], sub.points[ring[(k + 1) % n]], sub.points[ring[before]]);
-        if (angle < min_angle_deg - tolerance_deg) fail_angle(sub, f, angle, min_angle_deg);
+        if (angle < separator_angle_deg - tolerance_deg) fail_angle(sub, f, angle, separator_angle_deg);
       }
     }
   }

@@ -98,7 +98,7 @@ bool Subdivision::may_snap(std::uint32_t v, const EndRef& end, const SnapEdge& e
   const auto [prev, next] = ring_neighbours(faces[edge.face], v);
   if (prev == no_index) return false;
   if (std::abs(ccw_angle_deg(to, points[next], points[prev]) - 180.0) > straight_tolerance_deg) return false;
-  const double phi = split.snap.min_angle_deg + angle_margin_deg;
+  const double phi = split.snap.separator_angle_deg + angle_margin_deg;
   if (!splits_corner(to, points[prev], points[next], edge.far.p, phi)) return false;
   if (!far_angles_hold(edge, end.p, to, phi)) return false;
   // Nothing in the triangle the edge sweeps: no vertex of the face, no point of the split.

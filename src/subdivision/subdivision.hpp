@@ -49,10 +49,10 @@ struct SplitTimes {
 // commit, an end inside a segment that only one separator edge reaches moves
 // to a vertex an earlier commit put on that straight segment when it is
 // closer than `distance` and every angle at both ends of the edge stays
-// >= min_angle_deg (Phi0), with nothing in the triangle the edge sweeps.
+// >= separator_angle_deg (Phi0), with nothing in the triangle the edge sweeps.
 struct EndSnap {
   double distance = 0.0;  // 0: ends never move
-  double min_angle_deg = 90.0;
+  double separator_angle_deg = 90.0;
 };
 
 // The outcome of splitting one face (Algorithm 3 as geometry).

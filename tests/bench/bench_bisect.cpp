@@ -114,7 +114,7 @@ void write_metis(const madd::Graph& g, const std::string& path) {
 
 void run_one(const char* kind, std::size_t size, const madd::Graph& g, const std::string& out_dir) {
   madd::BisectOptions o;
-  o.imbalance_tolerance = 0.03;
+  o.balance_tolerance = 0.03;
   const double t0 = madd::bench::now_seconds();
   const std::clock_t c0 = std::clock();
   const madd::Bisection b = madd::bisect(g, o);

@@ -32,7 +32,7 @@ void run_one(const std::string& file, const madd::Pslg& domain, unsigned n, unsi
              bool verify) {
   madd::DecomposeOptions options;
   options.subdomains = n;
-  options.min_angle_deg = phi;
+  options.separator_angle_deg = phi;
   options.threads = threads;
   const double start = madd::bench::now_seconds();
   const std::clock_t cpu_start = std::clock();

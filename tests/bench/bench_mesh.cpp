@@ -151,7 +151,7 @@ struct Row {
 int run_mesh(int argc, char** argv) {
   madd::MeshOptions options;
   options.decomposition.subdomains = 16;
-  options.size.min_angle_deg = 30.0;
+  options.size.min_triangle_angle_deg = 30.0;
   std::vector<unsigned> thread_counts{1};
   int runs = 3;
   std::string triangle, csv;
@@ -164,9 +164,9 @@ int run_mesh(int argc, char** argv) {
       if (k < 1) return std::fprintf(stderr, "%s", usage), 2;
       options.decomposition.subdomains = static_cast<std::uint32_t>(k);
     } else if (arg == "-q" && has_value) {
-      options.size.min_angle_deg = std::atof(argv[++i]);
+      options.size.min_triangle_angle_deg = std::atof(argv[++i]);
     } else if (arg == "-a" && has_value) {
-      options.size.max_area = std::atof(argv[++i]);
+      options.size.max_triangle_area = std::atof(argv[++i]);
     } else if (arg == "-j" && has_value) {
       thread_counts = parse_list(argv[++i]);
       if (thread_counts.empty()) return std::fprintf(stderr, "%s", usage), 2;
@@ -188,7 +188,7 @@ int run_mesh(int argc, char** argv) {
   int status = 0;
   std::vector<Row> rows;
   std::printf("mesh: N %u, q %g, a %g, %d runs (medians)\n", options.decomposition.subdomains,
-              options.size.min_angle_deg, options.size.max_area, runs);
+              options.size.min_triangle_angle_deg, options.size.max_triangle_area, runs);
   std::printf("%-24s %3s %10s %9s %11s  %s\n", "domain", "j", "triangles", "wall s", "tris/s", "phases (s)");
   for (const std::string& file : files) {
     madd::Pslg domain;
@@ -240,7 +240,7 @@ int run_mesh(int argc, char** argv) {
     }
     if (!triangle.empty()) {
       const PeerResult peer =
-          run_triangle(triangle, file, options.size.min_angle_deg, options.size.max_area, runs);
+          run_triangle(triangle, file, options.size.min_triangle_angle_deg, options.size.max_triangle_area, runs);
       if (!peer.ok) {
         std::fprintf(stderr, "%s: %s\n", file.c_str(), peer.error.c_str());
         status = 1;
@@ -270,7 +270,7 @@ int run_mesh(int argc, char** argv) {
       std::string phases;
       for (const auto& [p, s] : r.phases) phases += (phases.empty() ? "" : ";") + p + "=" + shortest(s);
       std::fprintf(out, "%s,%u,%g,%g,%u,%zu,%.6f,%.0f,%s,", r.file.c_str(), options.decomposition.subdomains,
-                   options.size.min_angle_deg, options.size.max_area, r.threads, r.triangles, r.seconds,
+                   options.size.min_triangle_angle_deg, options.size.max_triangle_area, r.threads, r.triangles, r.seconds,
                    static_cast<double>(r.triangles) / r.seconds, phases.c_str());
       if (r.has_peer) std::fprintf(out, "%lld,%.6f\n", r.peer.triangles, r.peer.seconds);
       else std::fprintf(out, ",\n");

@@ -97,7 +97,7 @@ Run run_one(const std::string& domain_name, const madd::Pslg& domain, const madd
   Run run;
   run.domain = domain_name;
   run.n = options.subdomains;
-  run.phi = options.min_angle_deg;
+  run.phi = options.separator_angle_deg;
   // The time of a failed run is the time until decompose() threw; it is not repeated.
   std::vector<double> times;
   std::unique_ptr<madd::Decomposition> first;
@@ -337,7 +337,7 @@ int run(int argc, char** argv) {
   // Refuse a bad option before reading anything, not once per run.
   for (double phi : phis) {
     madd::DecomposeOptions o = options;
-    o.min_angle_deg = phi;
+    o.separator_angle_deg = phi;
     try {
       madd::check_options(o);
     } catch (const madd::Error& e) {
@@ -388,7 +388,7 @@ int run(int argc, char** argv) {
       for (std::uint32_t n : counts) {
         madd::DecomposeOptions o = options;
         o.subdomains = n;
-        o.min_angle_deg = phi;
+        o.separator_angle_deg = phi;
         runs.push_back(run_one(name, domain, o, repeat));
         print_run(runs.back());
         if (runs.back().status == Status::check_failed) {

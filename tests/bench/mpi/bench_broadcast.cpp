@@ -61,7 +61,7 @@ void put_all(Bytes& b, const madd::Decomposition& d) {
     b.put(s.rings), b.put(s.ring_segments), b.put(s.area), b.put(s.weight), b.put(s.required_area);
     b.put(s.interior_point), b.put(s.hole_points);
   }
-  b.put(d.min_angle_deg), b.put(d.area_ratio_bound);
+  b.put(d.separator_angle_deg), b.put(d.subdomain_area_ratio);
 }
 
 void get_all(Bytes& b, madd::Decomposition& d) {
@@ -73,7 +73,7 @@ void get_all(Bytes& b, madd::Decomposition& d) {
     b.get(s.rings), b.get(s.ring_segments), b.get(s.area), b.get(s.weight), b.get(s.required_area);
     b.get(s.interior_point), b.get(s.hole_points);
   }
-  b.get(d.min_angle_deg), b.get(d.area_ratio_bound);
+  b.get(d.separator_angle_deg), b.get(d.subdomain_area_ratio);
 }
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   madd::MeshOptions o;
   o.decomposition.subdomains = static_cast<std::uint32_t>(std::atoi(argv[2]));
   o.decomposition.threads = 1;
-  o.size.max_area = std::atof(argv[3]);
+  o.size.max_triangle_area = std::atof(argv[3]);
   const int repeat = argc > 4 ? std::atoi(argv[4]) : 3;
   std::vector<double> every, root, bytes_seconds;
   std::size_t bytes = 0;
