@@ -15,7 +15,6 @@
 #include <string>
 #include <type_traits>
 
-#include "background_mesh.hpp"
 #include "commands.hpp"
 #include "option_values.hpp"
 #include "option_names.hpp"
@@ -216,8 +215,8 @@ int decompose_body(void* context) {
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
   DecomposeOptions options = args.options;
-  if (!args.weights_file.empty()) options.background_weights = read_background(args.weights_file, false);
-  if (!args.areas_file.empty()) options.background_areas = read_background(args.areas_file, true);
+  if (!args.weights_file.empty()) options.background_weights = read_background_samples(args.weights_file, SampleValue::weight);
+  if (!args.areas_file.empty()) options.background_areas = read_background_samples(args.areas_file, SampleValue::area);
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;

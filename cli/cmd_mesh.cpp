@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <string>
 
-#include "background_mesh.hpp"
 #include "commands.hpp"
 #include "mesh_arguments.hpp"
 #include "mesh_figures.hpp"
@@ -131,7 +130,7 @@ int mesh_body(void* context) {
     options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
   }
   progress.say("reading " + args.input);
-  if (!args.sizes_file.empty()) options.size.background_areas = read_background(args.sizes_file, true);
+  if (!args.sizes_file.empty()) options.size.background_areas = read_background_samples(args.sizes_file, SampleValue::area);
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
   MeshReport report;

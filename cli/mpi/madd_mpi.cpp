@@ -26,7 +26,6 @@
 #include <string>
 #include <vector>
 
-#include "../background_mesh.hpp"
 #include "../commands.hpp"
 #include "../mesh_arguments.hpp"
 #include "../mesh_figures.hpp"
@@ -301,7 +300,7 @@ int run(const World& world, const cli::MeshArgs& args) {
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.sizes_file.empty()) options.size.background_areas = cli::read_background(args.sizes_file, true);
+    if (!args.sizes_file.empty()) options.size.background_areas = read_background_samples(args.sizes_file, SampleValue::area);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
