@@ -19,6 +19,7 @@
 #include "option_values.hpp"
 #include "option_names.hpp"
 #include "progress.hpp"
+#include "seconds.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
@@ -106,10 +107,6 @@ struct DecomposeArgs {
   MeshSizeOptions discretise;  // --max-area, --size-fn: outputs with the boundaries discretised (docs/mesh.md)
   std::map<std::string, std::string> typed;  // option field -> the value as typed, for messages
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The input's file name without directories and without .poly/.node.
 std::string stem_of(const std::string& path) {

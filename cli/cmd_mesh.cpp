@@ -11,11 +11,12 @@
 
 #include "commands.hpp"
 #include "mesh_arguments.hpp"
-#include "mesh_figures.hpp"
 #include "progress.hpp"
+#include "seconds.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_metrics.hpp"
 #include "madd/mesh_output.hpp"
 #include "madd/poly_io.hpp"
 
@@ -64,60 +65,6 @@ constexpr const char* mesh_help =
     "exit codes: 0 ok, 2 usage error, 3 bad input, 4 no decomposition, 5 output not written,\n"
     "6 limit, 70 internal error\n";
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string report_json(const MeshArgs& args, const Mesh& m, const MeshReport& r, double total_seconds) {
-  const AngleFigures a = angle_figures(m);
-  std::string out = "{\n";
-  char buf[256];
-  const auto add = [&](const char* key, double v, bool last = false) {
-    std::snprintf(buf, sizeof buf, "  \"%s\": %.17g%s\n", key, v, last ? "" : ",");
-    out += buf;
-  };
-  add("subdomains", m.subdomain_count());
-  add("triangles", static_cast<double>(m.triangles.size()));
-  add("vertices", static_cast<double>(m.points.size()));
-  add("min_angle_bound_deg", m.min_angle_deg);
-  add("max_area_bound", args.options.size.max_area);
-  add("min_angle_deg", a.min_deg);
-  add("median_smallest_angle_deg", a.median_deg);
-  add("share_below_bound", m.triangles.empty() ? 0.0 : static_cast<double>(a.below) / static_cast<double>(m.triangles.size()));
-  add("below_bound_input_angle", static_cast<double>(m.shortfall.input_angle));
-  add("below_bound_separator", static_cast<double>(m.shortfall.separator));
-  add("below_bound_precision", static_cast<double>(m.shortfall.precision));
-  add("below_bound_limit", static_cast<double>(m.shortfall.limit));
-  out += "  \"smallest_angle_histogram_10deg\": [";
-  for (int i = 0; i < 6; ++i) out += std::to_string(a.bins[i]) + (i < 5 ? ", " : "],\n");
-  // Triangle-count balance: the work balance the decomposition aimed for.
-  std::size_t largest = 0;
-  for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
-    largest = std::max<std::size_t>(largest, m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k]);
-  const double mean = m.subdomain_count() ? static_cast<double>(m.triangles.size()) / m.subdomain_count() : 0.0;
-  add("max_over_mean_triangles", mean > 0 ? static_cast<double>(largest) / mean : 0.0);
-  double busiest = 0, busy = 0;
-  for (const double s : r.thread_seconds) {
-    busiest = std::max(busiest, s);
-    busy += s;
-  }
-  add("threads", static_cast<double>(r.thread_seconds.size()));
-  add("thread_imbalance", busy > 0 ? busiest * static_cast<double>(r.thread_seconds.size()) / busy : 0.0);
-  out += "  \"thread_seconds\": [";
-  for (std::size_t i = 0; i < r.thread_seconds.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%s%.6g", i ? ", " : "", r.thread_seconds[i]);
-    out += buf;
-  }
-  out += "],\n  \"phase_seconds\": {";
-  for (std::size_t i = 0; i < r.phases.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%s\"%s\": %.6g", i ? ", " : "", r.phases[i].name.c_str(), r.phases[i].seconds);
-    out += buf;
-  }
-  out += "},\n";
-  add("seconds", total_seconds, true);
-  return out + "}\n";
-}
-
 int mesh_body(void* context) {
   auto& args = *static_cast<MeshArgs*>(context);
   const auto start = std::chrono::steady_clock::now();
@@ -142,7 +89,13 @@ int mesh_body(void* context) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
     add_split_mesh(outputs, m, args.split_dir, stem, args.formats.first_index);
   }
-  const std::string json = args.report ? report_json(args, m, report, seconds_since(start)) : std::string();
+  const MeshMetrics figures = args.report || !args.quiet ? mesh_metrics(m, options.size) : MeshMetrics{};
+  std::string json;
+  if (args.report) {
+    std::vector<RunFigure> run = run_figures(report);
+    run.push_back({"seconds", seconds_since(start)});
+    json = format_mesh_report_json(figures, run);
+  }
   if (args.report && !args.report_out.empty()) outputs.add_file(args.report_out, json);
   writing_outputs = 1;
   outputs.write();
@@ -150,13 +103,13 @@ int mesh_body(void* context) {
   progress.done();
   if (args.report && args.report_out.empty()) std::fputs(json.c_str(), stdout);
   if (!args.quiet) {
-    const AngleFigures a = angle_figures(m);
     std::fprintf(args.report && args.report_out.empty() ? stderr : stdout,
-                 "%s: %u subdomains, %zu triangles, %zu vertices, smallest angle %.2f deg (%zu below %.4g: %zu at "
+                 "%s: %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below %.4g: %zu at "
                  "small input angles, %zu at separators), %.2f s -> %s.{node,ele}\n",
-                 args.input.c_str(), m.subdomain_count(), m.triangles.size(), m.points.size(), a.min_deg, a.below,
-                 m.min_angle_deg, m.shortfall.input_angle, m.shortfall.separator, seconds_since(start),
-                 args.prefix.c_str());
+                 args.input.c_str(), figures.subdomains, static_cast<unsigned long long>(figures.triangles),
+                 static_cast<unsigned long long>(figures.vertices), figures.min_angle_deg,
+                 static_cast<unsigned long long>(figures.below_bound), figures.min_angle_bound_deg,
+                 figures.shortfall.input_angle, figures.shortfall.separator, seconds_since(start), args.prefix.c_str());
   }
   return exit_ok;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "seconds.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
@@ -127,10 +128,6 @@ bool parse_unsigned(const char* text, unsigned long long max, unsigned long long
   if (errno != 0 || *end != '\0' || v > max) return false;
   out = v;
   return true;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 int run_partition(void* context) {

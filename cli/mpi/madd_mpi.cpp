@@ -22,15 +22,18 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <new>
 #include <string>
 #include <vector>
 
 #include "../commands.hpp"
+#include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
-#include "../mesh_figures.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh_metrics.hpp"
+#include "madd/mesh_output.hpp"
 #include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
@@ -39,6 +42,7 @@ namespace madd::mpi {
 namespace {
 
 using cli::ExitCode;
+using cli::seconds_since;
 
 constexpr const char* help_text =
     "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
@@ -148,10 +152,6 @@ ShareExchange mpi_exchange() {
   return x;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 double phase_seconds(const MeshReport& report, const char* name) {
   double s = 0;
   for (const PhaseTime& p : report.phases)
@@ -159,11 +159,10 @@ double phase_seconds(const MeshReport& report, const char* name) {
   return s;
 }
 
-// The global figures, on rank 0: sums, minima and every rank's times.
+// The global figures, on rank 0: the mesh's (its parts' combined) and every
+// rank's times.
 struct Figures {
-  std::uint64_t triangles = 0, vertices = 0;
-  double min_angle_deg = 180;
-  std::uint64_t below = 0, below_input_angle = 0, below_separator = 0;
+  MeshMetrics mesh;
   std::vector<double> decompose_seconds, mesh_seconds, format_seconds, peak_megabytes;
 };
 
@@ -174,19 +173,33 @@ double peak_megabytes() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
 }
 
-Figures gather_figures(const World& world, const MeshPart& part, const MeshReport& report, double decompose_s,
-                       double format_s) {
+// The figures of the whole mesh from every rank's part: counts add up, the
+// smallest angle and the largest subdomain are the extremes; the median does
+// not combine and is left out.
+MeshMetrics combine_figures(const MeshPart& part, const MeshSizeOptions& size) {
+  const MeshMetrics mine = mesh_metrics(part.mesh, size);
+  MeshMetrics all = mine;
+  all.triangles = part.total_triangles;
+  all.vertices = part.total_points;
+  all.median_smallest_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  MPI_Reduce(&mine.min_angle_deg, &all.min_angle_deg, 1, MPI_DOUBLE, MPI_MIN, 0, MPI_COMM_WORLD);
+  MPI_Reduce(&mine.largest_subdomain_triangles, &all.largest_subdomain_triangles, 1, MPI_UINT64_T, MPI_MAX, 0,
+             MPI_COMM_WORLD);
+  const MeshShortfall& why = mine.shortfall;
+  std::vector<std::uint64_t> counts = {mine.below_bound, why.input_angle, why.separator, why.precision, why.limit};
+  counts.insert(counts.end(), mine.smallest_angle_histogram.begin(), mine.smallest_angle_histogram.end());
+  std::vector<std::uint64_t> sums(counts.size());
+  MPI_Reduce(counts.data(), sums.data(), static_cast<int>(counts.size()), MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+  all.below_bound = sums[0];
+  all.shortfall = {sums[1], sums[2], sums[3], sums[4]};
+  std::copy(sums.begin() + 5, sums.end(), all.smallest_angle_histogram.begin());
+  return all;
+}
+
+Figures gather_figures(const World& world, const MeshPart& part, const MeshOptions& options, const MeshReport& report,
+                       double decompose_s, double format_s) {
   Figures f;
-  f.triangles = part.total_triangles;
-  f.vertices = part.total_points;
-  const cli::AngleFigures a = cli::angle_figures(part.mesh);
-  MPI_Reduce(&a.min_deg, &f.min_angle_deg, 1, MPI_DOUBLE, MPI_MIN, 0, MPI_COMM_WORLD);
-  const std::uint64_t mine[3] = {a.below, part.mesh.shortfall.input_angle, part.mesh.shortfall.separator};
-  std::uint64_t sum[3] = {};
-  MPI_Reduce(mine, sum, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
-  f.below = sum[0];
-  f.below_input_angle = sum[1];
-  f.below_separator = sum[2];
+  f.mesh = combine_figures(part, options.size);
   const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
                            format_s,
                            peak_megabytes()};
@@ -221,30 +234,16 @@ std::string list(const std::vector<double>& values) {
   return out;
 }
 
-std::string report_json(const cli::MeshArgs& args, const World& world, const Figures& f, double seconds) {
-  char buf[256];
-  std::string out = "{\n";
-  const auto add = [&](const char* key, double v) {
-    std::snprintf(buf, sizeof buf, "  \"%s\": %.17g,\n", key, v);
-    out += buf;
-  };
-  add("ranks", world.size);
-  add("subdomains", args.options.decomposition.subdomains);
-  add("triangles", static_cast<double>(f.triangles));
-  add("vertices", static_cast<double>(f.vertices));
-  add("min_angle_bound_deg", args.options.size.min_angle_deg);
-  add("max_area_bound", args.options.size.max_area);
-  add("min_angle_deg", f.min_angle_deg);
-  add("below_bound", static_cast<double>(f.below));
-  add("below_bound_input_angle", static_cast<double>(f.below_input_angle));
-  add("below_bound_separator", static_cast<double>(f.below_separator));
-  add("rank_imbalance", imbalance(f.mesh_seconds));
-  out += "  \"decompose_seconds\": [" + list(f.decompose_seconds) + "],\n";
-  out += "  \"mesh_seconds\": [" + list(f.mesh_seconds) + "],\n";
-  out += "  \"format_seconds\": [" + list(f.format_seconds) + "],\n";
-  out += "  \"peak_resident_megabytes\": [" + list(f.peak_megabytes) + "],\n";
-  std::snprintf(buf, sizeof buf, "  \"seconds_before_writing\": %.6g\n}\n", seconds);
-  return out + buf;
+// The mesh report of `madd mesh`, with every rank's figures as the run's.
+std::string report_json(const World& world, const Figures& f, double seconds) {
+  const std::vector<RunFigure> run = {{"ranks", static_cast<double>(world.size)},
+                                      {"rank_imbalance", imbalance(f.mesh_seconds)},
+                                      {"decompose_seconds", f.decompose_seconds},
+                                      {"mesh_seconds", f.mesh_seconds},
+                                      {"format_seconds", f.format_seconds},
+                                      {"peak_resident_megabytes", f.peak_megabytes},
+                                      {"seconds_before_writing", seconds}};
+  return format_mesh_report_json(f.mesh, run);
 }
 
 // Writes this rank's files (and rank 0's report file) all or nothing across
@@ -279,9 +278,9 @@ void print_summary(const World& world, const cli::MeshArgs& args, const Figures&
   std::fprintf(out,
                "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
                "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
-               args.input.c_str(), world.size, args.options.decomposition.subdomains,
-               static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
-               f.min_angle_deg, static_cast<unsigned long long>(f.below), args.options.size.min_angle_deg, seconds,
+               args.input.c_str(), world.size, f.mesh.subdomains, static_cast<unsigned long long>(f.mesh.triangles),
+               static_cast<unsigned long long>(f.mesh.vertices), f.mesh.min_angle_deg,
+               static_cast<unsigned long long>(f.mesh.below_bound), f.mesh.min_angle_bound_deg, seconds,
                args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
   std::vector<double> sorted = f.mesh_seconds;
   std::sort(sorted.begin(), sorted.end());
@@ -322,8 +321,8 @@ int run(const World& world, const cli::MeshArgs& args) {
   formats.vtu = args.formats.vtu;
   formats.first_index = args.formats.first_index;
   Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats); });
-  const Figures f = gather_figures(world, part, report, decompose_s, seconds_since(format_start));
-  const std::string json = world.rank == 0 && args.report ? report_json(args, world, f, seconds_since(start)) : "";
+  const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
+  const std::string json = world.rank == 0 && args.report ? report_json(world, f, seconds_since(start)) : "";
   if (staged.code == cli::exit_ok && !json.empty() && !args.report_out.empty())
     staged = attempt([&] { outputs.add_file(args.report_out, json); });
   if (const int written = write_everywhere(world, outputs, staged); written != cli::exit_ok) return written;
