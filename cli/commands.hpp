@@ -33,6 +33,18 @@ struct CommandRegistration {
 // The exit code of an error of this kind: the one place that decides it.
 int exit_code_of(ErrorKind kind) noexcept;
 
+// What an exception ending a command means to the user: its exit code and
+// the message after "madd CMD: " ("error: ...", "internal error: ...").
+struct Failure {
+  int code = exit_ok;
+  std::string message;
+};
+
+// The Failure of the exception being handled: madd's errors by their kind,
+// std::bad_alloc as a limit (out of memory), anything else as a bug. Call it
+// only inside a catch block (madd's run_guarded, madd-mpi's steps).
+Failure current_failure() noexcept;
+
 // Runs `body`, mapping madd's typed errors to exit codes and printing one
 // "madd: message" line on stderr. Every subcommand wraps its work in this.
 int run_guarded(const char* command, int (*body)(void*), void* context);

@@ -7,9 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <map>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -155,16 +153,10 @@ int usage_error(const char* command, const std::string& message) {
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);
-  } catch (const Error& e) {
-    const int code = exit_code_of(e.kind());
-    std::fprintf(stderr, "madd %s: %s: %s\n", command, code == exit_internal ? "internal error" : "error", e.what());
-    return code;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "madd %s: error: out of memory\n", command);
-    return exit_limit;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "madd %s: internal error: %s\n", command, e.what());
-    return exit_internal;
+  } catch (...) {
+    const Failure failure = current_failure();
+    std::fprintf(stderr, "madd %s: %s\n", command, failure.message.c_str());
+    return failure.code;
   }
 }
 

@@ -23,7 +23,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -83,24 +82,16 @@ void install_interrupt_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-// The error a rank met, as the single-process tool would say it.
-struct Failure {
-  int code = cli::exit_ok;
-  std::string message;
-};
+using cli::Failure;
 
+// Runs body(); the error a rank met, as the single-process tool would say it.
 template <typename Body>
 Failure attempt(const Body& body) {
   try {
     body();
     return {};
-  } catch (const Error& e) {
-    const int code = cli::exit_code_of(e.kind());
-    return {code, std::string(code == cli::exit_internal ? "internal error: " : "error: ") + e.what()};
-  } catch (const std::bad_alloc&) {
-    return {cli::exit_limit, "error: out of memory"};
-  } catch (const std::exception& e) {
-    return {cli::exit_internal, std::string("internal error: ") + e.what()};
+  } catch (...) {
+    return cli::current_failure();
   }
 }
 
