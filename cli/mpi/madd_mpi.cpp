@@ -24,6 +24,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../commands.hpp"
@@ -43,16 +44,14 @@ namespace {
 using cli::ExitCode;
 using cli::seconds_since;
 
-constexpr const char* help_text =
+constexpr const char* help_intro =
     "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
     "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
     "the subdomains (balanced by expected triangles) on its own threads with no\n"
     "communication, and writes its part with global ids. The union of the parts is\n"
-    "the mesh `madd mesh` makes with the same options, for any P.\n\n"
-    "Options are madd mesh's (see madd mesh --help): -q, -a, --size-fn, --sizes,\n"
-    "--balance, --no-off-centres, --no-verify, -n (required), --min-angle, -j (threads\n"
-    "per rank), --seed, --rebalance, --time-limit, --max-memory, -o PREFIX, --vtu,\n"
-    "--report[=FILE], --quiet. Not here: --neigh, --edge, --msh, --split-mesh.\n\n"
+    "the mesh `madd mesh` makes with the same options, for any P.\n\n";
+
+constexpr const char* help_outputs =
     "outputs, for every rank R:\n"
     "  PREFIX-R.node        \"id x y global owner marker\": global = the vertex's id in\n"
     "                       madd mesh's PREFIX.node, owner = the lowest rank that has it\n"
@@ -60,6 +59,45 @@ constexpr const char* help_text =
     "  PREFIX-R.vtu         with --vtu, and PREFIX.pvtu that opens all of them in ParaView\n\n"
     "exit codes: as madd's (0 ok, 2 usage, 3 bad input, 4 no decomposition, 5 output\n"
     "not written, 6 limit, 70 internal error); nothing is written unless all is.\n";
+
+// `text` broken into lines of at most 80 characters, at spaces.
+std::string wrapped(const std::string& text) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > 80) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
+// The help: madd mesh's options, from its list in the option table, named
+// with those madd-mpi does not take.
+std::string help_text() {
+  std::string taken, declined;
+  const auto whole_mesh_only = cli::whole_mesh_file_options();
+  for (const cli::OptionUse& use : cli::mesh_options().uses) {
+    if (use.name == nullptr || std::string_view(use.name) == "help") continue;
+    const char letter = cli::letter_of(use);
+    const std::string flag = letter != 0 ? std::string("-") + letter : std::string("--") + use.name;
+    const bool whole = std::find_if(whole_mesh_only.begin(), whole_mesh_only.end(), [&](const char* name) {
+                         return std::string_view(name) == use.name;
+                       }) != whole_mesh_only.end();
+    std::string& list = whole ? declined : taken;
+    list += (list.empty() ? "" : ", ") + flag;
+  }
+  return help_intro +
+         wrapped("Options are madd mesh's, with the same meanings (see madd mesh --help): " + taken +
+                 "; -n is required, -j is the thread count of each rank. Not here: " + declined + ".") +
+         "\n" + help_outputs;
+}
 
 struct World {
   int rank = 0, size = 1;
@@ -265,14 +303,14 @@ int write_everywhere(const World& world, OutputSet& outputs, Failure staged) {
 // Rank 0's summary: one line of global figures, then the meshing time of
 // every rank while they fit on a line, else their spread.
 void print_summary(const World& world, const cli::MeshArgs& args, const Figures& f, double seconds) {
-  std::FILE* out = args.report && args.report_out.empty() ? stderr : stdout;
+  std::FILE* out = args.line.report && args.line.report_file.empty() ? stderr : stdout;
   std::fprintf(out,
                "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
                "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
                args.input.c_str(), world.size, f.mesh.subdomains, static_cast<unsigned long long>(f.mesh.triangles),
                static_cast<unsigned long long>(f.mesh.vertices), f.mesh.min_angle_deg,
                static_cast<unsigned long long>(f.mesh.below_bound), f.mesh.min_angle_bound_deg, seconds,
-               args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
+               args.prefix.c_str(), args.line.formats.vtu ? " .pvtu" : "");
   std::vector<double> sorted = f.mesh_seconds;
   std::sort(sorted.begin(), sorted.end());
   if (world.size <= 16)
@@ -285,12 +323,12 @@ void print_summary(const World& world, const cli::MeshArgs& args, const Figures&
 
 int run(const World& world, const cli::MeshArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  MeshOptions options = args.options;
+  MeshOptions options = args.line.mesh;
   Pslg domain;
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.sizes_file.empty()) options.size.background_areas = read_background_samples(args.sizes_file, SampleValue::area);
+    if (!args.line.sizes_file.empty()) options.size.background_areas = read_background_samples(args.line.sizes_file, SampleValue::area);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
@@ -309,23 +347,23 @@ int run(const World& world, const cli::MeshArgs& args) {
   const auto format_start = std::chrono::steady_clock::now();
   OutputSet outputs;
   MeshPartFormats formats;
-  formats.vtu = args.formats.vtu;
-  formats.first_index = args.formats.first_index;
+  formats.vtu = args.line.formats.vtu;
+  formats.first_index = args.line.formats.first_index;
   Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats); });
   const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
-  const std::string json = world.rank == 0 && args.report ? report_json(world, f, seconds_since(start)) : "";
-  if (staged.code == cli::exit_ok && !json.empty() && !args.report_out.empty())
-    staged = attempt([&] { outputs.add_file(args.report_out, json); });
+  const std::string json = world.rank == 0 && args.line.report ? report_json(world, f, seconds_since(start)) : "";
+  if (staged.code == cli::exit_ok && !json.empty() && !args.line.report_file.empty())
+    staged = attempt([&] { outputs.add_file(args.line.report_file, json); });
   if (const int written = write_everywhere(world, outputs, staged); written != cli::exit_ok) return written;
   if (world.rank != 0) return cli::exit_ok;
-  if (!json.empty() && args.report_out.empty()) std::fputs(json.c_str(), stdout);
-  if (!args.quiet) print_summary(world, args, f, seconds_since(start));
+  if (!json.empty() && args.line.report_file.empty()) std::fputs(json.c_str(), stdout);
+  if (!args.line.quiet) print_summary(world, args, f, seconds_since(start));
   return cli::exit_ok;
 }
 
 int main_on(const World& world, int argc, char** argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-    if (world.rank == 0) std::fputs(help_text, argc < 2 ? stderr : stdout);
+    if (world.rank == 0) std::fputs(help_text().c_str(), argc < 2 ? stderr : stdout);
     return argc < 2 ? cli::exit_usage : cli::exit_ok;
   }
   if (std::strcmp(argv[1], "mesh") != 0) {
@@ -334,8 +372,8 @@ int main_on(const World& world, int argc, char** argv) {
   }
   cli::MeshArgs args;
   const std::string problem = cli::parse_mesh_arguments(argc - 1, argv + 1, args, true, false);
-  if (problem == "help") {
-    if (world.rank == 0) std::fputs(help_text, stdout);
+  if (problem.empty() && args.line.help) {
+    if (world.rank == 0) std::fputs(help_text().c_str(), stdout);
     return cli::exit_ok;
   }
   if (!problem.empty()) {
