@@ -81,6 +81,7 @@ void print_required_area(std::FILE* out, const DecomposeArgs& args, const Metric
 }
 
 void print_summary(std::FILE* out, const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
+  const CommandLine& line = args.line;
   std::fprintf(out, "%s: %zu subdomains, %zu points, %zu segments (%u separator)\n", args.input.c_str(),
                d.subdomains.size(), d.points.size(), d.segments.size(), m.separator_segments);
   std::fprintf(out, "  C1 new angles: min %s deg (bound %s), median %s, at boundary median %s\n", fig(m.angle_min).c_str(),
@@ -90,7 +91,7 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
   std::fprintf(out, "  C3 area max/mean %s, min/mean %s\n", fig(m.max_area_over_mean, "%.4f").c_str(),
                fig(m.min_area_over_mean, "%.4f").c_str());
   print_required_area(out, args, m);
-  if (args.line.verbose) {
+  if (line.verbose) {
     std::fprintf(out, "  new angles %u: p10 %s, p90 %s; at boundary %u, min %s\n", m.new_angles,
                  fig(m.angle_p10, "%.4f").c_str(), fig(m.angle_p90, "%.4f").c_str(), m.boundary_angles,
                  fig(m.boundary_angle_min, "%.4f").c_str());
@@ -101,33 +102,34 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
                  fig(m.shortest_new_segment_norm, "%.4g").c_str());
     for (const PhaseTime& t : m.times) std::fprintf(out, "  time %-12s %.3f s\n", t.name.c_str(), t.seconds);
   }
-  for (const std::string* file : {&args.line.output, &args.line.subdomains_file, &args.line.svg_file, &args.line.geo_file,
-                                    &args.line.vtk_file, &args.line.geojson_file, &args.line.report_file})
+  for (const std::string* file : {&line.output, &line.subdomains_file, &line.svg_file, &line.geo_file, &line.vtk_file,
+                                  &line.geojson_file, &line.report_file})
     if (!file->empty()) std::fprintf(out, "  wrote %s\n", file->c_str());
-  if (!args.line.split_dir.empty()) {
+  if (!line.split_dir.empty()) {
     const auto n = static_cast<std::uint32_t>(d.subdomains.size());
     const std::string stem = stem_of(args.input);
-    std::fprintf(out, "  wrote %s/%s ... %s (%u files)\n", args.line.split_dir.c_str(), split_file_name(stem, 0, n).c_str(),
-                 split_file_name(stem, n - 1, n).c_str(), n);
+    std::fprintf(out, "  wrote %s/%s ... %s (%u files)\n", line.split_dir.c_str(),
+                 split_file_name(stem, 0, n).c_str(), split_file_name(stem, n - 1, n).c_str(), n);
   }
 }
 
 // Every output is formatted in memory first, then the set is written all or
 // nothing (madd::OutputSet): a failure leaves no file of this run behind.
 void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
+  const CommandLine& line = args.line;
   OutputSet outputs;
-  if (!args.line.output.empty())
-    outputs.add_file(args.line.output, format_decomposition_poly(d, "made by madd from " + args.input));
-  if (!args.line.subdomains_file.empty()) outputs.add_file(args.line.subdomains_file, format_subdomain_file(d));
-  if (!args.line.svg_file.empty()) outputs.add_file(args.line.svg_file, format_svg(d, args.line.svg));
-  if (!args.line.geo_file.empty()) outputs.add_file(args.line.geo_file, format_geo(d));
-  if (!args.line.vtk_file.empty()) outputs.add_file(args.line.vtk_file, format_vtk(d));
-  if (!args.line.geojson_file.empty()) outputs.add_file(args.line.geojson_file, format_geojson(d));
-  if (!args.line.split_dir.empty()) add_split(outputs, d, args.line.split_dir, stem_of(args.input));
-  const std::string report = args.line.report ? format_report_json(m) : std::string();
-  if (args.line.report && !args.line.report_file.empty()) outputs.add_file(args.line.report_file, report);
+  if (!line.output.empty())
+    outputs.add_file(line.output, format_decomposition_poly(d, "made by madd from " + args.input));
+  if (!line.subdomains_file.empty()) outputs.add_file(line.subdomains_file, format_subdomain_file(d));
+  if (!line.svg_file.empty()) outputs.add_file(line.svg_file, format_svg(d, line.svg));
+  if (!line.geo_file.empty()) outputs.add_file(line.geo_file, format_geo(d));
+  if (!line.vtk_file.empty()) outputs.add_file(line.vtk_file, format_vtk(d));
+  if (!line.geojson_file.empty()) outputs.add_file(line.geojson_file, format_geojson(d));
+  if (!line.split_dir.empty()) add_split(outputs, d, line.split_dir, stem_of(args.input));
+  const std::string report = line.report ? format_report_json(m) : std::string();
+  if (line.report && !line.report_file.empty()) outputs.add_file(line.report_file, report);
   outputs.write();
-  if (args.line.report && args.line.report_file.empty()) {
+  if (line.report && line.report_file.empty()) {
     std::fputs(report.c_str(), stdout);
     std::fflush(stdout);
   }
@@ -140,22 +142,25 @@ auto with_cli_option_names(const CommandLine& line, F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const OptionError& e) {
-    throw OptionError(e.option(), e.requirement(), cli_message(e, Scope::decomposition, decompose_options, line, false));
+    const std::string message = cli_message(e, Scope::decomposition, decompose_options, line, false);
+    throw OptionError(e.option(), e.requirement(), message);
   }
 }
 
 int decompose_body(void* context) {
-  auto& args = *static_cast<DecomposeArgs*>(context);
-  Progress progress(!args.line.quiet);
-  if (progress.enabled()) args.line.mesh.decomposition.progress = [&progress](std::uint32_t done, std::uint32_t target) {
-    progress.count(done, target);
-  };
+  const auto& args = *static_cast<const DecomposeArgs*>(context);
+  const CommandLine& line = args.line;
+  Progress progress(!line.quiet);
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
-  DecomposeOptions options = args.line.mesh.decomposition;
-  if (!args.line.weights_file.empty()) options.background_weights = read_background_samples(args.line.weights_file, SampleValue::weight);
-  if (!args.line.areas_file.empty()) options.background_areas = read_background_samples(args.line.areas_file, SampleValue::area);
+  DecomposeOptions options = line.mesh.decomposition;
+  if (progress.enabled()) options.progress = [&progress](std::uint32_t done, std::uint32_t target) {
+    progress.count(done, target);
+  };
+  if (!line.weights_file.empty())
+    options.background_weights = read_background_samples(line.weights_file, SampleValue::weight);
+  if (!line.areas_file.empty()) options.background_areas = read_background_samples(line.areas_file, SampleValue::area);
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;
@@ -164,13 +169,13 @@ int decompose_body(void* context) {
 
   start = std::chrono::steady_clock::now();
   progress.say("decomposing into " + std::to_string(options.subdomains) + " subdomains");
-  const Decomposition d = with_cli_option_names(args.line, [&] { return decompose(domain, options, times); });
+  const Decomposition d = with_cli_option_names(line, [&] { return decompose(domain, options, times); });
   times.push_back({"decompose", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();
   progress.say("verifying");
-  const Verification check =
-      args.line.mesh.verify ? verify_decomposition(d, domain, expected_subdomain_count(d, options.subdomains)) : Verification{};
+  const std::uint32_t expected = expected_subdomain_count(d, options.subdomains);
+  const Verification check = line.mesh.verify ? verify_decomposition(d, domain, expected) : Verification{};
   times.push_back({"verify", seconds_since(start)});
   if (!check.ok()) {
     std::string problems;
@@ -182,24 +187,23 @@ int decompose_body(void* context) {
   writing_outputs = 1;
   // For external meshers: every segment split once to the size bound and the
   // local feature size, so that meshers keeping boundary segments join up.
-  if (args.line.mesh.size.has_size_bound()) {
-    write_outputs(args, discretise(d, args.line.mesh.size), m);
+  if (line.mesh.size.has_size_bound()) {
+    write_outputs(args, discretise(d, line.mesh.size), m);
   } else {
     write_outputs(args, d, m);
   }
   writing_outputs = 0;
   progress.done();
-  const bool report_on_stdout = args.line.report && args.line.report_file.empty();
-  if (!args.line.quiet) print_summary(report_on_stdout ? stderr : stdout, args, d, m);
+  const bool report_on_stdout = line.report && line.report_file.empty();
+  if (!line.quiet) print_summary(report_on_stdout ? stderr : stdout, args, d, m);
   return exit_ok;
 }
 
 // An output path given to two output options, or "".
-std::string output_named_twice(const DecomposeArgs& args) {
+std::string output_named_twice(const CommandLine& line) {
   std::vector<std::string> paths;
-  for (const std::string* file : {&args.line.output, &args.line.subdomains_file, &args.line.svg_file, &args.line.geo_file,
-                                  &args.line.vtk_file, &args.line.geojson_file, &args.line.report_file,
-                                  &args.line.split_dir}) {
+  for (const std::string* file : {&line.output, &line.subdomains_file, &line.svg_file, &line.geo_file, &line.vtk_file,
+                                  &line.geojson_file, &line.report_file, &line.split_dir}) {
     if (file->empty()) continue;
     const std::string normal = std::filesystem::path(*file).lexically_normal().string();
     if (std::find(paths.begin(), paths.end(), normal) != paths.end()) return *file;
@@ -241,7 +245,7 @@ int run_decompose(int argc, char** argv) {
   if (line.operands.size() != 1) return usage_error("decompose", "expected exactly one input file");
   args.input = line.operands.front();
   if (line.quiet && line.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");
-  if (const std::string twice = output_named_twice(args); !twice.empty())
+  if (const std::string twice = output_named_twice(line); !twice.empty())
     return usage_error("decompose", "'" + twice + "' is named by two outputs");
   if (const std::string problem = option_problem(line); !problem.empty()) return usage_error("decompose", problem);
   return run_guarded("decompose", decompose_body, &args);

@@ -51,7 +51,8 @@ int mesh_body(void* context) {
     options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
   }
   progress.say("reading " + args.input);
-  if (!line.sizes_file.empty()) options.size.background_areas = read_background_samples(line.sizes_file, SampleValue::area);
+  if (!line.sizes_file.empty())
+    options.size.background_areas = read_background_samples(line.sizes_file, SampleValue::area);
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
   MeshReport report;

@@ -37,9 +37,9 @@ std::span<const char* const> whole_mesh_file_options() { return whole_mesh_only;
 std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool require_subdomains,
                                  bool whole_mesh_files) {
   CommandLine& line = args.line;
-  const std::span<const char* const> declined = whole_mesh_files ? std::span<const char* const>() : whole_mesh_file_options();
-  if (std::string problem = parse_command_line(mesh_options(), argc, argv, line, declined); !problem.empty() || line.help)
-    return problem;
+  const auto declined = whole_mesh_files ? std::span<const char* const>() : whole_mesh_file_options();
+  const std::string problem = parse_command_line(mesh_options(), argc, argv, line, declined);
+  if (!problem.empty() || line.help) return problem;
   if (line.operands.size() != 1) return "expected exactly one input file";
   args.input = line.operands.front();
   if (!line.subdomains_given) {

@@ -44,9 +44,14 @@ std::string count(Text value, Flag flag, T& target) {
 template <class T>
 std::string count_in(Text value, Flag flag, unsigned long long low, unsigned long long high, T& target) {
   unsigned long long k = 0;
-  if (!parse_count(value, high, k) || k < low)
-    return refused(flag, ("needs a whole number in [" + std::to_string(low) + ", " + std::to_string(high) + "]").c_str(),
-                   value);
+  if (!parse_count(value, high, k) || k < low) {
+    std::string what = "needs a whole number in [";  // appended piece by piece: GCC 12 warns on a + chain here
+    what += std::to_string(low);
+    what += ", ";
+    what += std::to_string(high);
+    what += "]";
+    return refused(flag, what.c_str(), value);
+  }
   target = static_cast<T>(k);
   return {};
 }
@@ -103,7 +108,10 @@ using enum Scope;
 constexpr Option rows[] = {
     // The decomposition (DecomposeOptions).
     {"subdomains", 'n', required, "N", decomposition, "subdomains",
-     [](CommandLine& l, Text v, Flag f) { l.subdomains_given = true; return count(v, f, l.mesh.decomposition.subdomains); }},
+     [](CommandLine& l, Text v, Flag f) {
+       l.subdomains_given = true;
+       return count(v, f, l.mesh.decomposition.subdomains);
+     }},
     {"min-angle", 0, required, "DEG", decomposition, "min_angle_deg",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.decomposition.min_angle_deg); }},
     {"refine", 'r', required, "R", decomposition, "refine",
@@ -161,24 +169,32 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text, Flag) { l.mesh.verify = false; return std::string(); }},
 
     // Outputs.
-    {"output", 'o', required, "FILE", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.output); }},
-    {"split", 0, required, "DIR", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.split_dir); }},
+    {"output", 'o', required, "FILE", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.output); }},
+    {"split", 0, required, "DIR", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.split_dir); }},
     {"subdomains-file", 0, required, "FILE", front_end, nullptr,
      [](CommandLine& l, Text v, Flag) { return text(v, l.subdomains_file); }},
-    {"svg", 0, required, "FILE.svg", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.svg_file); }},
+    {"svg", 0, required, "FILE.svg", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.svg_file); }},
     {"svg-numbers", 0, none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { l.svg.numbers = true; return std::string(); }},
     {"svg-mark-angles", 0, required, "DEG", svg, "mark_angles_below_deg",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.svg.mark_angles_below_deg); }},
-    {"geo", 0, required, "FILE.geo", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.geo_file); }},
-    {"vtk", 0, required, "FILE.vtk", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.vtk_file); }},
-    {"geojson", 0, required, "FILE", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.geojson_file); }},
-    {"msh", 0, none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { l.formats.msh = true; return std::string(); }},
+    {"geo", 0, required, "FILE.geo", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.geo_file); }},
+    {"vtk", 0, required, "FILE.vtk", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.vtk_file); }},
+    {"geojson", 0, required, "FILE", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.geojson_file); }},
+    {"msh", 0, none, nullptr, front_end, nullptr,
+     [](CommandLine& l, Text, Flag) { l.formats.msh = true; return std::string(); }},
     {"neigh", 0, none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { l.formats.neigh = true; return std::string(); }},
     {"edge", 0, none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { l.formats.edge = true; return std::string(); }},
-    {"vtu", 0, none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { l.formats.vtu = true; return std::string(); }},
+    {"vtu", 0, none, nullptr, front_end, nullptr,
+     [](CommandLine& l, Text, Flag) { l.formats.vtu = true; return std::string(); }},
     {"split-mesh", 0, required, "DIR", front_end, nullptr,
      [](CommandLine& l, Text v, Flag) { return text(v, l.split_mesh_dir); }},
     {"report", 0, optional, "FILE", front_end, nullptr,
@@ -208,9 +224,13 @@ constexpr Option rows[] = {
     {"nooutput", 0, none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { l.write_output = false; return std::string(); }},
     {"ptype", 0, required, "rb", front_end, nullptr,
-     [](CommandLine&, Text v, Flag) { return only(v, "ptype", "rb", "madd partitions by recursive bisection only (-ptype=rb)"); }},
+     [](CommandLine&, Text v, Flag) {
+       return only(v, "ptype", "rb", "madd partitions by recursive bisection only (-ptype=rb)");
+     }},
     {"objtype", 0, required, "cut", front_end, nullptr,
-     [](CommandLine&, Text v, Flag) { return only(v, "objtype", "cut", "madd minimises the edge cut only (-objtype=cut)"); }},
+     [](CommandLine&, Text v, Flag) {
+       return only(v, "objtype", "cut", "madd minimises the edge cut only (-objtype=cut)");
+     }},
     {"ctype", 0, required, "shem", front_end, nullptr,
      [](CommandLine&, Text v, Flag) {
        return only(v, "ctype", "shem", "madd coarsens by heavy-edge matching only (-ctype=shem)");
@@ -222,10 +242,12 @@ constexpr Option rows[] = {
     {"no2hop", 0, none, nullptr, front_end, nullptr, [](CommandLine&, Text, Flag) { return std::string(); }},
 
     // Every command's.
-    {"quiet", 'q', none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { l.quiet = true; return std::string(); }},
+    {"quiet", 'q', none, nullptr, front_end, nullptr,
+     [](CommandLine& l, Text, Flag) { l.quiet = true; return std::string(); }},
     {"verbose", 'v', none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { l.verbose = true; return std::string(); }},
-    {"help", 'h', none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { l.help = true; return std::string(); }},
+    {"help", 'h', none, nullptr, front_end, nullptr,
+     [](CommandLine& l, Text, Flag) { l.help = true; return std::string(); }},
 };
 
 } // namespace

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "option_table.hpp"
+#include "cli/option_table.hpp"
 #include "madd/decomposition.hpp"
 
 #ifdef MADD_CLI_PATH

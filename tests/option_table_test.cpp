@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
-#include "option_table.hpp"
+#include "cli/command_line.hpp"
+#include "cli/option_table.hpp"
 #include "madd/error.hpp"
 
 namespace {

@@ -328,7 +328,8 @@ int run(const World& world, const cli::MeshArgs& args) {
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.line.sizes_file.empty()) options.size.background_areas = read_background_samples(args.line.sizes_file, SampleValue::area);
+    if (!args.line.sizes_file.empty())
+      options.size.background_areas = read_background_samples(args.line.sizes_file, SampleValue::area);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
