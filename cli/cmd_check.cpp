@@ -167,12 +167,8 @@ int check_body(void* context) {
 int run_check(int argc, char** argv) {
   const CommandOptions& options = options_of("check");
   CommandLine line;
-  if (const std::string problem = parse_command_line(options, argc, argv, line); !problem.empty())
-    return usage_error("check", problem);
-  if (line.help) {
-    std::fputs((check_intro + options_help(options) + check_exit_codes).c_str(), stdout);
-    return exit_ok;
-  }
+  if (const auto done = read_command_line(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
+    return *done;
   if (line.operands.size() != 1) return usage_error("check", "expected exactly one input file");
   CheckArgs args;
   args.path = line.operands.front();

@@ -236,12 +236,8 @@ int run_decompose(int argc, char** argv) {
   DecomposeArgs args;
   CommandLine& line = args.line;
   line.mesh.decomposition = DecomposeOptions{};  // a bare decomposition's defaults, not meshing's
-  if (const std::string problem = parse_command_line(decompose_options, argc, argv, line); !problem.empty())
-    return usage_error("decompose", problem);
-  if (line.help) {
-    std::fputs((decompose_intro + options_help(decompose_options) + decompose_exit_codes).c_str(), stdout);
-    return exit_ok;
-  }
+  const std::string help = decompose_intro + options_help(decompose_options) + decompose_exit_codes;
+  if (const auto done = read_command_line(decompose_options, argc, argv, line, help)) return *done;
   if (line.operands.size() != 1) return usage_error("decompose", "expected exactly one input file");
   args.input = line.operands.front();
   if (line.quiet && line.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");

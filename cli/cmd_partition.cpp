@@ -44,7 +44,7 @@ constexpr const char* partition_gpmetis =
     "does anyway: -ptype=rb, -objtype=cut, -ctype=shem, -iptype=grow, -no2hop. Other\n"
     "values (-ptype=kway...) and -minconn, -tpwgts, -ubvec, -ncuts, -dbglvl are refused.\n";
 
-void print_usage() {
+std::string usage() {
   const std::string options = options_help(options_of("partition"));
   const std::string_view niter = "{niter}";  // the library's default, not a copy of it
   const std::size_t at = options.find(niter);
@@ -53,7 +53,7 @@ void print_usage() {
   text += std::to_string(PartitionOptions{}.refinement_passes);
   text.append(options, at + niter.size());
   text += partition_gpmetis;
-  std::fputs(text.c_str(), stdout);
+  return text;
 }
 
 // gpmetis's options (METIS 5.1 gpmetis -help): the `supported` ones are
@@ -153,12 +153,7 @@ int run(int argc, char** argv) {
   std::vector<std::string> translated;
   if (const std::string problem = translate_gpmetis_options(argc, argv, translated); !problem.empty())
     return usage_error("partition", problem);
-  if (const std::string problem = parse_command_line(options_of("partition"), argc, argv, line); !problem.empty())
-    return usage_error("partition", problem);
-  if (line.help) {
-    print_usage();
-    return exit_ok;
-  }
+  if (const auto done = read_command_line(options_of("partition"), argc, argv, line, usage())) return *done;
   if (line.operands.empty() || line.operands.size() > 2) return usage_error("partition", "expected GRAPH [K]");
   args.graph = line.operands[0];
   if (line.operands.size() == 2) {

@@ -79,12 +79,8 @@ int run_script_command(int argc, char** argv) {
   // option, and a script whose name starts with '-' follows '--'.
   const CommandOptions& options = options_of("script");
   CommandLine line;
-  if (const std::string problem = parse_command_line(options, argc, argv, line); !problem.empty())
-    return usage_error("script", problem);
-  if (line.help) {
-    std::fputs((script_intro + options_help(options) + script_exit_codes).c_str(), stdout);
-    return exit_ok;
-  }
+  if (const auto done = read_command_line(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes))
+    return *done;
   if (line.operands.size() != 1) return usage_error("script", "expected exactly one script file (or '-' for stdin)");
   ScriptArgs args{line.operands.front(), line.quiet};
   return run_guarded("script", script_body, &args);

@@ -218,12 +218,8 @@ int triangulate_body(void* context) {
 int run_triangulate(int argc, char** argv) {
   const CommandOptions& options = options_of("triangulate");
   CommandLine line;
-  if (const std::string problem = parse_command_line(options, argc, argv, line); !problem.empty())
-    return usage_error("triangulate", problem);
-  if (line.help) {
-    std::fputs((triangulate_intro + options_help(options) + triangulate_exit_codes).c_str(), stdout);
-    return exit_ok;
-  }
+  const std::string help = triangulate_intro + options_help(options) + triangulate_exit_codes;
+  if (const auto done = read_command_line(options, argc, argv, line, help)) return *done;
   if (line.operands.size() != 1) return usage_error("triangulate", "expected exactly one input file");
   Args args;
   args.input = line.operands.front();

@@ -1,6 +1,7 @@
 #pragma once
 // The CLI's subcommands and exit codes. Each subcommand lives in its own
 // cli/cmd_<name>.cpp and registers itself; main.cpp only dispatches.
+#include <optional>
 #include <string>
 
 #include "madd/error.hpp"
@@ -51,6 +52,15 @@ int run_guarded(const char* command, int (*body)(void*), void* context);
 
 // Prints "madd <command>: message" on stderr and returns exit_usage.
 int usage_error(const char* command, const std::string& message);
+
+struct CommandLine;     // cli/command_line.hpp
+struct CommandOptions;  // cli/option_table.hpp
+
+// Reads the command line into `line` with the command's options. Returns the
+// exit code when the command is done with it: a usage problem said (exit 2),
+// or --help asked and `help` printed; nullopt when the command should run.
+std::optional<int> read_command_line(const CommandOptions& options, int argc, char** argv, CommandLine& line,
+                                     const std::string& help);
 
 const char* version_string() noexcept;
 

@@ -1,6 +1,5 @@
 // madd's entry point: global options, then dispatch to a subcommand.
 // Decomposition is the default mode: `madd [options] INPUT.poly`.
-#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,7 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "commands.hpp"
+#include "interrupts.hpp"
+#include "option_table.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 
@@ -67,12 +69,7 @@ void on_interrupt(int signal_number) {
 
 void install_interrupt_handlers() {
   stderr_is_terminal = ::isatty(STDERR_FILENO) == 1 ? 1 : 0;
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  on_interrupts(on_interrupt);
 }
 
 int exit_after(int code) { return interrupted_by != 0 ? 128 + interrupted_by : code; }
@@ -148,6 +145,15 @@ const char* version_string() noexcept {
 int usage_error(const char* command, const std::string& message) {
   std::fprintf(stderr, "madd %s: %s\n(try 'madd %s --help')\n", command, message.c_str(), command);
   return exit_usage;
+}
+
+std::optional<int> read_command_line(const CommandOptions& options, int argc, char** argv, CommandLine& line,
+                                     const std::string& help) {
+  if (const std::string problem = parse_command_line(options, argc, argv, line); !problem.empty())
+    return usage_error(options.command, problem);
+  if (!line.help) return std::nullopt;
+  std::fputs(help.c_str(), stdout);
+  return exit_ok;
 }
 
 int run_guarded(const char* command, int (*body)(void*), void* context) {

@@ -66,6 +66,16 @@ std::string function(Text value, Flag flag, std::function<double(double, double)
   }
 }
 
+// An option without a value: it turns a switch on (or off).
+std::string switch_on(bool& target) {
+  target = true;
+  return {};
+}
+std::string switch_off(bool& target) {
+  target = false;
+  return {};
+}
+
 std::string text(Text value, std::string& target) {
   target = value;
   return {};
@@ -164,9 +174,9 @@ constexpr Option rows[] = {
     {"balance", 0, required, "area|work", front_end, nullptr,
      [](CommandLine& l, Text v, Flag f) { return balance(v, f, l.mesh.balance_by_work); }},
     {"no-off-centres", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.mesh.off_centres = false; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_off(l.mesh.off_centres); }},
     {"no-verify", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.mesh.verify = false; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_off(l.mesh.verify); }},
 
     // Outputs.
     {"output", 'o', required, "FILE", front_end, nullptr,
@@ -178,7 +188,7 @@ constexpr Option rows[] = {
     {"svg", 0, required, "FILE.svg", front_end, nullptr,
      [](CommandLine& l, Text v, Flag) { return text(v, l.svg_file); }},
     {"svg-numbers", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.svg.numbers = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.svg.numbers); }},
     {"svg-mark-angles", 0, required, "DEG", svg, "mark_angles_below_deg",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.svg.mark_angles_below_deg); }},
     {"geo", 0, required, "FILE.geo", front_end, nullptr,
@@ -188,13 +198,13 @@ constexpr Option rows[] = {
     {"geojson", 0, required, "FILE", front_end, nullptr,
      [](CommandLine& l, Text v, Flag) { return text(v, l.geojson_file); }},
     {"msh", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.formats.msh = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.formats.msh); }},
     {"neigh", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.formats.neigh = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.formats.neigh); }},
     {"edge", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.formats.edge = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.formats.edge); }},
     {"vtu", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.formats.vtu = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.formats.vtu); }},
     {"split-mesh", 0, required, "DIR", front_end, nullptr,
      [](CommandLine& l, Text v, Flag) { return text(v, l.split_mesh_dir); }},
     {"report", 0, optional, "FILE", front_end, nullptr,
@@ -206,11 +216,11 @@ constexpr Option rows[] = {
 
     // Triangulate (TriangulateOptions).
     {"convex-hull", 'c', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.triangulate.convex_hull = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.triangulate.convex_hull); }},
     {"region-attributes", 'A', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.triangulate.region_attributes = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.triangulate.region_attributes); }},
     {"resolve-crossings", 'r', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.resolve_crossings = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.resolve_crossings); }},
 
     // Partition (PartitionOptions), and gpmetis's spellings of what madd does anyway.
     {"parts", 'k', required, "K", front_end, nullptr,
@@ -218,11 +228,11 @@ constexpr Option rows[] = {
     {"ufactor", 'u', required, "U", front_end, nullptr,
      [](CommandLine& l, Text v, Flag f) { return count_in(v, f, 0, 1000000, l.ufactor); }},
     {"contig", 'c', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.partition.connected = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.partition.connected); }},
     {"niter", 0, required, "N", front_end, nullptr,
      [](CommandLine& l, Text v, Flag f) { return count_in(v, f, 0, 1000, l.partition.refinement_passes); }},
     {"nooutput", 0, none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.write_output = false; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_off(l.write_output); }},
     {"ptype", 0, required, "rb", front_end, nullptr,
      [](CommandLine&, Text v, Flag) {
        return only(v, "ptype", "rb", "madd partitions by recursive bisection only (-ptype=rb)");
@@ -242,12 +252,10 @@ constexpr Option rows[] = {
     {"no2hop", 0, none, nullptr, front_end, nullptr, [](CommandLine&, Text, Flag) { return std::string(); }},
 
     // Every command's.
-    {"quiet", 'q', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.quiet = true; return std::string(); }},
+    {"quiet", 'q', none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { return switch_on(l.quiet); }},
     {"verbose", 'v', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.verbose = true; return std::string(); }},
-    {"help", 'h', none, nullptr, front_end, nullptr,
-     [](CommandLine& l, Text, Flag) { l.help = true; return std::string(); }},
+     [](CommandLine& l, Text, Flag) { return switch_on(l.verbose); }},
+    {"help", 'h', none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { return switch_on(l.help); }},
 };
 
 } // namespace

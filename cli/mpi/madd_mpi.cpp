@@ -13,7 +13,6 @@
 // job (MPI_Abort) before anything is written; a part that cannot be written
 // makes every rank remove what it staged.
 #include <mpi.h>
-#include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -28,6 +27,7 @@
 #include <vector>
 
 #include "../commands.hpp"
+#include "../interrupts.hpp"
 #include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
 #include "madd/atomic_write.hpp"
@@ -111,14 +111,6 @@ void on_interrupt(int signal_number) {
   ::_exit(128 + signal_number);
 }
 
-void install_interrupt_handlers() {
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
 
 using cli::Failure;
 
@@ -394,7 +386,7 @@ int main(int argc, char** argv) {
   madd::mpi::World world;
   MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &world.size);
-  madd::mpi::install_interrupt_handlers();
+  madd::cli::on_interrupts(madd::mpi::on_interrupt);
   const int code = madd::mpi::main_on(world, argc, argv);
   MPI_Finalize();
   return code;
