@@ -154,13 +154,10 @@ int decompose_body(void* context) {
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
-  DecomposeOptions options = line.mesh.decomposition;
+  DecomposeOptions options = with_background_files(line).decomposition;
   if (progress.enabled()) options.progress = [&progress](std::uint32_t done, std::uint32_t target) {
     progress.count(done, target);
   };
-  if (!line.weights_file.empty())
-    options.background_weights = read_background_samples(line.weights_file, SampleValue::weight);
-  if (!line.areas_file.empty()) options.background_areas = read_background_samples(line.areas_file, SampleValue::area);
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;

@@ -43,16 +43,14 @@ int mesh_body(void* context) {
   const CommandLine& line = args.line;
   const auto start = std::chrono::steady_clock::now();
   Progress progress(!line.quiet);
-  MeshOptions options = line.mesh;
+  progress.say("reading " + args.input);
+  MeshOptions options = with_background_files(line);
   if (progress.enabled()) {
     options.decomposition.progress = [&progress](std::uint32_t done, std::uint32_t target) {
       progress.count(done, target);
     };
     options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
   }
-  progress.say("reading " + args.input);
-  if (!line.sizes_file.empty())
-    options.size.background_areas = read_background_samples(line.sizes_file, SampleValue::area);
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
   MeshReport report;

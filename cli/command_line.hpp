@@ -51,4 +51,10 @@ struct CommandLine {
   std::map<std::string, Typed> typed;    // by option name: what the user typed, for messages
 };
 
+// line.mesh with the background meshes the command line names read into the
+// options they are for: --weights and --areas into the decomposition's
+// density weights and required areas, --sizes into the triangle sizes.
+// Throws what read_background_samples throws (bad input, exit 3).
+MeshOptions with_background_files(const CommandLine& line);
+
 } // namespace madd::cli

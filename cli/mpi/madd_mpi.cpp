@@ -315,13 +315,12 @@ void print_summary(const World& world, const cli::MeshArgs& args, const Figures&
 
 int run(const World& world, const cli::MeshArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  MeshOptions options = args.line.mesh;
+  MeshOptions options;
   Pslg domain;
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.line.sizes_file.empty())
-      options.size.background_areas = read_background_samples(args.line.sizes_file, SampleValue::area);
+    options = cli::with_background_files(args.line);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
