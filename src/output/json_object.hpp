@@ -40,21 +40,17 @@ public:
     out_.append(name);
     out_ += "\": ";
   }
-  // The shortest text that reads back as v; null when not finite (JSON has no NaN or infinity).
-  void number(std::string_view name, double v) {
+  // How a number is written: the shortest text that reads back as it, or every digit (%.17g).
+  enum class Digits { shortest, all };
+  // v, or null when not finite (JSON has no NaN or infinity).
+  void number(std::string_view name, double v, Digits digits = Digits::shortest) {
     key(name);
-    if (std::isfinite(v))
-      append_shortest(out_, v);
-    else
+    if (!std::isfinite(v))
       out_ += "null";
-  }
-  // Every digit of v (%.17g); null when not finite.
-  void exact(std::string_view name, double v) {
-    key(name);
-    if (std::isfinite(v))
+    else if (digits == Digits::all)
       append_g17(out_, v);
     else
-      out_ += "null";
+      append_shortest(out_, v);
   }
   void count(std::string_view name, std::uint64_t v) {
     key(name);

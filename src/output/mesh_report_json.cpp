@@ -23,7 +23,7 @@ void append_seconds(std::string& out, double seconds) {
 
 void add_run_figure(detail::JsonObject& o, std::string& out, const RunFigure& figure) {
   if (const auto* number = std::get_if<double>(&figure.value)) {
-    o.exact(figure.name, *number);
+    o.number(figure.name, *number, detail::JsonObject::Digits::all);
   } else if (const auto* list = std::get_if<std::vector<double>>(&figure.value)) {
     o.key(figure.name);
     out += "[";
@@ -51,15 +51,16 @@ void add_run_figure(detail::JsonObject& o, std::string& out, const RunFigure& fi
 std::string format_mesh_report_json(const MeshMetrics& m, const std::vector<RunFigure>& run) {
   std::string out;
   detail::JsonObject o(out);
+  constexpr auto all = detail::JsonObject::Digits::all;  // as madd mesh has always written them
   o.count("subdomains", m.subdomains);
   o.count("triangles", m.triangles);
   o.count("vertices", m.vertices);
-  o.exact("min_angle_bound_deg", m.min_angle_bound_deg);
-  o.exact("max_area_bound", m.max_area_bound);
-  o.exact("min_angle_deg", m.min_angle_deg);
-  if (!std::isnan(m.median_smallest_angle_deg)) o.exact("median_smallest_angle_deg", m.median_smallest_angle_deg);
+  o.number("min_angle_bound_deg", m.min_angle_bound_deg, all);
+  o.number("max_area_bound", m.max_area_bound, all);
+  o.number("min_angle_deg", m.min_angle_deg, all);
+  if (!std::isnan(m.median_smallest_angle_deg)) o.number("median_smallest_angle_deg", m.median_smallest_angle_deg, all);
   o.count("below_bound", m.below_bound);
-  o.exact("share_below_bound", m.share_below_bound());
+  o.number("share_below_bound", m.share_below_bound(), all);
   o.count("below_bound_input_angle", m.shortfall.input_angle);
   o.count("below_bound_separator", m.shortfall.separator);
   o.count("below_bound_precision", m.shortfall.precision);
@@ -71,7 +72,7 @@ std::string format_mesh_report_json(const MeshMetrics& m, const std::vector<RunF
     detail::append_int(out, static_cast<std::int64_t>(m.smallest_angle_histogram[i]));
   }
   out += "]";
-  o.exact("max_over_mean_triangles", m.max_over_mean_triangles());
+  o.number("max_over_mean_triangles", m.max_over_mean_triangles(), all);
   for (const RunFigure& figure : run) add_run_figure(o, out, figure);
   o.close();
   return out;
