@@ -1,7 +1,5 @@
 // `madd check FILE.poly|FILE.node`: read and validate a domain, a PSLG or a
 // point set, print a summary.
-#include <getopt.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +7,9 @@
 #include <limits>
 #include <string>
 
+#include "command_line.hpp"
 #include "commands.hpp"
+#include "option_table.hpp"
 #include "point_set.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
@@ -19,7 +19,7 @@
 namespace madd::cli {
 namespace {
 
-constexpr const char* check_help =
+constexpr const char* check_intro =
     "usage: madd check [options] FILE.poly|FILE.node\n\n"
     "Reads and validates a domain (Triangle .poly) and prints a summary: vertices,\n"
     "segments, holes, regions, area, bounding box and shortest segment, and the\n"
@@ -31,10 +31,10 @@ constexpr const char* check_help =
     "A point set (a .node, or a .poly without segments and holes: what madd\n"
     "triangulate takes) is checked for coordinates, duplicates and at least one\n"
     "triangle; the summary gives points, bounding box, convex hull and closest pair.\n\n"
-    "options:\n"
-    "  -q, --quiet   print nothing on success; only the exit code tells\n"
-    "  -h, --help    this text\n\n"
-    "exit codes: 0 valid, 2 usage error, 3 bad input (one line: path:line:column: message)\n";
+    "options:\n";
+
+constexpr const char* check_exit_codes =
+    "\nexit codes: 0 valid, 2 usage error, 3 bad input (one line: path:line:column: message)\n";
 
 struct CheckArgs {
   std::string path;
@@ -165,20 +165,14 @@ int check_body(void* context) {
 }
 
 int run_check(int argc, char** argv) {
-  static const option long_options[] = {
-      {"quiet", no_argument, nullptr, 'q'}, {"help", no_argument, nullptr, 'h'}, {nullptr, 0, nullptr, 0}};
+  const CommandOptions& options = options_of("check");
+  CommandLine line;
+  if (const auto done = read_command_line(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
+    return *done;
+  if (line.operands.size() != 1) return usage_error("check", "expected exactly one input file");
   CheckArgs args;
-  optind = 0;
-  int c;
-  while ((c = getopt_long(argc, argv, "qh", long_options, nullptr)) != -1) {
-    switch (c) {
-    case 'q': args.quiet = true; break;
-    case 'h': std::fputs(check_help, stdout); return exit_ok;
-    default: return usage_error("check", "unknown option");
-    }
-  }
-  if (optind + 1 != argc) return usage_error("check", "expected exactly one input file");
-  args.path = argv[optind];
+  args.path = line.operands.front();
+  args.quiet = line.quiet;
   return run_guarded("check", check_body, &args);
 }
 

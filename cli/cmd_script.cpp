@@ -1,7 +1,5 @@
 // `madd script FILE` (also `madd --script FILE`): runs a script of the
 // paper's maddi commands (Sec. 6, Table II; docs/script.md). `-` reads stdin.
-#include <getopt.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,14 +9,16 @@
 #include <sstream>
 #include <string>
 
+#include "command_line.hpp"
 #include "commands.hpp"
+#include "option_table.hpp"
 #include "madd/error.hpp"
 #include "madd/script.hpp"
 
 namespace madd::cli {
 namespace {
 
-constexpr const char* script_help =
+constexpr const char* script_intro =
     "usage: madd script [options] FILE      (or: madd --script FILE)\n\n"
     "Runs the commands of FILE ('-' for stdin), one per line, as the paper's maddi\n"
     "interface does. Example:\n\n"
@@ -43,10 +43,10 @@ constexpr const char* script_help =
     "'#' starts a comment. Relative file names are relative to the current directory.\n"
     "Options may also follow FILE; a FILE whose name starts with '-' follows '--'.\n"
     "Every decomposition is self-checked before any file is written.\n\n"
-    "options:\n"
-    "  -q, --quiet            print nothing on success\n"
-    "  -h, --help             this text\n\n"
-    "exit codes: 0 success, 2 usage error or bad option value, 3 bad script or input (script:line:column),\n"
+    "options:\n";
+
+constexpr const char* script_exit_codes =
+    "\nexit codes: 0 success, 2 usage error or bad option value, 3 bad script or input (script:line:column),\n"
     "4 no valid decomposition, 5 an output could not be written, 70 internal error\n";
 
 struct ScriptArgs {
@@ -75,28 +75,14 @@ int script_body(void* context) {
 }
 
 int run_script_command(int argc, char** argv) {
-  static const option long_options[] = {{"quiet", no_argument, nullptr, 'q'},
-                                        {"help", no_argument, nullptr, 'h'},
-                                        {nullptr, 0, nullptr, 0}};
-  ScriptArgs args;
-  optind = 0;
-  opterr = 0;
-  int c;
   // Options may follow the file, as for every command; '-' (stdin) is not an
   // option, and a script whose name starts with '-' follows '--'.
-  while ((c = getopt_long(argc, argv, ":qh", long_options, nullptr)) != -1) {
-    if (c == 'h') {
-      std::fputs(script_help, stdout);
-      return exit_ok;
-    }
-    if (c == 'q') {
-      args.quiet = true;
-      continue;
-    }
-    return usage_error("script", std::string("unknown option '") + argv[optind - 1] + "'");
-  }
-  if (optind + 1 != argc) return usage_error("script", "expected exactly one script file (or '-' for stdin)");
-  args.file = argv[optind];
+  const CommandOptions& options = options_of("script");
+  CommandLine line;
+  if (const auto done = read_command_line(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes))
+    return *done;
+  if (line.operands.size() != 1) return usage_error("script", "expected exactly one script file (or '-' for stdin)");
+  ScriptArgs args{line.operands.front(), line.quiet};
   return run_guarded("script", script_body, &args);
 }
 

@@ -2,15 +2,15 @@
 // triangulation of any PSLG, written as Triangle writes it (.node, .ele,
 // .neigh, .edge). A FILE.node (points only) gives the Delaunay triangulation
 // of its points.
-#include <getopt.h>
-
 #include <charconv>
 #include <concepts>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "commands.hpp"
+#include "option_table.hpp"
 #include "point_set.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
@@ -21,7 +21,7 @@
 namespace madd::cli {
 namespace {
 
-constexpr const char* triangulate_help =
+constexpr const char* triangulate_intro =
     "usage: madd triangulate [options] FILE.poly|FILE.node\n\n"
     "Constrained Delaunay triangulation of the planar straight line graph in\n"
     "FILE.poly: every vertex (isolated ones too) is a vertex of it, every segment\n"
@@ -35,17 +35,10 @@ constexpr const char* triangulate_help =
     "Markers follow Triangle: constrained edges carry their segment's marker, other\n"
     "edges 0 (hull edges 1 for points); vertices keep a nonzero input marker,\n"
     "else take a marker of a segment through them, else 1 on the boundary.\n\n"
-    "options:\n"
-    "  -c, --convex-hull    keep the whole convex hull but the holes (Triangle -pc)\n"
-    "  -A, --region-attributes\n"
-    "                       give each triangle the attribute of its region (a column\n"
-    "                       of PREFIX.ele; 0 outside every region), as Triangle -A\n"
-    "  -r, --resolve-crossings\n"
-    "                       split crossing and overlapping segments at new\n"
-    "                       intersection vertices (default: such segments are bad input)\n"
-    "  -o, --output PREFIX  output prefix (default: FILE without .poly or .node, plus \".1\")\n"
-    "  -q, --quiet          print nothing on success\n"
-    "  -h, --help           this text\n\n"
+    "options:\n";
+
+constexpr const char* triangulate_exit_codes =
+    "\n"
     "exit codes: 0 ok, 2 usage error, 3 bad input, 5 output not written, 70 internal error\n";
 
 struct Args {
@@ -223,29 +216,17 @@ int triangulate_body(void* context) {
 }
 
 int run_triangulate(int argc, char** argv) {
-  static const option long_options[] = {{"convex-hull", no_argument, nullptr, 'c'},
-                                        {"region-attributes", no_argument, nullptr, 'A'},
-                                        {"resolve-crossings", no_argument, nullptr, 'r'},
-                                        {"output", required_argument, nullptr, 'o'},
-                                        {"quiet", no_argument, nullptr, 'q'},
-                                        {"help", no_argument, nullptr, 'h'},
-                                        {nullptr, 0, nullptr, 0}};
+  const CommandOptions& options = options_of("triangulate");
+  CommandLine line;
+  const std::string help = triangulate_intro + options_help(options) + triangulate_exit_codes;
+  if (const auto done = read_command_line(options, argc, argv, line, help)) return *done;
+  if (line.operands.size() != 1) return usage_error("triangulate", "expected exactly one input file");
   Args args;
-  optind = 0;
-  int c;
-  while ((c = getopt_long(argc, argv, "cAro:qh", long_options, nullptr)) != -1) {
-    switch (c) {
-    case 'c': args.options.convex_hull = true; break;
-    case 'A': args.options.region_attributes = true; break;
-    case 'r': args.resolve = true; break;
-    case 'o': args.prefix = optarg; break;
-    case 'q': args.quiet = true; break;
-    case 'h': std::fputs(triangulate_help, stdout); return exit_ok;
-    default: return usage_error("triangulate", "unknown option");
-    }
-  }
-  if (optind + 1 != argc) return usage_error("triangulate", "expected exactly one input file");
-  args.input = argv[optind];
+  args.input = line.operands.front();
+  args.prefix = line.output;
+  args.quiet = line.quiet;
+  args.resolve = line.resolve_crossings;
+  args.options = line.triangulate;
   if (args.prefix.empty()) {
     std::string stem = args.input;
     for (const char* ext : {".poly", ".node"}) {

@@ -1,19 +1,19 @@
 // madd's entry point: global options, then dispatch to a subcommand.
 // Decomposition is the default mode: `madd [options] INPUT.poly`.
-#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <map>
-#include <new>
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "commands.hpp"
+#include "interrupts.hpp"
+#include "option_table.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 
@@ -69,12 +69,7 @@ void on_interrupt(int signal_number) {
 
 void install_interrupt_handlers() {
   stderr_is_terminal = ::isatty(STDERR_FILENO) == 1 ? 1 : 0;
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  on_interrupts(on_interrupt);
 }
 
 int exit_after(int code) { return interrupted_by != 0 ? 128 + interrupted_by : code; }
@@ -152,19 +147,22 @@ int usage_error(const char* command, const std::string& message) {
   return exit_usage;
 }
 
+std::optional<int> read_command_line(const CommandOptions& options, int argc, char** argv, CommandLine& line,
+                                     const std::string& help) {
+  if (const std::string problem = parse_command_line(options, argc, argv, line); !problem.empty())
+    return usage_error(options.command, problem);
+  if (!line.help) return std::nullopt;
+  std::fputs(help.c_str(), stdout);
+  return exit_ok;
+}
+
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);
-  } catch (const Error& e) {
-    const int code = exit_code_of(e.kind());
-    std::fprintf(stderr, "madd %s: %s: %s\n", command, code == exit_internal ? "internal error" : "error", e.what());
-    return code;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "madd %s: error: out of memory\n", command);
-    return exit_limit;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "madd %s: internal error: %s\n", command, e.what());
-    return exit_internal;
+  } catch (...) {
+    const Failure failure = current_failure();
+    std::fprintf(stderr, "madd %s: %s\n", command, failure.message.c_str());
+    return failure.code;
   }
 }
 

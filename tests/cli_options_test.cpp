@@ -9,8 +9,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+
+#include "cli/option_table.hpp"
+#include "madd/decomposition.hpp"
 
 #ifdef MADD_CLI_PATH
 
@@ -54,6 +58,15 @@ const std::string pipe_poly = std::string(MADD_DATA_DIR) + "/pipe.poly";
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// The first line of the output after "madd COMMAND: ".
+std::string problem_of(const std::string& output, const std::string& command) {
+  const std::string prefix = "madd " + command + ": ";
+  const std::size_t at = output.find(prefix);
+  if (at == std::string::npos) return {};
+  const std::size_t from = at + prefix.size();
+  return output.substr(from, output.find('\n', from) - from);
+}
+
 } // namespace
 
 TEST_SUITE("cli options") {
@@ -67,15 +80,21 @@ TEST_CASE("an option out of its range is a usage error naming the flag, and noth
   const Bad cases[] = {
       {"--min-angle 0", "--min-angle must lie strictly between 0 and 90 degrees, got '0'"},
       {"--min-angle 90", "--min-angle"},
-      {"-n 0", "--subdomains must be at least 1"},
-      {"-i 0", "--imbalance must lie in (0, 1]"},
-      {"-j 5000", "--threads must be at most 4096"},
+      {"-n 0", "-n must be at least 1"},  // the flag as typed, short or long
+      {"--subdomains 0", "--subdomains must be at least 1"},
+      {"-i 0", "-i must lie in (0, 1]"},
+      {"--imbalance 1.5", "--imbalance must lie in (0, 1]"},
+      {"-j 5000", "-j must be at most 4096"},
+      {"--threads 5000", "--threads must be at most 4096"},
       {"--smoothing 1001", "--smoothing"},
-      {"-r 0", "--refine"},
-      {"-a -1", "--gradation"},
+      {"-r 0", "-r must be"},
+      {"--refine 0", "--refine must be"},
+      {"-a -1", "-a must be"},  // the deprecated letter still works, and is named as typed
+      {"--gradation -1", "--gradation must be"},
       {"--time-limit -1", "--time-limit"},
       {"--svg-mark-angles 200", "--svg-mark-angles"},
-      {"-p 0.5", "--interpolation only applies to boundary weights"},
+      {"-p 0.5", "-p only applies to boundary weights (--gradation > 0"},
+      {"--interpolation 0.5", "--interpolation only applies to boundary weights"},
       {"--weight-fn 1 --weights w.node", "--weights cannot be combined with --weight-fn"},
       {"--area-fn 1 --areas a.node", "--areas cannot be combined with --area-fn"},
   };
@@ -88,12 +107,99 @@ TEST_CASE("an option out of its range is a usage error naming the flag, and noth
   }
 }
 
+TEST_CASE("madd mesh names the flag typed: --min-angle is the separators' angle, -q and --quality the triangles'") {
+  const CliSandbox box;
+  const CliRun phi = box.run("mesh " + key_poly + " -n 4 -o m --min-angle 95");
+  CHECK(phi.status == 2);
+  CHECK_MESSAGE(problem_of(phi.output, "mesh").rfind("--min-angle must lie strictly between 0 and 90 degrees", 0) == 0,
+                phi.output);
+  for (const std::string flag : {"-q", "--quality"}) {
+    CAPTURE(flag);
+    const CliRun r = box.run("mesh " + key_poly + " -n 4 -o m " + flag + " 95");
+    CHECK(r.status == 2);
+    CHECK_MESSAGE(problem_of(r.output, "mesh").rfind(flag + " must lie in [0, 60) degrees", 0) == 0, r.output);
+  }
+  for (const std::string flag : {"-a", "--max-area"}) {  // checked while parsing: the flag as typed too
+    CAPTURE(flag);
+    CHECK(problem_of(box.run("mesh " + key_poly + " -n 4 -o m " + flag + " 0").output, "mesh") ==
+          flag + " needs an area > 0, got '0'");
+  }
+  CHECK_FALSE(fs::exists(box.path("m.ele")));
+}
+
+TEST_CASE("-j has one limit, the library's max_threads, said alike by decompose and mesh") {
+  const CliSandbox box;
+  const std::string above = std::to_string(madd::max_threads + 1);
+  for (const std::string flag : {"-j", "--threads"}) {
+    CAPTURE(flag);
+    const CliRun decompose = box.run(key_poly + " -n 2 -o out.poly " + flag + " " + above);
+    const CliRun mesh = box.run("mesh " + key_poly + " -n 2 -o m " + flag + " " + above);
+    CHECK(decompose.status == 2);
+    CHECK(mesh.status == 2);
+    const std::string said = problem_of(decompose.output, "decompose");
+    CHECK(said == problem_of(mesh.output, "mesh"));
+    CHECK_MESSAGE(said.rfind(flag + " must be at most " + std::to_string(madd::max_threads), 0) == 0, said);
+  }
+  const std::string at_limit = " -j " + std::to_string(madd::max_threads);  // the limit itself is taken
+  CHECK(box.run(key_poly + " -n 2 --quiet" + at_limit).status == 0);
+  CHECK(box.run("mesh " + key_poly + " -n 2 --quiet -o m" + at_limit).status == 0);
+  CHECK_FALSE(fs::exists(box.path("out.poly")));
+}
+
+TEST_CASE("every option decompose and mesh share is taken by both commands") {
+  const CliSandbox box;
+  // A value on key.poly for each shared option (a new shared option needs one here).
+  const std::map<std::string, std::string> value = {
+      {"subdomains", " 3"},      {"min-angle", " 50"},  {"threads", " 2"},       {"seed", " 7"},
+      {"rebalance", " 1.5"},     {"time-limit", " 60"}, {"max-memory", " 4000"}, {"max-area", " 0.05"},
+      {"size-fn", " 0.05+x*x"},  {"output", " o"},      {"report", "=r.json"},   {"no-verify", ""},
+      {"quiet", ""},             {"help", ""}};
+  const madd::cli::CommandOptions& mesh = madd::cli::options_of("mesh");
+  int shared = 0;
+  for (const madd::cli::OptionUse& use : madd::cli::options_of("decompose").uses) {
+    if (use.name == nullptr) continue;
+    bool in_mesh = false;
+    for (const madd::cli::OptionUse& m : mesh.uses) in_mesh = in_mesh || (m.name != nullptr && std::string(m.name) == use.name);
+    if (!in_mesh) continue;
+    CAPTURE(use.name);
+    ++shared;
+    REQUIRE(value.count(use.name) == 1);
+    const std::string option = " --" + std::string(use.name) + value.at(use.name);
+    const CliRun decompose = box.run(key_poly + " -n 4 --quiet" + option);
+    const CliRun meshed = box.run("mesh " + key_poly + " -n 4 --quiet -o m" + option);
+    CHECK_MESSAGE(decompose.status == 0, decompose.output);
+    CHECK_MESSAGE(meshed.status == 0, meshed.output);
+  }
+  CHECK(shared == static_cast<int>(value.size()));
+}
+
+TEST_CASE("every command's --help lists every option it takes, as the table has it") {
+  const CliSandbox box;
+  for (const madd::cli::CommandOptions& command : madd::cli::command_options()) {
+    CAPTURE(command.command);
+    const CliRun help = box.run(std::string(command.command) + " --help");
+    CHECK(help.status == 0);
+    for (const madd::cli::OptionUse& use : command.uses) {
+      if (use.name == nullptr) continue;
+      CAPTURE(use.name);
+      // An option without a line of its own is named by the text, gpmetis's way (-ptype=rb).
+      CHECK(contains(help.output, (use.help != nullptr ? "--" : "-") + std::string(use.name)));
+      if (const char letter = madd::cli::letter_of(use); letter != 0)
+        CHECK(contains(help.output, std::string("-") + letter));
+    }
+  }
+  const std::string decompose = box.run("decompose --help").output;  // the letters mesh took over, said once
+  CHECK(contains(decompose, "-q is deprecated here"));
+  CHECK(contains(decompose, "-a A is deprecated here"));
+}
+
 TEST_CASE("grading options that would be ignored are refused") {
   const CliSandbox box;
   // key.poly has no vertex weights: -a has nothing to grade by.
-  const CliRun r = box.run(key_poly + " -n 8 -a 3 -o out.poly");
+  const CliRun r = box.run(key_poly + " -n 8 --gradation 3 -o out.poly");
   CHECK(r.status == 2);
   CHECK_MESSAGE(contains(r.output, "--gradation grades by the domain's vertex weights"), r.output);
+  CHECK_MESSAGE(contains(box.run(key_poly + " -n 8 -a 3 -o out.poly").output, "-a grades by"), r.output);
   CHECK_FALSE(fs::exists(box.path("out.poly")));
 }
 

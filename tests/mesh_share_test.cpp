@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "madd/mesh.hpp"
+#include "madd/mesh_metrics.hpp"
 #include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
@@ -136,6 +137,34 @@ void check_owners(const std::vector<madd::MeshPart>& parts) {
     }
 }
 
+// The parts' figures combine into the whole mesh's as madd-mpi combines
+// them: counts add up, the smallest angle and the largest subdomain are the extremes.
+void check_figures_combine(const madd::Mesh& whole, const std::vector<madd::MeshPart>& parts) {
+  const madd::MeshMetrics all = madd::mesh_metrics(whole);
+  madd::MeshMetrics sum;
+  sum.smallest_angle_histogram = {};
+  for (const madd::MeshPart& part : parts) {
+    const madd::MeshMetrics m = madd::mesh_metrics(part.mesh);
+    CHECK(m.subdomains == all.subdomains);
+    sum.triangles += m.triangles;
+    sum.below_bound += m.below_bound;
+    sum.smallest_angle_deg = std::min(sum.smallest_angle_deg, m.smallest_angle_deg);
+    sum.largest_subdomain_triangles = std::max(sum.largest_subdomain_triangles, m.largest_subdomain_triangles);
+    sum.shortfall.input_angle += m.shortfall.input_angle;
+    sum.shortfall.separator += m.shortfall.separator;
+    sum.shortfall.precision += m.shortfall.precision;
+    sum.shortfall.limit += m.shortfall.limit;
+    for (std::size_t b = 0; b < sum.smallest_angle_histogram.size(); ++b)
+      sum.smallest_angle_histogram[b] += m.smallest_angle_histogram[b];
+  }
+  CHECK(sum.triangles == all.triangles);
+  CHECK(sum.below_bound == all.below_bound);
+  CHECK(sum.smallest_angle_deg == all.smallest_angle_deg);
+  CHECK(sum.largest_subdomain_triangles == all.largest_subdomain_triangles);
+  CHECK(sum.shortfall == all.shortfall);
+  CHECK(sum.smallest_angle_histogram == all.smallest_angle_histogram);
+}
+
 } // namespace
 
 TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids included, and own their vertices once") {
@@ -151,6 +180,7 @@ TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids incl
     std::size_t subdomains = 0;
     for (const madd::MeshPart& p : parts) subdomains += p.subdomains.size();
     CHECK(subdomains == whole.subdomain_count());
+    check_figures_combine(whole, parts);
   }
 }
 

@@ -206,6 +206,34 @@ TEST_CASE("vertex count 0 reads the companion .node file") {
   CHECK_THROWS_AS(madd::parse_poly("0 2 0 0\n0 0\n0\n", "/nonexistent/x.poly"), madd::ParseError);
 }
 
+TEST_CASE("read_background_samples: the first attribute of each node, refused where the kind cannot have it") {
+  const fs::path dir = fs::temp_directory_path() / ("madd-background-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto put = [&](const char* name, const char* text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string zero = put("zero.node", "# a zero value\n3 2 2 0\n1 0 0 4 7\n2 1 0 0 7\n3 0 1 0.5 7\n");
+  const std::vector<madd::ValuedPoint> weights = madd::read_background_samples(zero, madd::SampleValue::weight);
+  REQUIRE(weights.size() == 3);
+  CHECK(weights[0] == madd::ValuedPoint{{0, 0}, 4.0});  // the first attribute, not the second
+  CHECK(weights[1].value == 0.0);                       // a weight may be 0
+  try {
+    madd::read_background_samples(zero, madd::SampleValue::area);  // an area may not
+    FAIL("a zero area was taken");
+  } catch (const madd::ParseError& e) {
+    CHECK(e.line() == 4);  // located at the node's line
+    CHECK(std::string(e.what()).find("node 2") != std::string::npos);
+  }
+  const std::string bare = put("bare.node", "1 2 0 0\n1 0 0\n");
+  CHECK_THROWS_AS(madd::read_background_samples(bare, madd::SampleValue::weight), madd::ParseError);
+  const std::string nan = put("nan.node", "1 2 1 0\n1 0 0 nan\n");
+  CHECK_THROWS_AS(madd::read_background_samples(nan, madd::SampleValue::weight), madd::ParseError);
+  CHECK_THROWS_AS(madd::read_background_samples((dir / "missing.node").string(), madd::SampleValue::area),
+                  madd::InputFileError);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("random Pslgs round-trip bit-exactly") {
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> coord(-1e6, 1e6);

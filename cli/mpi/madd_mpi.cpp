@@ -13,7 +13,6 @@
 // job (MPI_Abort) before anything is written; a part that cannot be written
 // makes every rank remove what it staged.
 #include <mpi.h>
-#include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -22,16 +21,19 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <new>
+#include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "../background_mesh.hpp"
 #include "../commands.hpp"
+#include "../interrupts.hpp"
+#include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
-#include "../mesh_figures.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh_metrics.hpp"
+#include "madd/mesh_output.hpp"
 #include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
@@ -40,17 +42,16 @@ namespace madd::mpi {
 namespace {
 
 using cli::ExitCode;
+using cli::seconds_since;
 
-constexpr const char* help_text =
+constexpr const char* help_intro =
     "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
     "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
     "the subdomains (balanced by expected triangles) on its own threads with no\n"
     "communication, and writes its part with global ids. The union of the parts is\n"
-    "the mesh `madd mesh` makes with the same options, for any P.\n\n"
-    "Options are madd mesh's (see madd mesh --help): -q, -a, --size-fn, --sizes,\n"
-    "--balance, --no-off-centres, --no-verify, -n (required), --min-angle, -j (threads\n"
-    "per rank), --seed, --rebalance, --time-limit, --max-memory, -o PREFIX, --vtu,\n"
-    "--report[=FILE], --quiet. Not here: --neigh, --edge, --msh, --split-mesh.\n\n"
+    "the mesh `madd mesh` makes with the same options, for any P.\n\n";
+
+constexpr const char* help_outputs =
     "outputs, for every rank R:\n"
     "  PREFIX-R.node        \"id x y global owner marker\": global = the vertex's id in\n"
     "                       madd mesh's PREFIX.node, owner = the lowest rank that has it\n"
@@ -58,6 +59,45 @@ constexpr const char* help_text =
     "  PREFIX-R.vtu         with --vtu, and PREFIX.pvtu that opens all of them in ParaView\n\n"
     "exit codes: as madd's (0 ok, 2 usage, 3 bad input, 4 no decomposition, 5 output\n"
     "not written, 6 limit, 70 internal error); nothing is written unless all is.\n";
+
+// `text` broken into lines of at most 80 characters, at spaces.
+std::string wrapped(const std::string& text) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > 80) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  return out + line + "\n";
+}
+
+// The help: madd mesh's options, from its list in the option table, named
+// with those madd-mpi does not take.
+std::string help_text() {
+  std::string taken, declined;
+  const auto whole_mesh_only = cli::whole_mesh_file_options();
+  for (const cli::OptionUse& use : cli::mesh_options().uses) {
+    if (use.name == nullptr || std::string_view(use.name) == "help") continue;
+    const char letter = cli::letter_of(use);
+    const std::string flag = letter != 0 ? std::string("-") + letter : std::string("--") + use.name;
+    const bool whole = std::find_if(whole_mesh_only.begin(), whole_mesh_only.end(), [&](const char* name) {
+                         return std::string_view(name) == use.name;
+                       }) != whole_mesh_only.end();
+    std::string& list = whole ? declined : taken;
+    list += (list.empty() ? "" : ", ") + flag;
+  }
+  return help_intro +
+         wrapped("Options are madd mesh's, with the same meanings (see madd mesh --help): " + taken +
+                 "; -n is required, -j is the thread count of each rank. Not here: " + declined + ".") +
+         "\n" + help_outputs;
+}
 
 struct World {
   int rank = 0, size = 1;
@@ -71,33 +111,17 @@ void on_interrupt(int signal_number) {
   ::_exit(128 + signal_number);
 }
 
-void install_interrupt_handlers() {
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
 
-// The error a rank met, as the single-process tool would say it.
-struct Failure {
-  int code = cli::exit_ok;
-  std::string message;
-};
+using cli::Failure;
 
+// Runs body(); the error a rank met, as the single-process tool would say it.
 template <typename Body>
 Failure attempt(const Body& body) {
   try {
     body();
     return {};
-  } catch (const Error& e) {
-    const int code = cli::exit_code_of(e.kind());
-    return {code, std::string(code == cli::exit_internal ? "internal error: " : "error: ") + e.what()};
-  } catch (const std::bad_alloc&) {
-    return {cli::exit_limit, "error: out of memory"};
-  } catch (const std::exception& e) {
-    return {cli::exit_internal, std::string("internal error: ") + e.what()};
+  } catch (...) {
+    return cli::current_failure();
   }
 }
 
@@ -149,10 +173,6 @@ ShareExchange mpi_exchange() {
   return x;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 double phase_seconds(const MeshReport& report, const char* name) {
   double s = 0;
   for (const PhaseTime& p : report.phases)
@@ -160,11 +180,10 @@ double phase_seconds(const MeshReport& report, const char* name) {
   return s;
 }
 
-// The global figures, on rank 0: sums, minima and every rank's times.
+// The global figures, on rank 0: the mesh's (its parts' combined) and every
+// rank's times.
 struct Figures {
-  std::uint64_t triangles = 0, vertices = 0;
-  double min_angle_deg = 180;
-  std::uint64_t below = 0, below_input_angle = 0, below_separator = 0;
+  MeshMetrics mesh;
   std::vector<double> decompose_seconds, mesh_seconds, format_seconds, peak_megabytes;
 };
 
@@ -175,19 +194,33 @@ double peak_megabytes() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
 }
 
-Figures gather_figures(const World& world, const MeshPart& part, const MeshReport& report, double decompose_s,
-                       double format_s) {
+// The figures of the whole mesh from every rank's part: counts add up, the
+// smallest angle and the largest subdomain are the extremes; the median does
+// not combine and is left out.
+MeshMetrics combine_figures(const MeshPart& part, const MeshSizeOptions& size) {
+  const MeshMetrics mine = mesh_metrics(part.mesh, size);
+  MeshMetrics all = mine;
+  all.triangles = part.total_triangles;
+  all.vertices = part.total_points;
+  all.median_smallest_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  MPI_Reduce(&mine.smallest_angle_deg, &all.smallest_angle_deg, 1, MPI_DOUBLE, MPI_MIN, 0, MPI_COMM_WORLD);
+  MPI_Reduce(&mine.largest_subdomain_triangles, &all.largest_subdomain_triangles, 1, MPI_UINT64_T, MPI_MAX, 0,
+             MPI_COMM_WORLD);
+  const MeshShortfall& why = mine.shortfall;
+  std::vector<std::uint64_t> counts = {mine.below_bound, why.input_angle, why.separator, why.precision, why.limit};
+  counts.insert(counts.end(), mine.smallest_angle_histogram.begin(), mine.smallest_angle_histogram.end());
+  std::vector<std::uint64_t> sums(counts.size());
+  MPI_Reduce(counts.data(), sums.data(), static_cast<int>(counts.size()), MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+  all.below_bound = sums[0];
+  all.shortfall = {sums[1], sums[2], sums[3], sums[4]};
+  std::copy(sums.begin() + 5, sums.end(), all.smallest_angle_histogram.begin());
+  return all;
+}
+
+Figures gather_figures(const World& world, const MeshPart& part, const MeshOptions& options, const MeshReport& report,
+                       double decompose_s, double format_s) {
   Figures f;
-  f.triangles = part.total_triangles;
-  f.vertices = part.total_points;
-  const cli::AngleFigures a = cli::angle_figures(part.mesh);
-  MPI_Reduce(&a.min_deg, &f.min_angle_deg, 1, MPI_DOUBLE, MPI_MIN, 0, MPI_COMM_WORLD);
-  const std::uint64_t mine[3] = {a.below, part.mesh.shortfall.input_angle, part.mesh.shortfall.separator};
-  std::uint64_t sum[3] = {};
-  MPI_Reduce(mine, sum, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
-  f.below = sum[0];
-  f.below_input_angle = sum[1];
-  f.below_separator = sum[2];
+  f.mesh = combine_figures(part, options.size);
   const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
                            format_s,
                            peak_megabytes()};
@@ -222,30 +255,16 @@ std::string list(const std::vector<double>& values) {
   return out;
 }
 
-std::string report_json(const cli::MeshArgs& args, const World& world, const Figures& f, double seconds) {
-  char buf[256];
-  std::string out = "{\n";
-  const auto add = [&](const char* key, double v) {
-    std::snprintf(buf, sizeof buf, "  \"%s\": %.17g,\n", key, v);
-    out += buf;
-  };
-  add("ranks", world.size);
-  add("subdomains", args.options.decomposition.subdomains);
-  add("triangles", static_cast<double>(f.triangles));
-  add("vertices", static_cast<double>(f.vertices));
-  add("min_angle_bound_deg", args.options.size.min_triangle_angle_deg);
-  add("max_area_bound", args.options.size.max_triangle_area);
-  add("min_angle_deg", f.min_angle_deg);
-  add("below_bound", static_cast<double>(f.below));
-  add("below_bound_input_angle", static_cast<double>(f.below_input_angle));
-  add("below_bound_separator", static_cast<double>(f.below_separator));
-  add("rank_imbalance", imbalance(f.mesh_seconds));
-  out += "  \"decompose_seconds\": [" + list(f.decompose_seconds) + "],\n";
-  out += "  \"mesh_seconds\": [" + list(f.mesh_seconds) + "],\n";
-  out += "  \"format_seconds\": [" + list(f.format_seconds) + "],\n";
-  out += "  \"peak_resident_megabytes\": [" + list(f.peak_megabytes) + "],\n";
-  std::snprintf(buf, sizeof buf, "  \"seconds_before_writing\": %.6g\n}\n", seconds);
-  return out + buf;
+// The mesh report of `madd mesh`, with every rank's figures as the run's.
+std::string report_json(const World& world, const Figures& f, double seconds) {
+  const std::vector<RunFigure> run = {{"ranks", static_cast<double>(world.size)},
+                                      {"rank_imbalance", imbalance(f.mesh_seconds)},
+                                      {"decompose_seconds", f.decompose_seconds},
+                                      {"mesh_seconds", f.mesh_seconds},
+                                      {"format_seconds", f.format_seconds},
+                                      {"peak_resident_megabytes", f.peak_megabytes},
+                                      {"seconds_before_writing", seconds}};
+  return format_mesh_report_json(f.mesh, run);
 }
 
 // Writes this rank's files (and rank 0's report file) all or nothing across
@@ -276,14 +295,14 @@ int write_everywhere(const World& world, OutputSet& outputs, Failure staged) {
 // Rank 0's summary: one line of global figures, then the meshing time of
 // every rank while they fit on a line, else their spread.
 void print_summary(const World& world, const cli::MeshArgs& args, const Figures& f, double seconds) {
-  std::FILE* out = args.report && args.report_out.empty() ? stderr : stdout;
+  std::FILE* out = args.line.report && args.line.report_file.empty() ? stderr : stdout;
   std::fprintf(out,
                "%s: %d ranks, %u subdomains, %llu triangles, %llu vertices, smallest angle %.2f deg (%llu below "
                "%.4g), %.2f s -> %s-*.{node,ele}%s\n",
-               args.input.c_str(), world.size, args.options.decomposition.subdomains,
-               static_cast<unsigned long long>(f.triangles), static_cast<unsigned long long>(f.vertices),
-               f.min_angle_deg, static_cast<unsigned long long>(f.below), args.options.size.min_triangle_angle_deg, seconds,
-               args.prefix.c_str(), args.formats.vtu ? " .pvtu" : "");
+               args.input.c_str(), world.size, f.mesh.subdomains, static_cast<unsigned long long>(f.mesh.triangles),
+               static_cast<unsigned long long>(f.mesh.vertices), f.mesh.smallest_angle_deg,
+               static_cast<unsigned long long>(f.mesh.below_bound), f.mesh.min_angle_bound_deg, seconds,
+               args.prefix.c_str(), args.line.formats.vtu ? " .pvtu" : "");
   std::vector<double> sorted = f.mesh_seconds;
   std::sort(sorted.begin(), sorted.end());
   if (world.size <= 16)
@@ -296,12 +315,12 @@ void print_summary(const World& world, const cli::MeshArgs& args, const Figures&
 
 int run(const World& world, const cli::MeshArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  MeshOptions options = args.options;
+  MeshOptions options;
   Pslg domain;
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    if (!args.sizes_file.empty()) options.size.triangle_area_samples = cli::read_background(args.sizes_file, true);
+    options = cli::with_background_files(args.line);
     domain = read_domain(args.input);
     std::vector<PhaseTime> phases;
     decomposition = decompose_for_mesh(domain, options, phases);
@@ -320,23 +339,23 @@ int run(const World& world, const cli::MeshArgs& args) {
   const auto format_start = std::chrono::steady_clock::now();
   OutputSet outputs;
   MeshPartFormats formats;
-  formats.vtu = args.formats.vtu;
-  formats.first_index = args.formats.first_index;
+  formats.vtu = args.line.formats.vtu;
+  formats.first_index = args.line.formats.first_index;
   Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats); });
-  const Figures f = gather_figures(world, part, report, decompose_s, seconds_since(format_start));
-  const std::string json = world.rank == 0 && args.report ? report_json(args, world, f, seconds_since(start)) : "";
-  if (staged.code == cli::exit_ok && !json.empty() && !args.report_out.empty())
-    staged = attempt([&] { outputs.add_file(args.report_out, json); });
+  const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
+  const std::string json = world.rank == 0 && args.line.report ? report_json(world, f, seconds_since(start)) : "";
+  if (staged.code == cli::exit_ok && !json.empty() && !args.line.report_file.empty())
+    staged = attempt([&] { outputs.add_file(args.line.report_file, json); });
   if (const int written = write_everywhere(world, outputs, staged); written != cli::exit_ok) return written;
   if (world.rank != 0) return cli::exit_ok;
-  if (!json.empty() && args.report_out.empty()) std::fputs(json.c_str(), stdout);
-  if (!args.quiet) print_summary(world, args, f, seconds_since(start));
+  if (!json.empty() && args.line.report_file.empty()) std::fputs(json.c_str(), stdout);
+  if (!args.line.quiet) print_summary(world, args, f, seconds_since(start));
   return cli::exit_ok;
 }
 
 int main_on(const World& world, int argc, char** argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-    if (world.rank == 0) std::fputs(help_text, argc < 2 ? stderr : stdout);
+    if (world.rank == 0) std::fputs(help_text().c_str(), argc < 2 ? stderr : stdout);
     return argc < 2 ? cli::exit_usage : cli::exit_ok;
   }
   if (std::strcmp(argv[1], "mesh") != 0) {
@@ -345,8 +364,8 @@ int main_on(const World& world, int argc, char** argv) {
   }
   cli::MeshArgs args;
   const std::string problem = cli::parse_mesh_arguments(argc - 1, argv + 1, args, true, false);
-  if (problem == "help") {
-    if (world.rank == 0) std::fputs(help_text, stdout);
+  if (problem.empty() && args.line.help) {
+    if (world.rank == 0) std::fputs(help_text().c_str(), stdout);
     return cli::exit_ok;
   }
   if (!problem.empty()) {
@@ -366,7 +385,7 @@ int main(int argc, char** argv) {
   madd::mpi::World world;
   MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &world.size);
-  madd::mpi::install_interrupt_handlers();
+  madd::cli::on_interrupts(madd::mpi::on_interrupt);
   const int code = madd::mpi::main_on(world, argc, argv);
   MPI_Finalize();
   return code;

@@ -13,9 +13,11 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "madd/atomic_write.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_metrics.hpp"
 
 namespace madd {
 
@@ -72,6 +74,14 @@ std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigne
 // (extension with its dot: ".node").
 std::string split_mesh_file_name(std::string_view stem, std::uint32_t k, std::uint32_t count,
                                  std::string_view extension);
+
+// The mesh report: every figure of `metrics` as one JSON object, one member
+// per line (counts as integers, other figures with every digit, %.17g; a
+// median that is not known, NaN, is left out), then the figures of the run in
+// the order given (a number with every digit, seconds with six: %.6g). Keys
+// are those of MeshMetrics, "below_bound_<why>" for its shortfall and
+// "smallest_angle_histogram_10deg"; docs/mesh.md, "The report".
+std::string format_mesh_report_json(const MeshMetrics& metrics, const std::vector<RunFigure>& run = {});
 
 // Which files add_mesh writes.
 struct MeshFormats {

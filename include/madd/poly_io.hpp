@@ -3,8 +3,10 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "madd/atomic_write.hpp"  // write_file_atomically was declared here before 0.2
+#include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
 
 namespace madd {
@@ -30,6 +32,18 @@ PolyFile read_poly_file(const std::string& path);
 
 // read_poly_file + validate: the one entry point for untrusted input.
 Pslg read_domain(const std::string& path, const ValidateOptions& options = {});
+
+// What the values of a background mesh are (paper Sec. 5.2, case 2; a size
+// file of `madd mesh --sizes`): density weights, finite and >= 0, or areas
+// (required subdomain areas, largest triangle areas), finite and > 0.
+enum class SampleValue { weight, area };
+
+// A background mesh: the points of a .node file (or of a .poly, by extension,
+// as read_poly_file reads it), each with its first attribute as its value. A
+// file without attributes, or a value the kind cannot have, is bad input: a
+// ParseError located at the file's line. The one reader of --weights,
+// --areas, --sizes and the script's read_weights and read_areas.
+std::vector<ValuedPoint> read_background_samples(const std::string& path, SampleValue value);
 
 // Writes `pslg` as .poly text, each coordinate as the shortest text that reads
 // back to the same double, so that parse_poly of the output gives back an equal Pslg.

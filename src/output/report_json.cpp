@@ -1,67 +1,15 @@
 // Output 5: the quality report, every figure of docs/quality.md as one JSON
 // object. Key names match those of the independent checker used in development
 // (ddcheck.py) where both compute a figure.
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-
 #include "madd/output.hpp"
 #include "kernel/number_format.hpp"
+#include "output/json_object.hpp"
 
 namespace madd {
 
-namespace {
-
-class JsonObject {
-public:
-  explicit JsonObject(std::string& out) : out_(out) { out_ += "{"; }
-  void key(std::string_view name) {
-    out_ += first_ ? "\n  \"" : ",\n  \"";
-    first_ = false;
-    out_.append(name);
-    out_ += "\": ";
-  }
-  void number(std::string_view name, double v) {
-    key(name);
-    if (std::isfinite(v))
-      detail::append_shortest(out_, v);
-    else
-      out_ += "null";  // JSON has no NaN or infinity
-  }
-  void count(std::string_view name, std::uint64_t v) {
-    key(name);
-    detail::append_int(out_, static_cast<std::int64_t>(v));
-  }
-  void close() { out_ += "\n}\n"; }
-
-private:
-  std::string& out_;
-  bool first_ = true;
-};
-
-// JSON string escaping for phase names.
-void append_string(std::string& out, std::string_view s) {
-  out += '"';
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
-      out += buffer;
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-}
-
-} // namespace
-
 std::string format_report_json(const Metrics& m) {
   std::string out;
-  JsonObject o(out);
+  detail::JsonObject o(out);
   o.count("subdomains", m.subdomains);
   o.count("points", m.points);
   o.count("segments", m.segments);
@@ -95,7 +43,7 @@ std::string format_report_json(const Metrics& m) {
   out += "{";
   for (std::size_t i = 0; i < m.times.size(); ++i) {
     out += i == 0 ? "" : ", ";
-    append_string(out, m.times[i].name);
+    detail::append_json_string(out, m.times[i].name);
     out += ": ";
     detail::append_shortest(out, m.times[i].seconds);
   }

@@ -1,13 +1,9 @@
 // The file and decomposition commands of the script language (paper Sec. 6,
 // Table II): read, read_weights, read_areas, dec, write, writeSubdomains.
-#include <cerrno>
-#include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string>
+#include <vector>
 
-#include "kernel/number_format.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/output.hpp"
@@ -39,15 +35,6 @@ auto read_input(const ScriptCommand& c, std::size_t column, F&& f) -> decltype(f
   } catch (const Error& e) {
     c.fail(column, e.what());
   }
-}
-
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFileError(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputFileError(path + ": cannot read: " + std::strerror(errno));
-  return std::move(text).str();
 }
 
 // The decomposition every write command needs, checked once by the
@@ -122,27 +109,9 @@ void script_read_values(const ScriptCommand& c, ScriptContext& context, bool are
     return;
   }
   require_files(c, context);
-  const PolyFile node = read_input(c, file.column, [&] { return parse_node(read_text_file(file.text), file.text); });
-  const Pslg& p = node.pslg;
-  const auto line_of = [&](std::size_t i) -> std::size_t {
-    return i < node.source.point_lines.size() ? node.source.point_lines[i] : 1;
-  };
-  const std::string what = areas ? "required area" : "weight";
-  if (p.attributes_per_point == 0 && !p.points.empty())
-    rethrow_located(c, file.column,
-                    ParseError(file.text, 1, 1, "a background mesh needs one attribute per node, the " + what));
-  std::vector<ValuedPoint> values;
-  values.reserve(p.points.size());
-  for (std::size_t i = 0; i < p.points.size(); ++i) {
-    const double v = p.attribute(i, 0);
-    const bool ok = std::isfinite(v) && (areas ? v > 0 : v >= 0);
-    if (!ok)
-      rethrow_located(c, file.column,
-                      ParseError(file.text, line_of(i), 1,
-                                 "a " + what + (areas ? " must be > 0" : " must be >= 0") + " and finite, got " +
-                                     number_text(v)));
-    values.push_back({p.points[i], v});
-  }
+  std::vector<ValuedPoint> values = read_input(c, file.column, [&] {
+    return read_background_samples(file.text, areas ? SampleValue::area : SampleValue::weight);
+  });
   say(context, std::string(areas ? "read_areas " : "read_weights ") + file.text + ": " +
                    count_text(values.size(), areas ? "required area" : "weight"));
   target = std::move(values);

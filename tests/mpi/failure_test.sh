@@ -28,6 +28,13 @@ echo earlier > "$work/out/sentinel.txt"
 
 run 2 usage mesh "$data/key.poly" -q 30       # -n is required
 grep -q -- "-n N is required" "$work/usage.err" || fail "usage: no message about -n"
+# madd mesh's option table: the flag as typed, the separators' angle apart from the triangles'
+run 2 usage_phi mesh "$data/key.poly" -n 4 --min-angle 95
+grep -q -- "--min-angle must lie strictly between 0 and 90" "$work/usage_phi.err" || fail "usage: --min-angle not named"
+run 2 usage_q mesh "$data/key.poly" -n 4 -q 95
+grep -q -- "-q must lie in \[0, 60)" "$work/usage_q.err" || fail "usage: -q not named"
+run 2 usage_msh mesh "$data/key.poly" -n 4 --msh
+grep -q -- "option '--msh' is not available here" "$work/usage_msh.err" || fail "usage: --msh not refused by name"
 
 run 3 bad_input mesh "$data/bad/crossing.poly" -n 4 -o "$work/out/m"
 [ "$(grep -c 'crossing.poly:' "$work/bad_input.err")" = 1 ] || fail "bad input: expected one located message, got: $(cat "$work/bad_input.err")"

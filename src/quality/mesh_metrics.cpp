@@ -1,0 +1,61 @@
+// The figures of a mesh and of the run that made it (include/madd/mesh_metrics.hpp).
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "madd/mesh_metrics.hpp"
+#include "quality/mesh_angle.hpp"
+
+namespace madd {
+
+double MeshMetrics::share_below_bound() const noexcept {
+  return triangles == 0 ? 0.0 : static_cast<double>(below_bound) / static_cast<double>(triangles);
+}
+
+double MeshMetrics::max_over_mean_triangles() const noexcept {
+  const double mean = subdomains ? static_cast<double>(triangles) / subdomains : 0.0;
+  return mean > 0 ? static_cast<double>(largest_subdomain_triangles) / mean : 0.0;
+}
+
+MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size) {
+  MeshMetrics m;
+  m.subdomains = mesh.subdomain_count();
+  m.triangles = mesh.triangles.size();
+  m.vertices = mesh.points.size();
+  m.min_angle_bound_deg = mesh.min_triangle_angle_deg;
+  m.max_area_bound = size.max_triangle_area;
+  m.shortfall = mesh.shortfall;
+  std::vector<double> smallest(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t];
+    const double s = detail::smallest_angle_deg(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]]);
+    smallest[t] = s;
+    m.smallest_angle_deg = std::min(m.smallest_angle_deg, s);
+    ++m.smallest_angle_histogram[std::min<std::size_t>(5, static_cast<std::size_t>(s / 10))];
+    m.below_bound += s < mesh.min_triangle_angle_deg - detail::mesh_angle_slack_deg;
+  }
+  if (!smallest.empty()) {
+    const auto middle = smallest.begin() + static_cast<std::ptrdiff_t>(smallest.size() / 2);
+    std::nth_element(smallest.begin(), middle, smallest.end());
+    m.median_smallest_angle_deg = *middle;
+  }
+  for (std::uint32_t k = 0; k < m.subdomains; ++k)
+    m.largest_subdomain_triangles = std::max<std::uint64_t>(
+        m.largest_subdomain_triangles, mesh.subdomain_first_triangle[k + 1] - mesh.subdomain_first_triangle[k]);
+  return m;
+}
+
+std::vector<RunFigure> run_figures(const MeshReport& report) {
+  double busiest = 0, busy = 0;
+  for (const double s : report.thread_seconds) {
+    busiest = std::max(busiest, s);
+    busy += s;
+  }
+  const auto threads = static_cast<double>(report.thread_seconds.size());
+  return {{"threads", threads},
+          {"thread_imbalance", busy > 0 ? busiest * threads / busy : 0.0},
+          {"thread_seconds", report.thread_seconds},
+          {"phase_seconds", report.phases}};
+}
+
+} // namespace madd
