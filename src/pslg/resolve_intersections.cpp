@@ -95,9 +95,9 @@ private:
       if (on_some[v] || !grid.contains(at(v))) continue;
       const std::uint32_t col = grid.col_of(at(v).x);
       for (const auto& entry : grid.row_range(grid.row_of(at(v).y), col, col)) {
-        const Segment& s = seg(entry.segment);
+        const Segment& s = seg(entry.item);
         if (!detail::on_segment(at(s.a), at(s.b), at(v))) continue;
-        splits_[entry.segment].vertices.push_back(v);
+        splits_[entry.item].vertices.push_back(v);
         found = true;
       }
     }

@@ -39,7 +39,7 @@ void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vect
   const auto& P = m.points;
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    double bound = bound_at.at(triangle_centroid(a, b, c));
+    double bound = bound_at.area_at(triangle_centroid(a, b, c));
     if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
       bound = std::min(bound, regions[label[t] - 1].max_area);
     if (!(bound < std::numeric_limits<double>::infinity())) continue;
