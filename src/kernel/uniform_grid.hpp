@@ -51,6 +51,26 @@ public:
   std::uint32_t row_of(double y) const noexcept { return clamp_index((y - y0_) * inv_h_, rows_); }
   // Entries of row `row` with column in [c0, c1], sorted by (column, item).
   std::span<const Entry> row_range(std::uint32_t row, std::uint32_t c0, std::uint32_t c1) const noexcept;
+  // Entries of the cell holding p (clamped into the grid), items increasing.
+  std::span<const Entry> cell_at(Point p) const noexcept {
+    const std::uint32_t col = col_of(p.x);
+    return row_range(row_of(p.y), col, col);
+  }
+
+  // Calls add(col, row) for every cell of the box [lo, hi] (clamped).
+  template <class Add>
+  void box_cells(Point lo, Point hi, Add&& add) const {
+    for (std::uint32_t r = row_of(lo.y), r1 = row_of(hi.y); r <= r1; ++r)
+      for (std::uint32_t c = col_of(lo.x), c1 = col_of(hi.x); c <= c1; ++c) add(c, r);
+  }
+  // Calls visit(item) for the entries of every cell of the box [lo, hi]
+  // (clamped), row by row; an item in several of them, once per cell.
+  template <class Visit>
+  void in_box(Point lo, Point hi, Visit&& visit) const {
+    const std::uint32_t c0 = col_of(lo.x), c1 = col_of(hi.x);
+    for (std::uint32_t r = row_of(lo.y), r1 = row_of(hi.y); r <= r1; ++r)
+      for (const Entry& e : row_range(r, c0, c1)) visit(e.item);
+  }
 
   // Calls add(col, row) for every cell segment a-b may pass through: its
   // exact cells and whatever lies within tol_x, tol_y of them (a widening the

@@ -190,8 +190,7 @@ std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const Segmen
 
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {
   if (!grid.contains(p)) return std::nullopt;
-  const std::uint32_t col = grid.col_of(p.x);
-  for (const auto& entry : grid.row_range(grid.row_of(p.y), col, col)) {
+  for (const auto& entry : grid.cell_at(p)) {
     const std::uint32_t s = entry.item; // ascending within a cell: the first hit is the smallest
     if (on_segment(pslg.points[pslg.segments[s].a], pslg.points[pslg.segments[s].b], p)) return s;
   }
