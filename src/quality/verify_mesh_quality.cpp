@@ -25,8 +25,8 @@ namespace madd::detail {
 // - the relative 1e-12 on the bound is room for the mesher reaching the same
 //   bound through other roundings: a bound computed once and scaled, the
 //   function evaluated at a centroid formed another way (a few ulps off).
-//   Both use triangle_centroid and area_bound_at; a bound that differs by
-//   more than this is another bound, not rounding.
+//   Both ask the one AreaBound (quality/area_bound.hpp) at triangle_centroid;
+//   a bound that differs by more than this is another bound, not rounding.
 // A region's max_area (> 0) is one more bound on its triangles, the smallest winning.
 void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
                      ProblemLog& log) {
