@@ -265,7 +265,9 @@ TEST_CASE("verify_mesh: valid meshes of the bundled domains pass") {
   const std::vector<std::pair<std::string, std::vector<std::uint32_t>>> cases = {
       {"pipe.poly", {1, 2, 8, 64}}, {"key.poly", {1, 5, 32}}, {"l_shape.poly", {1, 3, 16}},
       {"spiral.poly", {2, 12}},     {"archipelago.poly", {1, 7}}, {"thin_annulus.poly", {4}}};
-  for (const auto& [name, counts] : cases) {
+  for (const auto& c : cases) {
+    const std::string& name = c.first;  // not a structured binding: clang 14 cannot CAPTURE one
+    const std::vector<std::uint32_t>& counts = c.second;
     const Pslg domain = domain_of(name);
     for (const std::uint32_t n : counts) {
       CAPTURE(name);
