@@ -4,8 +4,9 @@
 // near a place instead of all of them. Each user chooses the cell size and
 // what "may touch" means (SegmentGrid for validate and the verifiers,
 // FeatureDistance for the mesher's local feature size, NearestSample for the
-// size bound); the grid stores the lists, finds the cells of a coordinate or
-// a segment, and walks rings of cells outwards from a point. It only prunes
+// size bound, GdLocator for points among G_D's triangles, the mesher's region
+// labels); the grid stores the lists, finds the cells of a coordinate, a box
+// or a segment, and walks rings of cells outwards from a point. It only prunes
 // candidates: every decision is the caller's, so a grid that lists an item
 // in a few cells too many changes no result.
 #include <algorithm>
@@ -109,7 +110,7 @@ private:
 
 inline std::span<const UniformGrid::Entry> UniformGrid::row_range(std::uint32_t row, std::uint32_t c0,
                                                                   std::uint32_t c1) const noexcept {
-  if (c0 > c1) return {};
+  if (c0 > c1 || start_.empty()) return {};  // an empty range, or a grid never filled
   if (index_ == Index::by_cell) {
     const std::size_t first = std::size_t{row} * cols_;
     return {items_.data() + start_[first + c0], items_.data() + start_[first + c1 + 1]};
