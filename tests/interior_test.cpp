@@ -62,9 +62,9 @@ bool inside(const Decomposition& d, const madd::Subdomain& s, Point p) {
 }
 
 void check_interior(const Decomposition& d, const Pslg& domain, std::uint32_t n, double phi) {
-  const madd::Verification v = madd::verify_decomposition(d, domain, n);
-  for (const auto& problem : v.problems) INFO(problem);
-  REQUIRE(v.ok());
+  const madd::Verification verification = madd::verify_decomposition(d, domain, n);
+  for (const auto& problem : verification.problems) INFO(problem);
+  REQUIRE(verification.ok());
   // Per input segment with the domain on both sides: its pieces, all interior, sum to its length.
   std::vector<int> owners(d.segments.size(), 0);
   for (const madd::Subdomain& s : d.subdomains)

@@ -20,9 +20,9 @@ namespace {
 
 const fs::path source_root = MADD_SOURCE_DIR;
 
-// The stage folders in the order of design.md's table: rows "| `src/NAME/` | ...".
+// The stage folders in the order of the table in docs/design.md: rows "| `src/<name>/` | ...".
 std::vector<std::string> stage_order() {
-  std::ifstream in(source_root / "docs" / "design.md");
+  std::ifstream in(source_root / "docs/design.md");
   const std::regex row(R"(^\| `src/([a-z_]+)/` \|)");
   std::vector<std::string> stages;
   std::string line;
@@ -46,7 +46,7 @@ std::vector<fs::path> sources_under(const fs::path& dir) {
 
 TEST_SUITE("layout") {
 
-TEST_CASE("design.md lists every stage folder of src/ once") {
+TEST_CASE("docs/design.md lists every stage folder of src/ once") {
   const std::vector<std::string> stages = stage_order();
   REQUIRE(stages.size() >= 10);
   for (const auto& e : fs::directory_iterator(source_root / "src")) {

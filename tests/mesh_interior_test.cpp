@@ -22,7 +22,7 @@
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/discretise.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 #include "mesh/work.hpp"
 #include "mesh_fixtures.hpp"
 
@@ -312,7 +312,7 @@ TEST_CASE("mesh interior: the .edge file gives interior-segment edges their mark
 TEST_CASE("mesh interior: the work estimate counts a region's finer bound (the Steiner point budget follows it)") {
   const madd::test::InteriorFixture f = madd::test::interior_fixture();
   const madd::MeshSizeOptions none;
-  const madd::detail::SizeField field(none);
+  const madd::detail::AreaBound field(none);
   const std::vector<double> work = madd::detail::expected_triangles(madd::discretise(f.decomposition, none), field);
   REQUIRE(work.size() == 2);
   // The loop's unit of area at 0.002: some 775 triangles in subdomain 1,

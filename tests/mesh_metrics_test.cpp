@@ -96,7 +96,7 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
   REQUIRE(json.front() == '{');
   CHECK(json.substr(json.size() - 3) == "\n}\n");
   const char* keys[] = {"subdomains", "triangles", "vertices", "min_angle_bound_deg", "max_area_bound",
-                        "min_angle_deg", "median_smallest_angle_deg", "below_bound", "share_below_bound",
+                        "separator_angle_deg", "median_smallest_angle_deg", "below_bound", "share_below_bound",
                         "below_bound_input_angle", "below_bound_separator", "below_bound_precision",
                         "below_bound_limit", "smallest_angle_histogram_10deg", "max_over_mean_triangles", "threads",
                         "thread_imbalance", "thread_seconds", "phase_seconds", "seconds"};
@@ -114,7 +114,7 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
   CHECK(json.find("\"seconds\": 1.5\n}") != std::string::npos);
   for (const madd::PhaseTime& p : report.phases) CHECK(json.find("\"" + p.name + "\": ") != std::string::npos);
   // Every number with all its digits: the smallest angle reads back exactly.
-  const std::size_t angle = member(json, "min_angle_deg") + std::string("\n  \"min_angle_deg\": ").size();
+  const std::size_t angle = member(json, "separator_angle_deg") + std::string("\n  \"separator_angle_deg\": ").size();
   CHECK(std::stod(json.substr(angle)) == m.smallest_angle_deg);
 
   m.median_smallest_angle_deg = std::numeric_limits<double>::quiet_NaN();

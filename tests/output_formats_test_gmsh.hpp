@@ -127,7 +127,10 @@ inline void check_gmsh_mesh(const Decomposition& d, const Msh& m) {
     inside_separators += on - 2;
   }
   CHECK(inside_separators > 0);  // the check above saw more than the geometry's own points
-  for (const auto& [edge, uses] : edge_uses) {
+  for (const auto& edge_use : edge_uses) {
+    // Not a structured binding: clang 14 cannot capture one in CHECK_MESSAGE's lambda.
+    const auto& edge = edge_use.first;
+    const auto uses = edge_use.second;
     REQUIRE(uses <= 2);
     if (uses == 2) continue;
     const Point mid = midpoint(m.nodes.at(edge.first), m.nodes.at(edge.second));

@@ -153,11 +153,13 @@ struct Json {
   enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
   double number = 0;
   std::string text;
-  std::vector<Json> items;
-  std::vector<std::pair<std::string, Json>> members;
+  std::vector<Json> items;  // an array's elements, an object's values
+  // An object's keys: keys[i] names items[i]. (Not a vector of key-value
+  // pairs: clang 14 with libstdc++ 12 rejects a pair of the incomplete Json.)
+  std::vector<std::string> keys;
   const Json& at(const std::string& key) const {
-    for (const auto& [k, v] : members)
-      if (k == key) return v;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] == key) return items[i];
     throw std::runtime_error("no key " + key);
   }
 };
@@ -207,9 +209,9 @@ private:
       for (;;) {
         if (v.kind == Json::Kind::object) {
           space();
-          const std::string key = string();
+          v.keys.push_back(string());
           expect(':');
-          v.members.emplace_back(key, value(depth + 1));
+          v.items.push_back(value(depth + 1));
         } else {
           v.items.push_back(value(depth + 1));
         }

@@ -401,8 +401,16 @@ TEST_CASE("interior output round trip: data/estuary.poly (every kind of interior
 #ifdef MADD_CLI_PATH
 namespace {
 
+// What a run of the CLI gave: its exit code and its output (a struct, not a
+// pair to unpack: clang 14 cannot capture a structured binding in the
+// lambdas the _MESSAGE checks expand to).
+struct Run {
+  int code;
+  std::string text;
+};
+
 // Runs the CLI in `dir`; its exit code and standard output.
-std::pair<int, std::string> run_madd(const std::filesystem::path& dir, const std::string& args) {
+Run run_madd(const std::filesystem::path& dir, const std::string& args) {
   const std::string command =
       "cd '" + dir.string() + "' && '" MADD_CLI_PATH "' " + args + " > stdout.txt 2> stderr.txt";
   const int status = std::system(command.c_str());
@@ -420,16 +428,16 @@ TEST_CASE("interior output through the CLI: every output of a face.poly kind of 
     std::ofstream out(tmp.path / "face.poly");
     out << face_poly;
   }
-  const auto [code, text] = run_madd(tmp.path, "decompose face.poly -n 4 -o all.poly --split parts --subdomains-file face.sub "
-                                               "--svg face.svg --geo face.geo --vtk face.vtk --geojson face.json -q");
-  REQUIRE_MESSAGE(code == 0, text);
+  const Run run = run_madd(tmp.path, "decompose face.poly -n 4 -o all.poly --split parts --subdomains-file face.sub "
+                                     "--svg face.svg --geo face.geo --vtk face.vtk --geojson face.json -q");
+  REQUIRE_MESSAGE(run.code == 0, run.text);
   for (const char* file : {"all.poly", "parts/face-0.poly", "parts/face-1.poly", "parts/face-2.poly", "parts/face-3.poly"}) {
-    const auto [check, summary] = run_madd(tmp.path, std::string("check ") + file);
-    CHECK_MESSAGE(check == 0, summary);
-    CHECK_MESSAGE(summary.find(std::string(file) + ": valid domain") != std::string::npos, summary);
+    const Run check = run_madd(tmp.path, std::string("check ") + file);
+    CHECK_MESSAGE(check.code == 0, check.text);
+    CHECK_MESSAGE(check.text.find(std::string(file) + ": valid domain") != std::string::npos, check.text);
   }
-  const auto [again, again_text] = run_madd(tmp.path, "decompose all.poly -n 4 -o again.poly -q");
-  CHECK_MESSAGE(again == 0, again_text);
+  const Run again = run_madd(tmp.path, "decompose all.poly -n 4 -o again.poly -q");
+  CHECK_MESSAGE(again.code == 0, again.text);
 }
 
 } // TEST_SUITE

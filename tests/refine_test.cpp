@@ -29,7 +29,7 @@ Pslg square_with_midpoints() {
 
 std::size_t points_inside_segment(const FaceDomain& fd, std::uint32_t segment) {
   std::size_t n = 0;
-  for (const EndRef& r : fd.refs) n += r.kind == EndRef::on_segment && r.id == segment ? 1 : 0;
+  for (const EndRef& r : fd.refs) n += r.kind == EndRef::inside_segment && r.id == segment ? 1 : 0;
   return n;
 }
 

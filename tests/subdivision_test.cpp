@@ -76,7 +76,7 @@ using madd::detail::EndRef;
 using madd::detail::SplitResult;
 
 EndRef on_segment(std::uint32_t segment, std::uint32_t local, Point p) {
-  return EndRef{EndRef::on_segment, segment, local, p};
+  return EndRef{EndRef::inside_segment, segment, local, p};
 }
 
 // The segment of `sub` that contains p strictly inside (a piece of a straight segment).

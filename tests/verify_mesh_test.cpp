@@ -1,6 +1,7 @@
 // verify_mesh (src/quality/verify_mesh.cpp) and area_bound_at: valid meshes
 // of the bundled domains pass; each kind of damage is found, one test per
-// kind; the background-sample grid agrees with a scan.
+// kind; the background-sample grid agrees with a scan, and the mesher's
+// size bound is verify_mesh's.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <random>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -21,6 +23,7 @@
 #include "madd/predicates.hpp"
 #include "interior_fixture.hpp"
 #include "mesh_fixtures.hpp"
+#include "mesh/refine.hpp"
 #include "quality/area_bound.hpp"
 
 namespace {
@@ -38,6 +41,21 @@ madd::Decomposition decomposition_of(const Pslg& domain, std::uint32_t n) {
   o.subdomains = n;
   o.threads = 2;
   return madd::decompose(domain, o);
+}
+
+// The nearest sample as area_bound_at defines it, by a scan: the smallest
+// (p.x - s.x)^2 + (p.y - s.y)^2, the first of equals; non-finite samples never.
+std::uint32_t scan_nearest(std::span<const madd::ValuedPoint> samples, Point p) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return no_index;
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t best_index = no_index;
+  for (std::uint32_t i = 0; i < samples.size(); ++i) {
+    const Point s = samples[i].at;
+    if (!std::isfinite(s.x) || !std::isfinite(s.y)) continue;
+    const double d = (p.x - s.x) * (p.x - s.x) + (p.y - s.y) * (p.y - s.y);
+    if (d < best) best = d, best_index = i;
+  }
+  return best_index;
 }
 
 bool mentions(const madd::Verification& v, const std::string& what) {
@@ -247,7 +265,9 @@ TEST_CASE("verify_mesh: valid meshes of the bundled domains pass") {
   const std::vector<std::pair<std::string, std::vector<std::uint32_t>>> cases = {
       {"pipe.poly", {1, 2, 8, 64}}, {"key.poly", {1, 5, 32}}, {"l_shape.poly", {1, 3, 16}},
       {"spiral.poly", {2, 12}},     {"archipelago.poly", {1, 7}}, {"thin_annulus.poly", {4}}};
-  for (const auto& [name, counts] : cases) {
+  for (const auto& c : cases) {
+    const std::string& name = c.first;  // not a structured binding: clang 14 cannot CAPTURE one
+    const std::vector<std::uint32_t>& counts = c.second;
     const Pslg domain = domain_of(name);
     for (const std::uint32_t n : counts) {
       CAPTURE(name);
@@ -611,7 +631,7 @@ TEST_CASE("area_bound_at: the sample grid agrees with a scan") {
       Point p{x0 + (x1 - x0 + 1.0) * (3.0 * unit(rng) - 1.0), y0 + (y1 - y0 + 1.0) * (3.0 * unit(rng) - 1.0)};
       if (q % 3 == 0) p = {std::floor(p.x * 4.0) / 4.0, std::floor(p.y * 4.0) / 4.0};
       if (q == 1) p = {-1e30, 1e30};
-      const std::uint32_t want = madd::detail::nearest_sample_by_scan(samples, p);
+      const std::uint32_t want = scan_nearest(samples, p);
       CAPTURE(p.x);
       CAPTURE(p.y);
       REQUIRE(grid.nearest(p) == want);
@@ -622,12 +642,60 @@ TEST_CASE("area_bound_at: the sample grid agrees with a scan") {
   const madd::detail::AreaBound bound(size);
   for (int q = 0; q < 1000; ++q) {
     const Point p{unit(rng) * 20.0 - 0.5, unit(rng) * 20.0 - 0.5};
-    CHECK(bound.at(p) == madd::area_bound_at(size, p));
+    CHECK(bound.area_at(p) == madd::area_bound_at(size, p));
   }
   CHECK(madd::detail::NearestSample(std::span<const madd::ValuedPoint>()).nearest({0, 0}) == no_index);
   const madd::detail::NearestSample one(sets[4]);
   CHECK(one.nearest({std::numeric_limits<double>::quiet_NaN(), 0.0}) == no_index);
   CHECK(one.nearest({-5.0, 1e6}) == 0);
+}
+
+// The refinement's "too large" and verify_mesh's size check read one bound:
+// RefineSettings holds the AreaBound that verify_mesh builds too, and two of
+// them built apart (as mesh() and verify_mesh() each build theirs) answer
+// alike, bit for bit, and as the definition does: the smallest of max_area,
+// the function where it is > 0 and the nearest sample's value.
+TEST_CASE("one size bound: the mesher's refinement and verify_mesh ask the same AreaBound") {
+  static_assert(std::is_same_v<decltype(madd::detail::RefineSettings::size), const madd::detail::AreaBound*>);
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  MeshSizeOptions size;
+  size.max_triangle_area = 0.05;
+  // <= 0 below the line x + y = 1: no bound from the function there.
+  size.triangle_area_function = [](double x, double y) { return 0.02 * (x + y - 1.0); };
+  // Samples of a bound growing with x, 20% noise; and a lattice, whose cell
+  // centres are as near to four samples.
+  for (int k = 0; k < 2000; ++k) {
+    const Point at{4.0 * unit(rng), 2.0 * unit(rng)};
+    size.triangle_area_samples.push_back({at, 0.01 + 0.005 * at.x * (1.0 + 0.2 * unit(rng))});
+  }
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 4; ++j) size.triangle_area_samples.push_back({{0.5 * i, 0.5 * j}, 0.01 + 0.0025 * i});
+  const madd::detail::AreaBound mesher(size), verifier(size);
+  for (int q = 0; q < 20000; ++q) {
+    Point p{5.0 * unit(rng) - 0.5, 3.0 * unit(rng) - 0.5};
+    if (q % 4 == 0) p = {std::floor(p.x * 2.0) / 2.0 + 0.25, std::floor(p.y * 2.0) / 2.0 + 0.25};
+    double want = size.max_triangle_area;
+    if (size.triangle_area_function(p.x, p.y) > 0.0) want = std::min(want, size.triangle_area_function(p.x, p.y));
+    want = std::min(want, size.triangle_area_samples[scan_nearest(size.triangle_area_samples, p)].value);
+    CAPTURE(p.x);
+    CAPTURE(p.y);
+    REQUIRE(mesher.area_at(p) == want);
+    REQUIRE(verifier.area_at(p) == want);
+    REQUIRE(madd::area_bound_at(size, p) == want);
+  }
+  // And a mesh refined to that bound, with a region's own bound inside its
+  // loop, passes verify_mesh's check against it.
+  const madd::test::InteriorFixture f = madd::test::interior_fixture();
+  madd::MeshOptions o = madd::test::options_for(2, 30, 0.0);
+  o.size = size;
+  o.size.min_triangle_angle_deg = 30;
+  madd::MeshReport report;
+  const Mesh m = madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+  const madd::Verification v = madd::verify_mesh(m, f.domain, o.size);
+  show(v);
+  CHECK(v.ok());
+  CHECK(m.triangles.size() > 8.0 / 0.05);
 }
 
 // The hand-made domain with interior segments, isolated vertices and

@@ -134,7 +134,7 @@ double weight_along(const Subdivision& sub, std::uint32_t segment, Point at, con
 
 double base_weight(const Subdivision& sub, const EndRef& e, const std::vector<double>& w) {
   if (e.kind == EndRef::vertex) return w[e.id];
-  if (e.kind == EndRef::on_segment) return weight_along(sub, e.id, e.p, w);
+  if (e.kind == EndRef::inside_segment) return weight_along(sub, e.id, e.p, w);
   return 0.0;
 }
 
@@ -157,7 +157,7 @@ void collect_end_weights(const Subdivision& snapshot, const SplitResult& result,
   for (const SeparatorEdge& e : result.edges) {
     for (const EndRef* end : {&e.a, &e.b}) {
       const EndRef* other = end == &e.a ? &e.b : &e.a;
-      if (end->kind == EndRef::on_segment) out.push_back({end->p, p * base_weight(snapshot, *end, point_weights)});
+      if (end->kind == EndRef::inside_segment) out.push_back({end->p, p * base_weight(snapshot, *end, point_weights)});
       if (end->kind == EndRef::centre && other->kind != EndRef::centre) {
         add_centre(end->p, base_weight(snapshot, *other, point_weights));
       }

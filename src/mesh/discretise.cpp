@@ -18,7 +18,7 @@
 #include "mesh/discretise.hpp"
 #include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 #include "mesh/subdomain_regions.hpp"
 
 namespace madd {
@@ -32,7 +32,7 @@ namespace {
 // The target length at p on segment j, before grading from the ends;
 // `regional` is the smallest area bound of the regions on j's sides
 // (+infinity for none), one more size bound.
-double local_target(Point p, const Segment& s, const SizeField& size, const FeatureDistance& features, double regional) {
+double local_target(Point p, const Segment& s, const AreaBound& size, const FeatureDistance& features, double regional) {
   double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
     const double area = size.area_at(p);
@@ -48,7 +48,7 @@ double local_target(Point p, const Segment& s, const SizeField& size, const Feat
 // (whose local feature size ignores the boundary it ends on) meets short
 // boundary pieces, its first pieces are short too, and the triangle between
 // them has no reason to be skinny (docs/mesh.md, "Decoupling").
-std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size, const FeatureDistance& features,
+std::vector<double> vertex_targets(const Decomposition& d, const AreaBound& size, const FeatureDistance& features,
                                    const std::vector<double>& regional) {
   std::vector<double> out(d.points.size(), std::numeric_limits<double>::infinity());
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
@@ -62,7 +62,7 @@ std::vector<double> vertex_targets(const Decomposition& d, const SizeField& size
 // `features` are the features the segment's pieces must resolve: every
 // segment, or, for a boundary piece refinement may still split, only the
 // separators (see detail::discretise).
-std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const SizeField& size,
+std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, const AreaBound& size,
                                      const FeatureDistance& features, const std::vector<double>& at_vertex,
                                      bool graded_from_ends, double regional) {
   const Segment& s = d.segments[j];
@@ -124,7 +124,7 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 
 Decomposition detail::discretise(const Decomposition& decomposition, const MeshSizeOptions& size,
                                  bool boundary_by_features) {
-  const detail::SizeField field(size);
+  const detail::AreaBound field(size);
   // The features every piece resolves: every segment (interior ones too, so
   // that a narrow gap between an interior segment and the shore is resolved)
   // and every isolated input vertex, as a segment of length 0 (the distance

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernel/uniform_grid.hpp"
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
 
@@ -22,14 +23,9 @@ public:
   double to_nonincident(Point p, std::uint32_t a, std::uint32_t b) const;
 
 private:
-  template <class Visit>
-  void for_cells_of(std::uint32_t j, Visit&& visit) const;
-
   const std::vector<Point>& points_;
   const std::vector<Segment>& segments_;
-  double x0_ = 0, y0_ = 0, cell_ = 1;
-  std::int64_t cols_ = 1, rows_ = 1;
-  std::vector<std::uint32_t> start_, items_;  // CSR: segments listed in each cell
+  UniformGrid grid_;  // square cells of about the mean segment length; items are segments
 };
 
 } // namespace madd::detail

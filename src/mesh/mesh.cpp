@@ -20,7 +20,7 @@
 #include "mesh/merge.hpp"
 #include "mesh/refine.hpp"
 #include "mesh/rounds.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 #include "mesh/subdomain_regions.hpp"
 #include "mesh/work.hpp"
 
@@ -47,7 +47,7 @@ unsigned thread_count(unsigned asked, std::size_t work) {
 // Refines the subdomains in `todo` (all of them in the first round, then
 // those next to separators split since), largest expected work first so that
 // the last ones to finish are small; results land in their own slots.
-void refine_some(const Decomposition& d, const MeshOptions& options, const detail::SizeField& field,
+void refine_some(const Decomposition& d, const MeshOptions& options, const detail::AreaBound& field,
                  const std::vector<double>& work, const detail::ResourceGuard& guard, MeshReport& report,
                  const std::vector<std::uint32_t>& todo, const std::vector<std::vector<Region>>& regions,
                  std::vector<detail::SubdomainMesh>& out) {
@@ -128,7 +128,7 @@ void throw_failed_check(const Verification& v) {
   throw InternalError(text);
 }
 
-void refine_in_rounds(Decomposition& d, const MeshOptions& options, const SizeField& field,
+void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBound& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
                       const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
                       std::vector<std::vector<Region>>& regions) {
@@ -159,7 +159,7 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   Decomposition d = detail::discretise(decomposition, options.size, false);
   report.phases.push_back({"discretise", clock.lap()});
-  const detail::SizeField field(options.size);
+  const detail::AreaBound field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
@@ -178,7 +178,7 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
 Decomposition decompose_for_mesh(const Pslg& domain, const MeshOptions& options, std::vector<PhaseTime>& phases) {
   check_options(options);
   DecomposeOptions dopt = options.decomposition;
-  const detail::SizeField field(options.size);
+  const detail::AreaBound field(options.size);
   if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
   return decompose(domain, dopt, phases);
 }

@@ -17,7 +17,7 @@
 #include "mesh/discretise.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/rounds.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 #include "mesh/work.hpp"
 
 namespace madd {
@@ -192,7 +192,7 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
   Decomposition d = detail::discretise(decomposition, options.size, false);
   report.phases.push_back({"discretise", clock.lap()});
-  const detail::SizeField field(options.size);
+  const detail::AreaBound field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
 
   MeshPart part;

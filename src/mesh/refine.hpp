@@ -13,13 +13,13 @@
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
 #include "kernel/resource_limits.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 
 namespace madd::detail {
 
 struct RefineSettings {
   double min_triangle_angle_deg = 30.0;
-  const SizeField* size = nullptr;  // the area bound (nullptr = none)
+  const AreaBound* size = nullptr;  // the area bound (nullptr = none)
   bool off_centres = true;
   std::size_t max_steiner_points = 0;  // 0 = no budget
   double expected_triangles = 0;       // to reserve room (docs/mesh.md, "Balance by work")

@@ -10,7 +10,7 @@
 #include "madd/mesh.hpp"
 #include "kernel/resource_limits.hpp"
 #include "mesh/refine.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 
 namespace madd::detail {
 
@@ -27,7 +27,7 @@ using SeparatorUnion = std::function<std::vector<std::uint32_t>(const std::vecto
 // depends on the meshes only, never on threads or processes.
 // `regions` gets each subdomain's regions (subdomain_regions), which its
 // meshes were refined with.
-void refine_in_rounds(Decomposition& d, const MeshOptions& options, const SizeField& field,
+void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBound& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
                       const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
                       std::vector<std::vector<Region>>& regions);

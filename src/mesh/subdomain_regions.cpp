@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "kernel/uniform_grid.hpp"
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/merge.hpp"
@@ -79,7 +80,7 @@ Faces faces_of(const Decomposition& d, std::uint32_t k) {
 
 // The label of the triangle of `tri` holding each query point (closed
 // triangles; the lowest triangle wins), 0 where none does. The queries are
-// bucketed in a grid, so each triangle tests only those near it.
+// listed in a uniform grid, so each triangle tests only those near it.
 std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector<Point>& queries) {
   std::vector<std::uint32_t> out(queries.size(), 0);
   std::vector<std::uint8_t> found(queries.size(), 0);
@@ -92,28 +93,23 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
     y1 = std::max(y1, q.y);
   }
   const auto side = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(queries.size())), 1.0, 256.0));
-  const double w = std::max(x1 - x0, 1e-300) / side, h = std::max(y1 - y0, 1e-300) / side;
-  const auto cell = [&](double v, double origin, double size) {
-    return static_cast<std::uint32_t>(std::clamp(std::floor((v - origin) / size), 0.0, static_cast<double>(side - 1)));
-  };
-  std::vector<std::vector<std::uint32_t>> bucket(std::size_t{side} * side);
-  for (std::uint32_t q = 0; q < queries.size(); ++q)
-    bucket[std::size_t{cell(queries[q].y, y0, h)} * side + cell(queries[q].x, x0, w)].push_back(q);
+  UniformGrid grid({x0, y0}, std::max(x1 - x0, 1e-300) / side, std::max(y1 - y0, 1e-300) / side, side, side);
+  grid.fill(static_cast<std::uint32_t>(queries.size()), UniformGrid::Index::by_cell, [&](std::uint32_t q, auto&& add) {
+    add(grid.col_of(queries[q].x), grid.row_of(queries[q].y));
+  });
   for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
     const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
-    const double lx = std::min({a.x, b.x, c.x}), hx = std::max({a.x, b.x, c.x});
-    const double ly = std::min({a.y, b.y, c.y}), hy = std::max({a.y, b.y, c.y});
-    if (hx < x0 || lx > x1 || hy < y0 || ly > y1) continue;
-    for (std::uint32_t r = cell(ly, y0, h); r <= cell(hy, y0, h); ++r)
-      for (std::uint32_t col = cell(lx, x0, w); col <= cell(hx, x0, w); ++col)
-        for (const std::uint32_t q : bucket[std::size_t{r} * side + col]) {
-          if (found[q]) continue;
-          const Point p = queries[q];
-          if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) {
-            found[q] = 1;
-            out[q] = static_cast<std::uint32_t>(tri.attributes[t]);
-          }
-        }
+    const Point lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
+    const Point hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y})};
+    if (hi.x < x0 || lo.x > x1 || hi.y < y0 || lo.y > y1) continue;
+    grid.in_box(lo, hi, [&](std::uint32_t q) {
+      if (found[q]) return;
+      const Point p = queries[q];
+      if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) {
+        found[q] = 1;
+        out[q] = static_cast<std::uint32_t>(tri.attributes[t]);
+      }
+    });
   }
   return out;
 }

@@ -85,7 +85,7 @@ std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples
 // times the smallest bound at its centroid and edge midpoints (these
 // triangles are large, so the smallest of several samples, to err high: the
 // estimate also sets the subdomain's Steiner point budget).
-double varying_interior(const Decomposition& d, std::uint32_t k, const SizeField& size) {
+double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound& size) {
   const LocalDomain local = local_domain(d, k);
   const Triangulation tri = triangulate(local.pslg);
   double t = 0;
@@ -100,7 +100,7 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const SizeField
 
 } // namespace
 
-std::vector<double> expected_triangles(const Decomposition& d, const SizeField& size) {
+std::vector<double> expected_triangles(const Decomposition& d, const AreaBound& size) {
   std::vector<double> out;
   out.reserve(d.subdomains.size());
   const bool uniform = !size.options().triangle_area_function && size.options().triangle_area_samples.empty();
@@ -162,7 +162,7 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
 // 1 / (kappa A), as one sample per cell of a grid over the domain, at each
 // cell centre inside it (found by the cells each triangle of the domain's
 // triangulation covers, exact orientation tests).
-void add_interior_samples(const Triangulation& tri, const SizeField& size, std::vector<ValuedPoint>& samples) {
+void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::vector<ValuedPoint>& samples) {
   Point lo = tri.points[0], hi = lo;
   for (const Point& p : tri.points) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -191,7 +191,7 @@ void add_interior_samples(const Triangulation& tri, const SizeField& size, std::
 
 } // namespace
 
-void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size) {
+void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBound& size) {
   if (options.weight_function || !options.weight_samples.empty() || options.gradation > 0 ||
       options.subdomain_area_function || !options.subdomain_area_samples.empty() || !size.bounded())
     return;

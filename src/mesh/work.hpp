@@ -6,17 +6,17 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/pslg.hpp"
-#include "mesh/size_field.hpp"
+#include "quality/area_bound.hpp"
 
 namespace madd::detail {
 
 // Per subdomain of the discretised decomposition `d`: the triangles its mesh
 // is expected to have.
-std::vector<double> expected_triangles(const Decomposition& d, const SizeField& size);
+std::vector<double> expected_triangles(const Decomposition& d, const AreaBound& size);
 
 // Sets the decomposition's weights so that it balances expected triangles
 // rather than areas (when the options carry no weights of their own).
-void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const SizeField& size);
+void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBound& size);
 
 // The Steiner points refinement of one subdomain may add before it stops
 // (what is left below the bound is then counted as MeshShortfall::limit).

@@ -43,8 +43,8 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, std::uint32_t 
     return it->second;
   };
   for (const auto& ring : s.rings)
-    for (std::size_t k = 0; k < ring.size(); ++k)
-      local.segments.push_back({local_index(ring[k]), local_index(ring[(k + 1) % ring.size()]), 1});
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      local.segments.push_back({local_index(ring[i]), local_index(ring[(i + 1) % ring.size()]), 1});
   // Interior segments and isolated points are edges and vertices of the
   // triangles too, so the cells conform to what the mesher will keep.
   for (const std::uint32_t j : s.interior_segments)

@@ -93,11 +93,10 @@ private:
     bool found = false;
     for (std::uint32_t v = 0; v < p_.points.size(); ++v) {
       if (on_some[v] || !grid.contains(at(v))) continue;
-      const std::uint32_t col = grid.col_of(at(v).x);
-      for (const auto& entry : grid.row_range(grid.row_of(at(v).y), col, col)) {
-        const Segment& s = seg(entry.segment);
+      for (const auto& entry : grid.cell_at(at(v))) {
+        const Segment& s = seg(entry.item);
         if (!detail::on_segment(at(s.a), at(s.b), at(v))) continue;
-        splits_[entry.segment].vertices.push_back(v);
+        splits_[entry.item].vertices.push_back(v);
         found = true;
       }
     }

@@ -137,7 +137,7 @@ public:
     ++query_;
     const std::uint32_t row = g_.row_of(q.y), col = g_.col_of(q.x);
     const std::uint32_t c0 = leftward ? 0 : col, c1 = leftward ? col : g_.cols() - 1;
-    for (const auto& entry : g_.row_range(row, c0, c1)) test(entry.segment, q, leftward);
+    for (const auto& entry : g_.row_range(row, c0, c1)) test(entry.item, q, leftward);
     std::uint32_t best = no_index;
     for (std::uint32_t r : touched_)
       if (parity_[r] && !outer_[r] && (best == no_index || fm_.ring_area[r] < fm_.ring_area[best])) best = r;

@@ -120,7 +120,7 @@ std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const Seg
     for (std::size_t k = 0; k < row.size();) {
       cell.clear();
       const std::uint32_t col = row[k].col;
-      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].segment);
+      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].item);
       if (cell.size() > 1) test_cell(pslg, cell, found);
     }
   }
@@ -176,7 +176,7 @@ std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const Segmen
     for (std::size_t k = 0; k < row.size();) {
       cell.clear();
       const std::uint32_t col = row[k].col;
-      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].segment);
+      for (; k < row.size() && row[k].col == col; ++k) cell.push_back(row[k].item);
       // Pruned by x-extent after sorting, as test_cell() does.
       std::sort(cell.begin(), cell.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
       for (std::size_t u = 0; u < cell.size(); ++u) {
@@ -190,9 +190,8 @@ std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const Segmen
 
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {
   if (!grid.contains(p)) return std::nullopt;
-  const std::uint32_t col = grid.col_of(p.x);
-  for (const auto& entry : grid.row_range(grid.row_of(p.y), col, col)) {
-    const std::uint32_t s = entry.segment; // ascending within a cell: the first hit is the smallest
+  for (const auto& entry : grid.cell_at(p)) {
+    const std::uint32_t s = entry.item; // ascending within a cell: the first hit is the smallest
     if (on_segment(pslg.points[pslg.segments[s].a], pslg.points[pslg.segments[s].b], p)) return s;
   }
   return std::nullopt;

@@ -33,9 +33,8 @@ void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary,
   const SegmentGrid grid(P, boundary);
   for (std::uint32_t v = 0; v < P.size(); ++v) {
     if (vertex[v] == 0 || !grid.contains(P[v])) continue;
-    const std::uint32_t col = grid.col_of(P[v].x);
-    for (const SegmentGrid::Entry& e : grid.row_range(grid.row_of(P[v].y), col, col)) {
-      const Segment& s = boundary[e.segment];
+    for (const SegmentGrid::Entry& e : grid.cell_at(P[v])) {
+      const Segment& s = boundary[e.item];
       if (s.a == v || s.b == v) continue;
       if (orient2d(P[s.a], P[s.b], P[v]) == 0.0 && strictly_between(P[s.a], P[s.b], P[v]))
         log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " + std::to_string(s.a) + "-" +

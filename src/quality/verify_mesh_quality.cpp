@@ -25,8 +25,8 @@ namespace madd::detail {
 // - the relative 1e-12 on the bound is room for the mesher reaching the same
 //   bound through other roundings: a bound computed once and scaled, the
 //   function evaluated at a centroid formed another way (a few ulps off).
-//   Both use triangle_centroid and area_bound_at; a bound that differs by
-//   more than this is another bound, not rounding.
+//   Both ask the one AreaBound (quality/area_bound.hpp) at triangle_centroid;
+//   a bound that differs by more than this is another bound, not rounding.
 // A region's max_area (> 0) is one more bound on its triangles, the smallest winning.
 void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
                      ProblemLog& log) {
@@ -39,7 +39,7 @@ void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vect
   const auto& P = m.points;
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    double bound = bound_at.at(triangle_centroid(a, b, c));
+    double bound = bound_at.area_at(triangle_centroid(a, b, c));
     if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
       bound = std::min(bound, regions[label[t] - 1].max_area);
     if (!(bound < std::numeric_limits<double>::infinity())) continue;

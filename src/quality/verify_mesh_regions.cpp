@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 #include <unordered_set>
+#include <utility>
 
 #include "kernel/number_format.hpp"
 #include "madd/predicates.hpp"
@@ -45,11 +46,15 @@ void check_interior_points(const Mesh& m, ProblemLog& log) {
     in_k.assign(m.points.size(), 0);
     for (std::uint32_t t = m.subdomain_first_triangle[k]; t < m.subdomain_first_triangle[k + 1]; ++t)
       for (const std::uint32_t v : m.triangles[t]) in_k[v] = 1;
-    for (const std::uint32_t v : points)
-      if (v >= m.points.size() || in_k[v] == 0)
-        log.add("isolated input vertex " + std::to_string(v) +
-                (v < m.points.size() ? " " + point_text(m.points[v]) : std::string()) +
-                " is no vertex of subdomain " + std::to_string(k) + "'s triangles");
+    for (const std::uint32_t v : points) {
+      if (v < m.points.size() && in_k[v] != 0) continue;
+      // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive)
+      // on "literal" + a temporary string inside the conditional.
+      std::string text = "isolated input vertex " + std::to_string(v);
+      if (v < m.points.size()) text.append(" ").append(point_text(m.points[v]));
+      text.append(" is no vertex of subdomain ").append(std::to_string(k)).append("'s triangles");
+      log.add(std::move(text));
+    }
   }
 }
 

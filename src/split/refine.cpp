@@ -80,7 +80,7 @@ void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pi
     std::vector<std::uint32_t> chain{vertex_point(sub.segments[seg].a)};
     for (std::uint32_t j = 1; j < m; ++j) {
       const Point p = lerp(a, b, static_cast<double>(j) / static_cast<double>(m));
-      chain.push_back(add_point(p, EndRef{EndRef::on_segment, seg, 0, p}));
+      chain.push_back(add_point(p, EndRef{EndRef::inside_segment, seg, 0, p}));
     }
     chain.push_back(vertex_point(sub.segments[seg].b));
     for (std::uint32_t j = 0; j < m; ++j) {
@@ -176,7 +176,7 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
         const std::uint32_t along = forward ? j : m - j;
         const Point p = lerp(s0, s1, static_cast<double>(along) / static_cast<double>(m));
         const float bonus = (2 * j == m) ? midpoint_bonus : 1.0f;
-        cycle.push_back(add_point(p, EndRef{EndRef::on_segment, seg, 0, p}, static_cast<std::uint32_t>(r), bonus));
+        cycle.push_back(add_point(p, EndRef{EndRef::inside_segment, seg, 0, p}, static_cast<std::uint32_t>(r), bonus));
       }
     }
     const std::size_t n = cycle.size();

@@ -193,7 +193,7 @@ std::uint32_t Subdivision::add_separators(std::uint32_t face, const SplitResult&
     if (it != resolved.end()) return it->second;
     std::uint32_t v = 0;
     const bool far_ok = other.kind == EndRef::centre || edges_at[key_of(other)].size() == 1;
-    if (split.snap.distance > 0.0 && e.kind == EndRef::on_segment && edges_at[key].size() == 1 && far_ok) {
+    if (split.snap.distance > 0.0 && e.kind == EndRef::inside_segment && edges_at[key].size() == 1 && far_ok) {
       SnapEdge snap;
       snap.split = &split;
       snap.face = face;

@@ -16,9 +16,9 @@ namespace madd::detail {
 // was computed from. `local` identifies the point within its split (so that
 // edges sharing an end share the committed vertex).
 struct EndRef {
-  enum Kind : std::uint8_t { vertex, on_segment, centre };
+  enum Kind : std::uint8_t { vertex, inside_segment, centre };
   Kind kind = vertex;
-  std::uint32_t id = no_index;  // vertex: global vertex; on_segment: global segment (snapshot id)
+  std::uint32_t id = no_index;  // vertex: global vertex; inside_segment: global segment (snapshot id)
   std::uint32_t local = 0;      // working point or circumcentre number within the split
   Point p;                      // exact coordinates of the end
 };
