@@ -134,8 +134,9 @@ int mesh_body(void* context) {
   if (!args.sizes_file.empty()) options.size.triangle_area_samples = read_background(args.sizes_file, true);
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
-  MeshReport report;
-  const Mesh m = mesh(domain, options, report);
+  const MeshRun run = mesh_with_report(domain, options);
+  const Mesh& m = run.mesh;
+  const MeshReport& report = run.report;
   progress.say("writing");
   OutputSet outputs;
   add_mesh(outputs, m, args.prefix, args.formats);

@@ -8,7 +8,10 @@
 
 namespace madd::cli {
 
-AngleFigures angle_figures(const Mesh& m) {
+namespace {
+
+template <typename AnyMesh>  // Mesh or LocalMesh: the same fields
+AngleFigures figures_of(const AnyMesh& m) {
   AngleFigures f;
   std::vector<double> smallest(m.triangles.size());
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
@@ -29,5 +32,10 @@ AngleFigures angle_figures(const Mesh& m) {
   }
   return f;
 }
+
+} // namespace
+
+AngleFigures angle_figures(const Mesh& m) { return figures_of(m); }
+AngleFigures angle_figures(const LocalMesh& m) { return figures_of(m); }
 
 } // namespace madd::cli

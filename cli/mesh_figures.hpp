@@ -3,6 +3,7 @@
 #include <cstddef>
 
 #include "madd/mesh.hpp"
+#include "madd/mesh_share.hpp"
 
 namespace madd::cli {
 
@@ -15,5 +16,6 @@ struct AngleFigures {
 };
 
 AngleFigures angle_figures(const Mesh& m);
+AngleFigures angle_figures(const LocalMesh& m);  // a madd-mpi share's part
 
 } // namespace madd::cli

@@ -641,8 +641,7 @@ struct InteriorMesh {
   }();
   Mesh mesh = [this] {
     madd::MeshOptions o = madd::test::options_for(2, 30, 0.02);
-    madd::MeshReport report;
-    return madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+    return madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;
   }();
 };
 

@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "madd/atomic_write.hpp"  // write_file_atomically was declared here before 0.2
 #include "madd/pslg.hpp"
 
 namespace madd {
@@ -12,6 +11,7 @@ namespace madd {
 struct PolyFile {
   Pslg pslg;
   SourceMap source;
+  friend bool operator==(const PolyFile&, const PolyFile&) = default;
 };
 
 // Parses .poly text. `path` names the file in error messages and locates the
