@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "option_names.hpp"
 #include "option_values.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/expression.hpp"
@@ -95,7 +96,7 @@ bool is_extra_format(int c) { return c == opt_neigh || c == opt_edge || c == opt
 // Said with the CLI's names of the mesh options.
 std::string option_problem(const OptionError& e) {
   const std::string field = e.option();
-  const char* name = field == "min_triangle_angle_deg" ? "-q" : field == "max_triangle_area" ? "-a" : field == "triangle_area_samples" ? "--sizes" : nullptr;
+  const char* name = field == "min_triangle_angle_deg" ? "-q" : field == "max_triangle_area" ? "-a" : field == "triangle_area_samples" ? "--sizes" : cli_name_of(field);
   return name ? std::string(name) + " " + e.requirement() : std::string(e.what());
 }
 
