@@ -166,7 +166,9 @@ int decompose_body(void* context) {
 
   start = std::chrono::steady_clock::now();
   progress.say("decomposing into " + std::to_string(options.subdomains) + " subdomains");
-  const Decomposition d = with_cli_option_names(line, [&] { return decompose(domain, options, times); });
+  const DecomposeRun run = with_cli_option_names(line, [&] { return decompose_with_report(domain, options); });
+  const Decomposition& d = run.decomposition;
+  times.insert(times.end(), run.report.phases.begin(), run.report.phases.end());
   times.push_back({"decompose", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();

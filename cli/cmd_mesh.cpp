@@ -53,8 +53,9 @@ int mesh_body(void* context) {
   }
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
-  MeshReport report;
-  const Mesh m = mesh(domain, options, report);
+  const MeshRun run = mesh_with_report(domain, options);
+  const Mesh& m = run.mesh;
+  const MeshReport& report = run.report;
   progress.say("writing");
   OutputSet outputs;
   add_mesh(outputs, m, args.prefix, line.formats);
@@ -65,9 +66,9 @@ int mesh_body(void* context) {
   const MeshMetrics figures = line.report || !line.quiet ? mesh_metrics(m, options.size) : MeshMetrics{};
   std::string json;
   if (line.report) {
-    std::vector<RunFigure> run = run_figures(report);
-    run.push_back({"seconds", seconds_since(start)});
-    json = format_mesh_report_json(figures, run);
+    std::vector<RunFigure> figures_of_run = run_figures(report);
+    figures_of_run.push_back({"seconds", seconds_since(start)});
+    json = format_mesh_report_json(figures, figures_of_run);
   }
   if (line.report && !line.report_file.empty()) outputs.add_file(line.report_file, json);
   writing_outputs = 1;

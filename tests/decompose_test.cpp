@@ -277,9 +277,9 @@ TEST_CASE("phase times: every split phase and the commits are timed, and timing 
   madd::DecomposeOptions o;
   o.subdomains = 40;
   o.threads = 2;
-  std::vector<madd::PhaseTime> phases;
-  const Decomposition timed = madd::decompose(domain, o, phases);
-  CHECK(timed == madd::decompose(domain, o));
+  const madd::DecomposeRun timed = madd::decompose_with_report(domain, o);
+  CHECK(timed.decomposition == madd::decompose(domain, o));
+  const std::vector<madd::PhaseTime>& phases = timed.report.phases;
   const std::vector<std::string> names{"refine", "triangulate", "graph", "bisect", "insert", "rebalance"};
   REQUIRE(phases.size() == names.size());
   double total = 0.0;

@@ -47,6 +47,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -270,6 +271,62 @@ TEST_SUITE("docs") {
       dangling.insert(dangling.end(), found.begin(), found.end());
     }
     CHECK_MESSAGE(dangling.empty(), dangling.size() << " dangling references:\n" << joined(dangling));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// 1b. docs/api.md lists the whole public API.
+
+namespace {
+
+// What a public header declares in namespace madd itself (not in
+// madd::detail, not members): types, functions and constants. Declarations
+// start at column 0 in these headers; continuation lines are indented.
+std::vector<std::string> public_names(const std::string& text) {
+  static const std::regex type_re(R"(^(?:struct|class|enum class|enum)\s+(\w+))");
+  static const std::regex constant_re(R"(^inline constexpr [^=]*\s(\w+)\s*=)");
+  static const std::regex function_re(R"((\w+)\()");
+  std::vector<std::string> names;
+  std::istringstream in(text);
+  std::string line;
+  int depth = 0;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find("//"));
+    std::smatch m;
+    const bool declaration = depth == 1 && !line.empty() && std::isalpha(static_cast<unsigned char>(line[0])) &&
+                             line.rfind("namespace", 0) != 0 && line.rfind("friend", 0) != 0;
+    if (declaration && (std::regex_search(line, m, type_re) || std::regex_search(line, m, constant_re) ||
+                        (line.find("operator") == std::string::npos && std::regex_search(line, m, function_re))))
+      names.push_back(m[1]);
+    depth += static_cast<int>(std::count(line.begin(), line.end(), '{') - std::count(line.begin(), line.end(), '}'));
+  }
+  return names;
+}
+
+} // namespace
+
+TEST_SUITE("docs") {
+  TEST_CASE("docs/api.md names every public header and every type and function they declare") {
+    const std::string api = slurp(source_root / "docs/api.md");
+    const auto named = [&](const std::string& name) {
+      for (std::size_t at = api.find('`' + name); at != std::string::npos; at = api.find('`' + name, at + 1)) {
+        const std::size_t end = at + 1 + name.size();
+        if (end < api.size() && !(std::isalnum(static_cast<unsigned char>(api[end])) || api[end] == '_')) return true;
+      }
+      return false;
+    };
+    std::vector<std::string> missing;
+    std::size_t names = 0;
+    for (const auto& e : fs::directory_iterator(source_root / "include/madd")) {
+      const std::string header = "madd/" + e.path().filename().string();
+      if (!named(header)) missing.push_back(header);
+      for (const std::string& name : public_names(slurp(e.path()))) {
+        ++names;
+        if (!named(name)) missing.push_back(header + ": " + name);
+      }
+    }
+    CHECK(names > 150);  // the reader found the declarations
+    CHECK_MESSAGE(missing.empty(), "not in docs/api.md:\n" << joined(missing));
   }
 }
 

@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 #include "madd/pslg.hpp"
 #include "madd/triangulation.hpp"
 
 namespace {
 
-using madd::BoundaryLinks;
+using madd::detail::BoundaryLinks;
 using madd::Point;
 using madd::Triangulation;
 constexpr std::uint32_t none = madd::no_index;
@@ -88,15 +89,15 @@ TEST_CASE("junction triangle: the central triangle of a hexagon, depending on Ph
   const auto links = ring_links(6);
   // Spokes to the hexagon corners make exactly 60 degrees with the boundary,
   // and 120 degrees with each other.
-  const madd::JunctionTest at55 = madd::test_junction(t, 0, links, 55.0);
+  const madd::detail::JunctionTest at55 = madd::detail::test_junction(t, 0, links, 55.0);
   CHECK(at55.junction);
   CHECK(std::abs(at55.centre.x) < 1e-12);
   CHECK(std::abs(at55.centre.y) < 1e-12);
   CHECK((at55.spoke_ok[0] && at55.spoke_ok[1] && at55.spoke_ok[2]));
   for (double a : at55.spoke_angle) CHECK(a == doctest::Approx(60.0));
-  CHECK_FALSE(madd::test_junction(t, 0, links, 65.0).junction);
+  CHECK_FALSE(madd::detail::test_junction(t, 0, links, 65.0).junction);
   // The ears do not contain their circumcentre (120 degree angle) and have two boundary edges.
-  for (std::uint32_t ear = 1; ear < 4; ++ear) CHECK_FALSE(madd::test_junction(t, ear, links, 30.0).junction);
+  for (std::uint32_t ear = 1; ear < 4; ++ear) CHECK_FALSE(madd::detail::test_junction(t, ear, links, 30.0).junction);
 }
 
 TEST_CASE("junction triangle: an obtuse-free triangle with two good spokes only") {
@@ -110,13 +111,13 @@ TEST_CASE("junction triangle: an obtuse-free triangle with two good spokes only"
   t.segment_of = {{1, none, 0}, {2, 3, none}};
   const auto links = ring_links(4);
   // Triangle 0 has only one interior edge: property 2 fails whatever Phi0.
-  CHECK_FALSE(madd::test_junction(t, 0, links, 10.0).junction);
+  CHECK_FALSE(madd::detail::test_junction(t, 0, links, 10.0).junction);
 }
 
 TEST_CASE("G_D of the hexagon and its contraction") {
   const Triangulation t = hexagon();
   const auto links = ring_links(6);
-  const madd::MedialGraph g = madd::build_medial_graph(t, links, {55.0, false});
+  const madd::MedialGraph g = madd::detail::build_medial_graph(t, links, {55.0, false});
   REQUIRE(g.gd.vertex_count() == 6);  // three sub-triangles + three ears
   REQUIRE(g.edges.size() == 6);       // three triangle edges + three spokes
   double total = 0.0;
@@ -140,7 +141,9 @@ TEST_CASE("contraction removes exactly the unacceptable edges (random polygons)"
     const Triangulation t = madd::triangulate(p);
     const auto links = ring_links(static_cast<std::uint32_t>(p.points.size()));
     const double phi = 50.0 + 3.0 * seed;
-    const madd::MedialGraph g = madd::build_medial_graph(t, links, {phi, true});
+    const madd::MedialGraph g = madd::detail::build_medial_graph(t, links, {phi, true});
+    // The public build reads the same ring links off the triangles' outer edges.
+    CHECK(madd::build_medial_graph(t, {phi, true}) == g);
     std::set<std::pair<std::uint32_t, std::uint32_t>> expected;
     for (const madd::MedialEdge& e : g.edges) {
       const std::uint32_t a = g.coarse[e.left], b = g.coarse[e.right];

@@ -57,8 +57,7 @@ Mesh mesh_fixture(double q, double area, unsigned threads) {
   const madd::test::InteriorFixture f = madd::test::interior_fixture();
   madd::MeshOptions o = madd::test::options_for(2, q, area);
   o.decomposition.threads = threads;
-  madd::MeshReport report;
-  return madd::mesh_decomposition(f.decomposition, f.domain, o, report);  // verify_mesh runs inside
+  return madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;  // verify_mesh runs inside
 }
 
 } // namespace
@@ -208,8 +207,7 @@ TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior
   for (const madd::Subdomain& s : d.subdomains) CHECK(std::is_sorted(s.interior_segments.begin(), s.interior_segments.end()));
   // The mesh of it still verifies.
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.05);
-  madd::MeshReport report;
-  CHECK_NOTHROW(madd::mesh_decomposition(f.decomposition, f.domain, o, report));
+  CHECK_NOTHROW(madd::mesh_decomposition(f.decomposition, f.domain, o));
 }
 
 namespace {

@@ -87,9 +87,9 @@ TEST_CASE("mesh_metrics of an empty mesh: no triangle, no ratio") {
 TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; an unknown median is left out") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
   const madd::MeshOptions o = madd::test::options_for(4, 30, 0);
-  madd::MeshReport report;
-  const madd::Mesh mesh = madd::mesh(domain, o, report);
-  madd::MeshMetrics m = madd::mesh_metrics(mesh, o.size);
+  const madd::MeshRun made = madd::mesh_with_report(domain, o);
+  const madd::MeshReport& report = made.report;
+  madd::MeshMetrics m = madd::mesh_metrics(made.mesh, o.size);
   std::vector<madd::RunFigure> run = madd::run_figures(report);
   run.push_back({"seconds", 1.5});
   const std::string json = madd::format_mesh_report_json(m, run);
@@ -109,7 +109,7 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
     CHECK(member(json.substr(at + 1), key) == std::string::npos);  // once
     previous = at;
   }
-  CHECK(json.find("\"triangles\": " + std::to_string(mesh.triangles.size()) + ",") != std::string::npos);
+  CHECK(json.find("\"triangles\": " + std::to_string(made.mesh.triangles.size()) + ",") != std::string::npos);
   CHECK(json.find("\"threads\": " + std::to_string(report.thread_seconds.size()) + ",") != std::string::npos);
   CHECK(json.find("\"seconds\": 1.5\n}") != std::string::npos);
   for (const madd::PhaseTime& p : report.phases) CHECK(json.find("\"" + p.name + "\": ") != std::string::npos);

@@ -83,8 +83,7 @@ std::vector<madd::MeshPart> mesh_decomposition_in_shares(const madd::Decompositi
   std::vector<std::thread> threads;
   for (std::uint32_t r = 0; r < shares; ++r)
     threads.emplace_back([&, r] {
-      madd::MeshReport report;
-      parts[r] = madd::mesh_share(d, domain, o, r, shares, exchange_for(meeting, r, rounds_with_splits), report);
+      parts[r] = madd::mesh_share(d, domain, o, r, shares, exchange_for(meeting, r, rounds_with_splits)).part;
     });
   for (std::thread& t : threads) t.join();
   return parts;
@@ -92,8 +91,7 @@ std::vector<madd::MeshPart> mesh_decomposition_in_shares(const madd::Decompositi
 
 std::vector<madd::MeshPart> mesh_in_shares(const madd::Pslg& domain, const madd::MeshOptions& o, std::uint32_t shares,
                                            int& rounds_with_splits) {
-  std::vector<madd::PhaseTime> phases;
-  const madd::Decomposition d = madd::decompose_for_mesh(domain, o, phases);
+  const madd::Decomposition d = madd::decompose_for_mesh(domain, o).decomposition;
   return mesh_decomposition_in_shares(d, domain, o, shares, rounds_with_splits);
 }
 
@@ -104,7 +102,7 @@ void check_union_is(const madd::Mesh& whole, const std::vector<madd::MeshPart>& 
   for (const madd::MeshPart& part : parts) {
     REQUIRE(part.total_points == whole.points.size());
     REQUIRE(part.total_triangles == whole.triangles.size());
-    const madd::Mesh& m = part.mesh;
+    const madd::LocalMesh& m = part.mesh;
     REQUIRE(part.point_ids.size() == m.points.size());
     REQUIRE(part.triangle_ids.size() == m.triangles.size());
     for (std::size_t v = 0; v < m.points.size(); ++v) {
@@ -197,8 +195,7 @@ TEST_CASE("mesh_share: separator pieces split between rounds are agreed on by ev
 TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 and 2 shares make mesh()'s mesh") {
   const madd::test::InteriorFixture f = madd::test::interior_fixture();
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.01);
-  madd::MeshReport report;
-  const madd::Mesh whole = madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+  const madd::Mesh whole = madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;
   REQUIRE(!whole.triangle_attribute.empty());
   for (const std::uint32_t shares : {1u, 2u}) {
     CAPTURE(shares);
@@ -255,8 +252,7 @@ TEST_CASE("assign_shares: every share gets work, none more than the largest subd
       CHECK(l <= mean + 9);  // greedy: a share is only ever given work while it is the least loaded
     }
   }
-  madd::MeshReport report;
-  CHECK_THROWS_AS(madd::mesh_share({}, {}, {}, 2, 2, {}, report), madd::OptionError);
+  CHECK_THROWS_AS(madd::mesh_share({}, {}, {}, 2, 2, {}), madd::OptionError);
 }
 
 TEST_CASE("mesh part files: the .node carries each vertex's global id and owner, the .vtu its GlobalIds, the .pvtu every piece") {

@@ -196,13 +196,12 @@ TEST_CASE("mesh: a time or memory limit reached while refining throws LimitError
   const madd::Pslg domain = pipe();
   // The decomposition is quick; refinement to a tiny area is not: the limit is met while refining.
   madd::MeshOptions o = options_for(2, 30, 1e-6);
-  madd::MeshReport report;
   const madd::Decomposition d = madd::decompose(domain, o.decomposition);
   o.decomposition.time_limit_seconds = 1e-9;
-  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o, report), madd::LimitError);
+  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o), madd::LimitError);
   o.decomposition.time_limit_seconds = 0;
   o.decomposition.max_memory_bytes = 1;
-  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o, report), madd::LimitError);
+  CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o), madd::LimitError);
 }
 
 TEST_CASE("mesh: under a size function, balance by work evens the triangle counts that balance by area leaves uneven") {

@@ -9,12 +9,14 @@
 #include "kernel/rings.hpp"
 #include "madd/metrics.hpp"
 #include "madd/predicates.hpp"
+#include "quality/decile.hpp"
 #include "quality/metrics_detail.hpp"
 #include "metrics_fixtures.hpp"
 
 namespace {
 
 using namespace madd;
+using madd::detail::decile;
 using madd::test::Fixture;
 
 bool mentions(const Verification& v, const std::string& text) {

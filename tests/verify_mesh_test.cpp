@@ -690,8 +690,7 @@ TEST_CASE("one size bound: the mesher's refinement and verify_mesh ask the same 
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.0);
   o.size = size;
   o.size.min_triangle_angle_deg = 30;
-  madd::MeshReport report;
-  const Mesh m = madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+  const Mesh m = madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;
   const madd::Verification v = madd::verify_mesh(m, f.domain, o.size);
   show(v);
   CHECK(v.ok());
@@ -709,8 +708,7 @@ struct InteriorMesh {
   }();
   Mesh mesh = [this] {
     madd::MeshOptions o = madd::test::options_for(2, 30, 0.02);
-    madd::MeshReport report;
-    return madd::mesh_decomposition(f.decomposition, f.domain, o, report);
+    return madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;
   }();
 };
 

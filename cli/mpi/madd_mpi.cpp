@@ -322,8 +322,7 @@ int run(const World& world, const cli::MeshArgs& args) {
   const int code = agree(world, attempt([&] {
     options = cli::with_background_files(args.line);
     domain = read_domain(args.input);
-    std::vector<PhaseTime> phases;
-    decomposition = decompose_for_mesh(domain, options, phases);
+    decomposition = decompose_for_mesh(domain, options).decomposition;
   }));
   if (code != cli::exit_ok) return code;
   const double decompose_s = seconds_since(start);
@@ -331,8 +330,10 @@ int run(const World& world, const cli::MeshArgs& args) {
   MeshReport report;
   MeshPart part;
   abort_on(world, attempt([&] {
-    part = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
-                      static_cast<std::uint32_t>(world.size), mpi_exchange(), report);
+    MeshPartRun run = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
+                                 static_cast<std::uint32_t>(world.size), mpi_exchange());
+    part = std::move(run.part);
+    report = std::move(run.report);
   }));
   // Format this rank's files (the report too, on rank 0), gather the
   // figures, then write every part or none.

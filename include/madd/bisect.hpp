@@ -43,6 +43,7 @@ struct BisectOptions {
   // Pairs of vertices that must end on the same side (e.g. both ends of an
   // edge that must not be cut; Sec. 4.3 of the MADD paper).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keep_together;
+  friend bool operator==(const BisectOptions&, const BisectOptions&) = default;
 };
 
 // Throws OptionError on an option out of its range (bisect() calls it).
@@ -53,6 +54,7 @@ struct Bisection {
   double cut = 0.0;                // total weight of edges between the sides
   double weight[2] = {0.0, 0.0};   // vertex weight on each side
   bool connected[2] = {true, true};  // each side induces a connected subgraph
+  friend bool operator==(const Bisection&, const Bisection&) = default;
 };
 
 // Bisects `graph`. Deterministic for a given graph and options. When the graph
@@ -72,6 +74,7 @@ struct PartitionOptions {
   std::uint64_t seed = 1;
   bool connected = false;   // --contig
   int refinement_passes = BisectOptions{}.refinement_passes;  // per level of every bisection (--niter)
+  friend bool operator==(const PartitionOptions&, const PartitionOptions&) = default;
 };
 
 // Throws OptionError on an option out of its range (partition() calls it).
@@ -81,6 +84,7 @@ struct Partition {
   std::vector<std::uint32_t> part;  // 0..k-1 per vertex
   double cut = 0.0;
   std::vector<double> part_weights;
+  friend bool operator==(const Partition&, const Partition&) = default;
 };
 
 // K-way partition by recursive bisection (the k > 2 mode of `madd partition`).

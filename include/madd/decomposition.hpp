@@ -108,8 +108,12 @@ void check_options(const DecomposeOptions& options, const Pslg& domain);
 // subdomain_area_samples, Sec. 5.2): `subdomains` is then a maximum, not a target.
 bool has_required_area(const DecomposeOptions& options) noexcept;
 
-// The name of DecomposeOptions before 0.2 (when every options struct got its stage's prefix).
-using Options [[deprecated("use madd::DecomposeOptions")]] = DecomposeOptions;
+// Wall time of one phase of a run ("read", "refine", "verify"...).
+struct PhaseTime {
+  std::string name;
+  double seconds = 0.0;
+  friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
+};
 
 // One subdomain, a face of the global subdivision. rings[0] is the outer
 // boundary (counter-clockwise), the others are holes (clockwise). Each ring is
@@ -171,19 +175,26 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options = {}
 // if it lies between 1 and `requested`.
 std::uint32_t expected_subdomain_count(const Decomposition& decomposition, std::uint32_t requested) noexcept;
 
-// Wall time of one phase of a run ("read", "refine", "verify"...).
-struct PhaseTime {
-  std::string name;
-  double seconds = 0.0;
-  friend bool operator==(const PhaseTime&, const PhaseTime&) = default;
-};
-
-// decompose(), also appending the time of its phases to `phases` (docs/quality.md):
-// "refine", "triangulate", "graph" and "bisect" summed over every split (on
-// all threads, so with several threads they add up to more than the wall
+// Timings of one decompose() run (not part of the result: they vary from run
+// to run), docs/quality.md, "Phase times": "refine" (the boundary
+// refinement), "triangulate", "graph" and "bisect" summed over every split
+// (on all threads, so with several threads they add up to more than the wall
 // time), then "insert", committing the splits to the subdivision (one thread),
 // and "rebalance", the balance repair once N is reached (one thread; 0 when off).
-Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases);
+struct DecomposeReport {
+  std::vector<PhaseTime> phases;
+  friend bool operator==(const DecomposeReport&, const DecomposeReport&) = default;
+};
+
+// A decomposition and the report of the run that made it.
+struct DecomposeRun {
+  Decomposition decomposition;
+  DecomposeReport report;
+  friend bool operator==(const DecomposeRun&, const DecomposeRun&) = default;
+};
+
+// decompose(), with the time of each phase: the same decomposition.
+DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& options = {});
 
 // Recomputes every invariant of a decomposition of `domain` into
 // `expected_count` subdomains: full cover (the subdomains' and the domain's

@@ -157,6 +157,7 @@ struct Verification {
   bool ok() const noexcept { return problems.empty(); }
   explicit operator bool() const noexcept { return ok(); }
   void add(std::string problem) { problems.push_back(std::move(problem)); }
+  friend bool operator==(const Verification&, const Verification&) = default;
 };
 
 } // namespace madd

@@ -3,25 +3,15 @@
 // (paper Sec. 5.2, case 3) are given as text ("1e-4*(1+r^12)") instead of the
 // dynamically loaded libraries of the paper's Sec. 6. Grammar in docs/script.md.
 #include <cstddef>
-#include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace madd {
 
 namespace detail {
-// One instruction of a compiled expression: a stack machine in postfix order.
-enum class ExprOp : std::uint8_t {
-  constant, x, y, r, add, sub, mul, div, pow, neg,
-  sqrt, exp, log, sin, cos, tan, abs, floor, ceil, min, max, hypot,
-};
-struct ExprInstruction {
-  ExprOp op = ExprOp::constant;
-  double value = 0.0;  // the number, for ExprOp::constant only
-  friend bool operator==(const ExprInstruction&, const ExprInstruction&) = default;
-};
+struct ExprProgram;  // the compiled program (src/script/expression_program.hpp)
 } // namespace detail
 
 // Deepest nesting of parentheses, function calls, unary signs and '^' that
@@ -45,16 +35,16 @@ public:
   // The text it was compiled from.
   const std::string& text() const noexcept { return text_; }
 
-  // The postfix program (for tests and tools); evaluation needs stack_size() slots.
-  const std::vector<detail::ExprInstruction>& program() const noexcept { return program_; }
-  std::size_t stack_size() const noexcept { return stack_size_; }
+  // The most intermediate values evaluation holds (bounded: the parser
+  // refuses expressions that need more).
+  std::size_t stack_size() const noexcept;
 
-  friend bool operator==(const Expression&, const Expression&) = default;
+  // The same text compiled to the same program.
+  friend bool operator==(const Expression& a, const Expression& b) noexcept;
 
 private:
   friend Expression parse_expression(std::string_view, const std::string&);
-  std::vector<detail::ExprInstruction> program_;
-  std::size_t stack_size_ = 1;
+  std::shared_ptr<const detail::ExprProgram> program_;  // shared by copies: it never changes
   std::string text_;
 };
 

@@ -19,6 +19,7 @@ struct ResolvedPslg {
   std::size_t new_vertices = 0;
   std::size_t crossings = 0;  // pairs of input segments found crossing (first pass)
   std::size_t overlaps = 0;   // pairs of input segments found overlapping (first pass)
+  friend bool operator==(const ResolvedPslg&, const ResolvedPslg&) = default;
 };
 
 // Splits every segment at each vertex lying on it and at every point where

@@ -140,6 +140,14 @@ struct MeshReport {
   std::vector<double> thread_seconds;     // busy time of each meshing thread
   std::vector<double> subdomain_seconds;  // time to mesh each subdomain
   std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance by work")
+  friend bool operator==(const MeshReport&, const MeshReport&) = default;
+};
+
+// A mesh and the report of the run that made it.
+struct MeshRun {
+  Mesh mesh;
+  MeshReport report;
+  friend bool operator==(const MeshRun&, const MeshRun&) = default;
 };
 
 // The ranges of the mesh options (min_triangle_angle_deg in [0, 60),
@@ -157,11 +165,12 @@ double area_bound_at(const MeshSizeOptions& size, Point p);
 // throws, LimitError on a resource limit, and InternalError when the self-check
 // (verify_mesh) fails; never returns a partial mesh.
 Mesh mesh(const Pslg& domain, const MeshOptions& options = {});
-Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report);
+// mesh(), with the times of its phases, threads and subdomains: the same mesh.
+MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options = {});
 
-// Meshes an existing decomposition of `domain` (decompose() output).
-Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
-                        MeshReport& report);
+// Meshes an existing decomposition of `domain` (decompose() output), with
+// its report (no "decompose" phase).
+MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options);
 
 // The decoupling step alone: every segment of the decomposition split into
 // pieces short enough for the size bound and the local feature size, the

@@ -13,6 +13,7 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_share.hpp"
 
 namespace madd {
 
@@ -48,6 +49,9 @@ struct MeshMetrics {
 
 // Every figure of `mesh`; max_area_bound from `size`.
 MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size = {});
+// The same figures of one share's triangles (MeshPart::mesh): subdomains is
+// the whole count, largest_subdomain_triangles that of the share's largest.
+MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size = {});
 
 // One figure of a run beside the mesh's own, as a report writes it after
 // them: a number, a list of seconds, or named seconds. Run figures (times,

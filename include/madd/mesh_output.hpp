@@ -91,6 +91,7 @@ struct MeshFormats {
   bool msh = false;      // PREFIX.msh
   bool vtu = false;      // PREFIX.vtu
   unsigned first_index = 1;  // of the Triangle files: 0 or 1
+  friend bool operator==(const MeshFormats&, const MeshFormats&) = default;
 };
 
 // Adds the chosen files of `mesh` under `prefix` to `outputs` (nothing is

@@ -43,6 +43,7 @@ struct MeshPartFormats {
   bool triangle = true;  // PREFIX-R.node, PREFIX-R.ele
   bool vtu = false;      // PREFIX-R.vtu, and PREFIX.pvtu from share 0
   unsigned first_index = 1;  // of the Triangle files: 0 or 1
+  friend bool operator==(const MeshPartFormats&, const MeshPartFormats&) = default;
 };
 
 // Adds the part's files under `prefix` to `outputs` (share 0 also adds

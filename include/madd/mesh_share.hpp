@@ -12,6 +12,7 @@
 // the end on how many points and triangles each subdomain made, so that
 // everyone numbers its vertices as mesh() would. Both are small collectives
 // that the caller provides (ShareExchange); the library never depends on MPI.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -23,8 +24,9 @@
 namespace madd {
 
 // The decomposition mesh() makes of `domain` with these options (balanced by
-// expected triangles when options.balance_by_work). Throws what decompose() throws.
-Decomposition decompose_for_mesh(const Pslg& domain, const MeshOptions& options, std::vector<PhaseTime>& phases);
+// expected triangles when options.balance_by_work), with decompose()'s
+// report. Throws what decompose() throws.
+DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options);
 
 // Which share meshes each subdomain: the subdomains by decreasing expected
 // triangles (ties: lower index first), each to the share with the least
@@ -42,21 +44,53 @@ struct ShareExchange {
   std::function<std::vector<std::uint64_t>(const std::vector<std::uint64_t>& mine)> sum_of;
 };
 
+// One share's triangles and the vertices they use, in local numbering: the
+// fields mean what Mesh's do, but it is not a Mesh (it covers only the
+// share's subdomains, and its points are not the decomposition's).
+struct LocalMesh {
+  std::vector<Point> points;       // the vertices the share's triangles and mesh segments use
+  std::vector<int> point_markers;  // as Mesh::point_markers
+  // Counter-clockwise, grouped by subdomain: the share's subdomain k has
+  // [subdomain_first_triangle[k], subdomain_first_triangle[k + 1]), other
+  // shares' subdomains an empty range.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  // neighbours[t][i]: the triangle across edge i; no_index on the domain
+  // boundary and towards another share's triangle.
+  std::vector<std::array<std::uint32_t, 3>> neighbours;
+  std::vector<std::uint32_t> triangle_subdomain;
+  std::vector<double> triangle_attribute;               // as Mesh::triangle_attribute
+  std::vector<std::uint32_t> subdomain_first_triangle;  // N + 1 offsets
+  // The share's mesh edges on pieces of the discretised decomposition
+  // (MeshSegment::piece indexes MeshPart::decomposition.segments).
+  std::vector<MeshSegment> segments;
+  MeshShortfall shortfall;                // of the share's triangles
+  double min_triangle_angle_deg = 30.0;   // the bound it was refined to
+  friend bool operator==(const LocalMesh&, const LocalMesh&) = default;
+};
+
 // One share's part of the mesh.
 struct MeshPart {
   std::uint32_t share = 0, shares = 1;
   std::vector<std::uint32_t> owner;       // per subdomain: the share that meshes it
   std::vector<std::uint32_t> subdomains;  // this share's, increasing
-  // This share's triangles and the vertices they use, in local numbering:
-  // mesh.decomposition is the whole discretised decomposition (its point
-  // indices are global ids, not local ones), the triangle ranges of other
-  // shares' subdomains are empty, and a neighbour in another share is no_index.
-  Mesh mesh;
+  // The whole discretised decomposition, the same for every share (its point
+  // indices are global ids, mesh()'s Mesh::points, not local ones).
+  Decomposition decomposition;
+  LocalMesh mesh;                           // this share's triangles, in local numbering
   std::vector<std::uint64_t> point_ids;     // per local vertex: its index in mesh()'s Mesh::points
   std::vector<std::uint32_t> point_owner;   // per local vertex: the lowest share whose subdomains use it
   std::vector<std::uint64_t> triangle_ids;  // per local triangle: its index in mesh()'s Mesh::triangles
   std::uint64_t total_points = 0;           // of the whole mesh
   std::uint64_t total_triangles = 0;
+  friend bool operator==(const MeshPart&, const MeshPart&) = default;
+};
+
+// A share's part and the report of the run that made it (the phases
+// "discretise", "refine", "verify", "merge"; the share's threads and subdomains).
+struct MeshPartRun {
+  MeshPart part;
+  MeshReport report;
+  friend bool operator==(const MeshPartRun&, const MeshPartRun&) = default;
 };
 
 // Meshes the subdomains of share `share` of `shares` of a decomposition of
@@ -69,7 +103,7 @@ struct MeshPart {
 // bad options (or share >= shares), LimitError, InternalError on a failed
 // check; never returns a partial part. The union of the parts of shares
 // 0..shares-1 is mesh()'s mesh, for any `shares`.
-MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
-                    std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange, MeshReport& report);
+MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                       std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange);
 
 } // namespace madd

@@ -59,14 +59,13 @@ struct Metrics {
   std::uint32_t subdomains_over_area_bound = 0;
 
   std::vector<PhaseTime> times;
+  // Figure by figure, as doubles compare: a NaN figure (undefined, as
+  // angle_p10 of fewer than two angles) is unequal even to itself.
+  friend bool operator==(const Metrics&, const Metrics&) = default;
 };
 
 // Computes every figure from the decomposition alone (areas from the rings).
 // Precondition: the rings are well formed (verify_decomposition passes).
 Metrics metrics(const Decomposition& decomposition, std::vector<PhaseTime> times = {});
-
-// Quantile q (1..9) of 10 over `sorted` values, Python's "exclusive" method.
-// NaN when fewer than two values.
-double decile(const std::vector<double>& sorted, int q);
 
 } // namespace madd

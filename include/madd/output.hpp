@@ -58,6 +58,7 @@ struct SvgOptions {
   double width = 1000.0;             // pixels of the longer side; the aspect ratio is kept
   bool numbers = false;              // write each subdomain's number at its interior point
   double mark_angles_below_deg = 0;  // circle every new angle below this (0 = none)
+  friend bool operator==(const SvgOptions&, const SvgOptions&) = default;
 };
 
 // Throws OptionError on an option out of its range (format_svg calls it).

@@ -14,6 +14,7 @@ struct GeoOptions {
   // each point, the length of the shortest segment meeting it, so gmsh keeps
   // the decomposition's own resolution; > 0 uses that size everywhere.
   double mesh_size = 0.0;
+  friend bool operator==(const GeoOptions&, const GeoOptions&) = default;
 };
 
 // A gmsh .geo model (built-in kernel, %.17g) of the whole subdivision:

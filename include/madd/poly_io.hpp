@@ -5,7 +5,6 @@
 #include <string_view>
 #include <vector>
 
-#include "madd/atomic_write.hpp"  // write_file_atomically was declared here before 0.2
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
 
@@ -14,6 +13,7 @@ namespace madd {
 struct PolyFile {
   Pslg pslg;
   SourceMap source;
+  friend bool operator==(const PolyFile&, const PolyFile&) = default;
 };
 
 // Parses .poly text. `path` names the file in error messages and locates the

@@ -58,6 +58,7 @@ struct SourceMap {
   std::vector<std::uint32_t> segment_lines;
   std::vector<std::uint32_t> hole_lines;
   std::vector<std::uint32_t> region_lines;
+  friend bool operator==(const SourceMap&, const SourceMap&) = default;
 };
 
 struct ValidateOptions {
@@ -68,6 +69,7 @@ struct ValidateOptions {
   // triangulated over its convex hull (madd triangulate FILE.node): only the
   // coordinate range and duplicate vertices are then checked.
   bool allow_point_set = false;
+  friend bool operator==(const ValidateOptions&, const ValidateOptions&) = default;
 };
 
 // Checks that `pslg` describes one valid domain (docs/formats.md, "The domain"
@@ -86,6 +88,7 @@ struct ValidatePslgOptions {
   // Accept crossing and overlapping segments, to be resolved by
   // resolve_intersections() (madd/intersections.hpp) before triangulating.
   bool allow_intersections = false;
+  friend bool operator==(const ValidatePslgOptions&, const ValidatePslgOptions&) = default;
 };
 
 // Checks that `pslg` is a planar straight line graph triangulate() takes

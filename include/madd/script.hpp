@@ -42,6 +42,7 @@ struct ScriptContext {
 struct ScriptResult {
   std::size_t commands = 0;  // commands executed (comments and blank lines excluded)
   bool exited = false;       // the script ended with `exit`
+  friend bool operator==(const ScriptResult&, const ScriptResult&) = default;
 };
 
 // Runs the commands of `text` in order until `exit` or the end of the text.

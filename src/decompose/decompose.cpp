@@ -104,11 +104,10 @@ detail::SplitOptions split_options_of(const DecomposeOptions& options) {
 } // namespace
 
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
-  std::vector<PhaseTime> ignored;
-  return decompose(domain, options, ignored);
+  return decompose_with_report(domain, options).decomposition;
 }
 
-Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std::vector<PhaseTime>& phases) {
+DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& options) {
   check_options(options, domain);
   const detail::ResourceGuard guard({.time_limit_seconds = options.time_limit_seconds,
                                      .max_memory_bytes = options.max_memory_bytes,
@@ -173,6 +172,8 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
     grading.reassign(sub);
     rebalance_seconds = clock.lap();
   }
+  DecomposeRun run;
+  std::vector<PhaseTime>& phases = run.report.phases;
   phases.push_back({"refine", split_times.refine});
   phases.push_back({"triangulate", split_times.triangulate});
   phases.push_back({"graph", split_times.graph});
@@ -181,7 +182,8 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options, std
   phases.push_back({"rebalance", rebalance_seconds});
   if (sub.faces.size() == 1) sub.faces[0].interior = detail::largest_triangle_centroid(domain);
   detail::check_new_angles(sub, options.separator_angle_deg);
-  return to_decomposition(sub, domain, options, grading);
+  run.decomposition = to_decomposition(sub, domain, options, grading);
+  return run;
 }
 
 } // namespace madd

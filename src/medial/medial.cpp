@@ -1,6 +1,7 @@
 // Junction triangles (Sec. 3), G_D (Algorithm 1) and its contraction into
 // G'_D (Algorithm 2).
 #include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,25 @@
 #include "madd/predicates.hpp"
 
 namespace madd {
+
+double boundary_angle(Point at, Point prev, Point next, Point towards) {
+  const double wedge = detail::ccw_angle_deg(at, next, prev);
+  const double a1 = detail::ccw_angle_deg(at, next, towards);
+  const double a2 = detail::ccw_angle_deg(at, towards, prev);
+  if (wedge <= 0.0 || a1 <= 0.0 || a2 <= 0.0) return -1.0;
+  if (std::abs(a1 + a2 - wedge) > 1e-6) return -1.0;  // outside the wedge
+  return std::min(a1, a2);
+}
+
+std::array<Point, 3> vertex_triangle_corners(const MedialGraph& graph, const Triangulation& tri, std::uint32_t v) {
+  const std::uint32_t t = graph.vertex_triangle[v];
+  const auto& tv = tri.triangles[t];
+  const int sub = graph.vertex_sub[v];
+  if (sub == 3) return {tri.points[tv[0]], tri.points[tv[1]], tri.points[tv[2]]};
+  return {graph.points[graph.centre[t]], tri.points[tv[(sub + 1) % 3]], tri.points[tv[(sub + 2) % 3]]};
+}
+
+namespace detail {
 
 namespace {
 
@@ -51,14 +71,6 @@ int link_side(std::span<const Point> points, std::span<const BoundaryLinks> link
   return boundary_angle(points[at], points[l.prev], points[l.next], towards) >= 0.0 ? 0 : 1;
 }
 
-double boundary_angle(Point at, Point prev, Point next, Point towards) {
-  const double wedge = detail::ccw_angle_deg(at, next, prev);
-  const double a1 = detail::ccw_angle_deg(at, next, towards);
-  const double a2 = detail::ccw_angle_deg(at, towards, prev);
-  if (wedge <= 0.0 || a1 <= 0.0 || a2 <= 0.0) return -1.0;
-  if (std::abs(a1 + a2 - wedge) > 1e-6) return -1.0;  // outside the wedge
-  return std::min(a1, a2);
-}
 
 JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<const BoundaryLinks> links,
                            double separator_angle_deg) {
@@ -112,13 +124,6 @@ JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<
   return out;
 }
 
-std::array<Point, 3> vertex_triangle_corners(const MedialGraph& graph, const Triangulation& tri, std::uint32_t v) {
-  const std::uint32_t t = graph.vertex_triangle[v];
-  const auto& tv = tri.triangles[t];
-  const int sub = graph.vertex_sub[v];
-  if (sub == 3) return {tri.points[tv[0]], tri.points[tv[1]], tri.points[tv[2]]};
-  return {graph.points[graph.centre[t]], tri.points[tv[(sub + 1) % 3]], tri.points[tv[(sub + 2) % 3]]};
-}
 
 namespace {
 
@@ -273,6 +278,30 @@ void set_vertex_weights(MedialGraph& graph, std::vector<double> weights) {
   std::fill(coarse.begin(), coarse.end(), 0.0);
   for (std::size_t v = 0; v < weights.size(); ++v) coarse[graph.coarse[v]] += weights[v];
   graph.gd.vertex_weights = std::move(weights);
+}
+
+std::vector<BoundaryLinks> boundary_links(const Triangulation& tri) {
+  std::vector<BoundaryLinks> links(tri.points.size());
+  std::vector<std::uint8_t> passes(tri.points.size(), 0);
+  for (std::uint32_t t = 0; t < tri.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      if (tri.neighbours[t][i] != no_index) continue;
+      // Edge i of a counter-clockwise triangle, a -> b, has the triangle on its left.
+      const std::uint32_t a = tri.triangles[t][(i + 1) % 3], b = tri.triangles[t][(i + 2) % 3];
+      links[a].next = b;
+      links[b].prev = a;
+      ++passes[a];
+    }
+  for (std::size_t v = 0; v < links.size(); ++v)
+    if (passes[v] > 1) links[v].prev = no_index;  // the boundary passes it twice: no separator ends there
+  return links;
+}
+
+} // namespace detail
+
+MedialGraph build_medial_graph(const Triangulation& tri, const MedialOptions& options) {
+  const std::vector<detail::BoundaryLinks> links = detail::boundary_links(tri);
+  return detail::build_medial_graph(tri, links, options);
 }
 
 } // namespace madd

@@ -151,9 +151,10 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 
 } // namespace detail
 
-Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
-                        MeshReport& report) {
+MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options) {
   check_options(options);
+  MeshRun run;
+  MeshReport& report = run.report;
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
@@ -167,33 +168,31 @@ Mesh mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, 
   std::vector<std::vector<Region>> regions;
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces, regions);
   report.phases.push_back({"refine", clock.lap()});
-  Mesh m = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
+  run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
-  const Verification v = options.verify ? verify_mesh(m, domain, options.size) : Verification{};
+  const Verification v = options.verify ? verify_mesh(run.mesh, domain, options.size) : Verification{};
   report.phases.push_back({"verify", clock.lap()});
   if (!v.ok()) detail::throw_failed_check(v);
-  return m;
+  return run;
 }
 
-Decomposition decompose_for_mesh(const Pslg& domain, const MeshOptions& options, std::vector<PhaseTime>& phases) {
+DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) {
   check_options(options);
   DecomposeOptions dopt = options.decomposition;
   const detail::AreaBound field(options.size);
   if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
-  return decompose(domain, dopt, phases);
+  return decompose_with_report(domain, dopt);
 }
 
-Mesh mesh(const Pslg& domain, const MeshOptions& options, MeshReport& report) {
+MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
   detail::Stopwatch clock;
-  std::vector<PhaseTime> phases;
-  const Decomposition d = decompose_for_mesh(domain, options, phases);
-  report.phases.push_back({"decompose", clock.lap()});
-  return mesh_decomposition(d, domain, options, report);
+  const Decomposition d = decompose_for_mesh(domain, options).decomposition;
+  const double decompose_seconds = clock.lap();
+  MeshRun run = mesh_decomposition(d, domain, options);
+  run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
+  return run;
 }
 
-Mesh mesh(const Pslg& domain, const MeshOptions& options) {
-  MeshReport report;
-  return mesh(domain, options, report);
-}
+Mesh mesh(const Pslg& domain, const MeshOptions& options) { return mesh_with_report(domain, options).mesh; }
 
 } // namespace madd

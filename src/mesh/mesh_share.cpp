@@ -134,9 +134,27 @@ std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& coun
   return out;
 }
 
+// merge()'s mesh of the share's subdomains, which numbers the vertices as
+// the whole mesh would, taken apart: the decomposition to the part, the
+// rest to its local mesh (keep_used_points numbers it locally).
+void take_merged(Mesh&& merged, MeshPart& part) {
+  part.decomposition = std::move(merged.decomposition);
+  LocalMesh& m = part.mesh;
+  m.points = std::move(merged.points);
+  m.point_markers = std::move(merged.point_markers);
+  m.triangles = std::move(merged.triangles);
+  m.neighbours = std::move(merged.neighbours);
+  m.triangle_subdomain = std::move(merged.triangle_subdomain);
+  m.triangle_attribute = std::move(merged.triangle_attribute);
+  m.subdomain_first_triangle = std::move(merged.subdomain_first_triangle);
+  m.segments = std::move(merged.segments);
+  m.shortfall = merged.shortfall;
+  m.min_triangle_angle_deg = merged.min_triangle_angle_deg;
+}
+
 // The part's mesh keeps only the vertices its triangles and segments use.
 void keep_used_points(MeshPart& part, std::vector<std::uint64_t>& ids) {
-  Mesh& m = part.mesh;
+  LocalMesh& m = part.mesh;
   std::vector<std::uint32_t> renumber(m.points.size(), no_index);
   for (const auto& tri : m.triangles)
     for (const std::uint32_t v : tri) renumber[v] = 0;
@@ -182,11 +200,14 @@ std::vector<std::uint32_t> decomposition_point_owner(const Decomposition& d, con
 
 } // namespace
 
-MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
-                    std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange, MeshReport& report) {
+MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                       std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange) {
   (void)domain;  // each subdomain is checked against its own boundary (the union is mesh()'s, checked there)
   check_options(options);
   if (shares == 0 || share >= shares) throw OptionError("share", "must be < shares (and shares >= 1)");
+  MeshPartRun run;
+  MeshReport& report = run.report;
+  MeshPart& part = run.part;
   detail::Stopwatch clock;
   const auto n = static_cast<std::uint32_t>(decomposition.subdomains.size());
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
@@ -195,7 +216,6 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
   const detail::AreaBound field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
 
-  MeshPart part;
   part.share = share;
   part.shares = shares;
   part.owner = assign_shares(report.expected_triangles, shares);
@@ -231,7 +251,7 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
   const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
   part.total_points = d.points.size() + steiner_total;
 
-  part.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine);
+  take_merged(detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine), part);
   const std::size_t p = d.points.size();
   std::vector<std::uint64_t> ids(part.mesh.points.size());
   std::iota(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(p), std::uint64_t{0});
@@ -252,7 +272,7 @@ MeshPart mesh_share(const Decomposition& decomposition, const Pslg& domain, cons
     for (std::uint32_t t = part.mesh.subdomain_first_triangle[k]; t < part.mesh.subdomain_first_triangle[k + 1]; ++t)
       part.triangle_ids.push_back(first_triangle[k] + (t - part.mesh.subdomain_first_triangle[k]));
   report.phases.push_back({"merge", clock.lap()});
-  return part;
+  return run;
 }
 
 } // namespace madd

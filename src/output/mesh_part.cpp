@@ -16,7 +16,7 @@ using detail::line;
 
 std::string format_part_node(const MeshPart& part, unsigned first_index) {
   detail::check_first_index(first_index);
-  const Mesh& m = part.mesh;
+  const LocalMesh& m = part.mesh;
   std::string out;
   out.reserve(64 * m.points.size() + 32);
   line(out, m.points.size(), 2, 2, 1);
@@ -28,11 +28,11 @@ std::string format_part_node(const MeshPart& part, unsigned first_index) {
 
 std::string format_part_ele(const MeshPart& part, unsigned first_index) {
   detail::check_first_index(first_index);
-  const Mesh& m = part.mesh;
+  const LocalMesh& m = part.mesh;
   std::string out;
   out.reserve(56 * m.triangles.size() + 32);
   // With regions, a third attribute: the triangle's region attribute.
-  const bool regions = detail::has_region_attributes(m);
+  const bool regions = detail::has_region_attributes(part);
   line(out, m.triangles.size(), 3, regions ? 3 : 2);
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto& tri = m.triangles[t];
@@ -48,7 +48,7 @@ std::string format_part_ele(const MeshPart& part, unsigned first_index) {
 
 std::string format_part_vtu(const MeshPart& part) {
   const detail::VtuGlobalIds global{&part.point_ids, &part.point_owner, &part.triangle_ids, part.share};
-  return detail::format_vtu(part.mesh, &global);
+  return detail::format_vtu(part.mesh, detail::has_region_attributes(part), global);
 }
 
 std::string format_parts_pvtu(const std::vector<std::string>& pieces, bool region_attributes) {
@@ -110,7 +110,7 @@ void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& 
     if (part.share == 0) {
       std::vector<std::string> pieces;
       for (std::uint32_t r = 0; r < part.shares; ++r) pieces.push_back(name(r, ".vtu"));
-      outputs.add_file(prefix + ".pvtu", format_parts_pvtu(pieces, detail::has_region_attributes(part.mesh)));
+      outputs.add_file(prefix + ".pvtu", format_parts_pvtu(pieces, detail::has_region_attributes(part)));
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "madd/mesh.hpp"
+#include "madd/mesh_share.hpp"
 #include "kernel/number_format.hpp"
 
 namespace madd::detail {
@@ -33,7 +34,9 @@ void line(std::string& out, First first, Rest... rest) {
 // -A): when the input has regions, so that every file of a run, and every
 // part of a distributed one (even a part with no triangles), has the same columns.
 inline bool has_region_attributes(const Mesh& mesh) { return !mesh.decomposition.regions.empty(); }
-inline double region_attribute(const Mesh& mesh, std::size_t t) {
+inline bool has_region_attributes(const MeshPart& part) { return !part.decomposition.regions.empty(); }
+template <typename AnyMesh>  // a Mesh or a part's LocalMesh
+double region_attribute(const AnyMesh& mesh, std::size_t t) {
   return t < mesh.triangle_attribute.size() ? mesh.triangle_attribute[t] : 0.0;
 }
 
@@ -59,7 +62,8 @@ struct VtuGlobalIds {
   std::uint32_t rank = 0;
 };
 
-// format_mesh_vtu, with a part's global ids when `global` is set.
-std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global);
+// format_mesh_vtu of a part's local mesh, with its global ids; `regions`:
+// with the region attribute of every triangle.
+std::string format_vtu(const LocalMesh& mesh, bool regions, const VtuGlobalIds& global);
 
 } // namespace madd::detail

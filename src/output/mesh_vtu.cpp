@@ -32,7 +32,8 @@ void close_array(std::string& out) { out += "        </DataArray>\n"; }
 
 // The points' and cells' data arrays: a part's global ids first (they are
 // the GlobalIds attribute ParaView joins the pieces of a .pvtu by).
-void append_point_data(std::string& out, const Mesh& mesh, const detail::VtuGlobalIds* global) {
+template <typename AnyMesh>
+void append_point_data(std::string& out, const AnyMesh& mesh, const detail::VtuGlobalIds* global) {
   const std::size_t n = mesh.points.size();
   out += global ? "      <PointData Scalars=\"marker\" GlobalIds=\"global_id\">\n" : "      <PointData Scalars=\"marker\">\n";
   if (global) {
@@ -49,7 +50,8 @@ void append_point_data(std::string& out, const Mesh& mesh, const detail::VtuGlob
   out += "      </PointData>\n";
 }
 
-void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGlobalIds* global) {
+template <typename AnyMesh>
+void append_cell_data(std::string& out, const AnyMesh& mesh, bool regions, const detail::VtuGlobalIds* global) {
   out += global ? "      <CellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n" : "      <CellData Scalars=\"subdomain\">\n";
   if (global) {
     open_array(out, "Int64", "global_id", 1, true);
@@ -62,7 +64,7 @@ void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGloba
   open_array(out, "Int32", "subdomain");
   for (const std::uint32_t k : mesh.triangle_subdomain) line(out, k);
   close_array(out);
-  if (detail::has_region_attributes(mesh)) {  // with regions (Triangle's -A)
+  if (regions) {  // with regions (Triangle's -A)
     open_array(out, "Float64", "region_attribute");
     for (std::size_t c = 0; c < mesh.triangles.size(); ++c) line(out, detail::region_attribute(mesh, c));
     close_array(out);
@@ -70,11 +72,9 @@ void append_cell_data(std::string& out, const Mesh& mesh, const detail::VtuGloba
   out += "      </CellData>\n";
 }
 
-} // namespace
-
-namespace detail {
-
-std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global) {
+// A Mesh or a part's LocalMesh: the same fields.
+template <typename AnyMesh>
+std::string vtu_text(const AnyMesh& mesh, bool regions, const detail::VtuGlobalIds* global) {
   const std::size_t n = mesh.points.size(), t = mesh.triangles.size();
   std::string out;
   out.reserve((global ? 72 : 48) * n + (global ? 64 : 40) * t + 1024);
@@ -83,7 +83,7 @@ std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global) {
          "  <UnstructuredGrid>\n";
   out += "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" + std::to_string(t) + "\">\n";
   append_point_data(out, mesh, global);
-  append_cell_data(out, mesh, global);
+  append_cell_data(out, mesh, regions, global);
   out += "      <Points>\n";
   open_array(out, "Float64", nullptr, 3);
   for (const Point& p : mesh.points) line(out, p.x, p.y, 0.0);
@@ -102,8 +102,18 @@ std::string format_vtu(const Mesh& mesh, const VtuGlobalIds* global) {
   return out;
 }
 
+} // namespace
+
+namespace detail {
+
+std::string format_vtu(const LocalMesh& mesh, bool regions, const VtuGlobalIds& global) {
+  return vtu_text(mesh, regions, &global);
+}
+
 } // namespace detail
 
-std::string format_mesh_vtu(const Mesh& mesh) { return detail::format_vtu(mesh, nullptr); }
+std::string format_mesh_vtu(const Mesh& mesh) {
+  return vtu_text(mesh, detail::has_region_attributes(mesh), nullptr);
+}
 
 } // namespace madd

@@ -17,9 +17,15 @@ double MeshMetrics::max_over_mean_triangles() const noexcept {
   return mean > 0 ? static_cast<double>(largest_subdomain_triangles) / mean : 0.0;
 }
 
-MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size) {
+namespace {
+
+// A Mesh and a share's LocalMesh hold the same fields a figure reads.
+template <class AnyMesh>
+MeshMetrics figures_of(const AnyMesh& mesh, const MeshSizeOptions& size) {
   MeshMetrics m;
-  m.subdomains = mesh.subdomain_count();
+  m.subdomains = mesh.subdomain_first_triangle.empty()
+                     ? 0
+                     : static_cast<std::uint32_t>(mesh.subdomain_first_triangle.size() - 1);
   m.triangles = mesh.triangles.size();
   m.vertices = mesh.points.size();
   m.min_angle_bound_deg = mesh.min_triangle_angle_deg;
@@ -44,6 +50,11 @@ MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size) {
         m.largest_subdomain_triangles, mesh.subdomain_first_triangle[k + 1] - mesh.subdomain_first_triangle[k]);
   return m;
 }
+
+} // namespace
+
+MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size) { return figures_of(mesh, size); }
+MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size) { return figures_of(mesh, size); }
 
 std::vector<RunFigure> run_figures(const MeshReport& report) {
   double busiest = 0, busy = 0;

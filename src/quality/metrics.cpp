@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "kernel/rings.hpp"
+#include "quality/decile.hpp"
 #include "quality/metrics_detail.hpp"
 
 namespace madd {
@@ -38,9 +39,9 @@ void fill_angles(const Decomposition& d, Metrics& m) {
   std::sort(at_boundary.begin(), at_boundary.end());
   m.new_angles = static_cast<std::uint32_t>(all.size());
   m.angle_min = all.empty() ? nan_value : all.front();
-  m.angle_p10 = decile(all, 1);
+  m.angle_p10 = detail::decile(all, 1);
   m.angle_median = median_of(all);
-  m.angle_p90 = decile(all, 9);
+  m.angle_p90 = detail::decile(all, 9);
   m.boundary_angles = static_cast<std::uint32_t>(at_boundary.size());
   m.boundary_angle_min = at_boundary.empty() ? nan_value : at_boundary.front();
   m.boundary_angle_median = median_of(at_boundary);
@@ -86,6 +87,8 @@ void fill_separators(const Decomposition& d, const std::vector<double>& areas, M
 
 } // namespace
 
+namespace detail {
+
 double decile(const std::vector<double>& sorted, int q) {
   // Python's statistics.quantiles(data, n=10, method="exclusive").
   const long n = static_cast<long>(sorted.size());
@@ -96,6 +99,8 @@ double decile(const std::vector<double>& sorted, int q) {
   const long delta = q * m - j * 10;
   return (sorted[j - 1] * static_cast<double>(10 - delta) + sorted[j] * static_cast<double>(delta)) / 10.0;
 }
+
+} // namespace detail
 
 namespace {
 // Sec. 5.2's stopping rule, checked from the result: area / required area per

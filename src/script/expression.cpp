@@ -5,15 +5,26 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include "madd/expression.hpp"
+#include "script/expression_program.hpp"
 
 namespace madd {
 
 using detail::ExprInstruction;
 using detail::ExprOp;
 
-Expression::Expression() : program_{{ExprOp::constant, 0.0}}, text_("0") {}
+Expression::Expression()
+    : program_(std::make_shared<const detail::ExprProgram>(detail::ExprProgram{{{ExprOp::constant, 0.0}}, 1})),
+      text_("0") {}
+
+std::size_t Expression::stack_size() const noexcept { return program_->stack_size; }
+
+bool operator==(const Expression& a, const Expression& b) noexcept {
+  return a.text_ == b.text_ && (a.program_ == b.program_ || *a.program_ == *b.program_);
+}
 
 namespace {
 
@@ -62,9 +73,9 @@ bool is_binary(ExprOp op) noexcept {
 
 double Expression::operator()(double x, double y) const noexcept {
   std::array<double, 4 * max_expression_depth + 8> stack;
-  assert(stack_size_ <= stack.size());
+  assert(program_->stack_size <= stack.size());
   std::size_t top = 0;  // number of values on the stack
-  for (const ExprInstruction& in : program_) {
+  for (const ExprInstruction& in : program_->code) {
     switch (in.op) {
     case ExprOp::constant: stack[top++] = in.value; break;
     case ExprOp::x: stack[top++] = x; break;

@@ -8,9 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <utility>
 
 #include "madd/error.hpp"
 #include "madd/expression.hpp"
+#include "script/expression_program.hpp"
 
 namespace madd {
 namespace {
@@ -295,11 +298,12 @@ std::size_t stack_needed(const std::vector<ExprInstruction>& program) {
 
 Expression parse_expression(std::string_view text, const std::string& name) {
   Expression e;
-  e.program_ = Parser(text, name).run();
-  e.stack_size_ = stack_needed(e.program_);
-  if (e.stack_size_ > max_stack)
+  detail::ExprProgram program{Parser(text, name).run(), 1};
+  program.stack_size = stack_needed(program.code);
+  if (program.stack_size > max_stack)
     throw ParseError(name, 1, 1, "expression too complex (needs more than " + std::to_string(max_stack) +
                                      " intermediate values)");
+  e.program_ = std::make_shared<const detail::ExprProgram>(std::move(program));
   e.text_ = std::string(text);
   return e;
 }

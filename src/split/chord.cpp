@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "kernel/containment.hpp"
-#include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 #include "madd/predicates.hpp"
 #include "split/split.hpp"
 #include "pslg/validate_detail.hpp"

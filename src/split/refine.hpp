@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 #include "madd/pslg.hpp"
 #include "subdivision/subdivision.hpp"
 

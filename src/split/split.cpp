@@ -12,7 +12,7 @@
 
 #include "madd/bisect.hpp"
 #include "madd/error.hpp"
-#include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 #include "madd/triangulation.hpp"
 #include "split/refine.hpp"
 #include "split/chord.hpp"

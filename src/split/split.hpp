@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "madd/geometry.hpp"
-#include "madd/medial.hpp"
+#include "medial/medial_detail.hpp"
 #include "madd/triangulation.hpp"
 #include "kernel/resource_limits.hpp"
 #include "subdivision/subdivision.hpp"

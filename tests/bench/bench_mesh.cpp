@@ -210,9 +210,10 @@ int run_mesh(int argc, char** argv) {
       std::vector<std::string> phase_order;
       try {
         for (int r = 0; r < runs; ++r) {
-          madd::MeshReport report;
           const double t0 = madd::bench::now_seconds();
-          const madd::Mesh m = madd::mesh(domain, options, report);
+          const madd::MeshRun run = madd::mesh_with_report(domain, options);
+          const madd::Mesh& m = run.mesh;
+          const madd::MeshReport& report = run.report;
           times.push_back(madd::bench::now_seconds() - t0);
           row.triangles = m.triangle_count();
           for (const madd::PhaseTime& p : report.phases) {

@@ -37,6 +37,7 @@
 #include "madd/error.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "quality/decile.hpp"
 
 namespace {
 
@@ -427,7 +428,7 @@ int run(int argc, char** argv) {
 
   if (all.shortest.size() >= 2) {
     std::printf("\nshortest new segment, deciles over the %zu runs that succeeded:", all.shortest.size());
-    for (int q = 1; q <= 9; ++q) std::printf(" %.2e", madd::decile(all.shortest, q));
+    for (int q = 1; q <= 9; ++q) std::printf(" %.2e", madd::detail::decile(all.shortest, q));
     std::printf("\n");
   }
   std::printf("\nfailures (%d):\n", all.failed);

@@ -42,22 +42,6 @@ madd::Pslg refine_uniformly(const madd::Pslg& in, double spacing) {
   return out;
 }
 
-// Ring neighbours with the domain on the left, read off the triangles that
-// own each constrained edge (a triangle's counter-clockwise edge a->b has the
-// domain on its left).
-std::vector<madd::BoundaryLinks> boundary_links(const madd::Triangulation& tri) {
-  std::vector<madd::BoundaryLinks> links(tri.points.size());
-  for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
-    for (int i = 0; i < 3; ++i) {
-      if (!tri.is_constrained(t, i)) continue;
-      const std::uint32_t a = tri.triangles[t][(i + 1) % 3], b = tri.triangles[t][(i + 2) % 3];
-      links[a].next = b;
-      links[b].prev = a;
-    }
-  }
-  return links;
-}
-
 struct SvgCanvas {
   double xmin, ymax, scale;
   std::string body;
@@ -89,8 +73,7 @@ int run_illustrate(int argc, char** argv) {
   const madd::Pslg domain = madd::read_domain(argv[1]);
   const double spacing = std::sqrt(madd::domain_area(domain)) / per_side;
   const madd::Triangulation tri = madd::triangulate(refine_uniformly(domain, spacing));
-  const auto links = boundary_links(tri);
-  const madd::MedialGraph g = madd::build_medial_graph(tri, links, {phi, false});
+  const madd::MedialGraph g = madd::build_medial_graph(tri, {phi, false});
   const madd::Bisection cut = madd::bisect(g.contracted, {});
 
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;

@@ -113,16 +113,15 @@ int main(int argc, char** argv) {
   std::size_t bytes = 0;
   bool same = true;
   for (int i = 0; i < repeat; ++i) {
-    std::vector<madd::PhaseTime> phases;
     MPI_Barrier(MPI_COMM_WORLD);
     double start = now();
-    const madd::Decomposition mine = madd::decompose_for_mesh(domain, o, phases);
+    const madd::Decomposition mine = madd::decompose_for_mesh(domain, o).decomposition;
     every.push_back(until_everyone(start));
 
     MPI_Barrier(MPI_COMM_WORLD);
     start = now();
     Bytes b;
-    if (rank == 0) put_all(b, madd::decompose_for_mesh(domain, o, phases));
+    if (rank == 0) put_all(b, madd::decompose_for_mesh(domain, o).decomposition);
     std::size_t n = b.data.size();
     MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
     b.data.resize(n);
