@@ -1,0 +1,81 @@
+// Slots, edge search and compaction of the half-edge core.
+#include "triangulation/half_edge_mesh.hpp"
+
+namespace madd::detail {
+
+void HalfEdgeMesh::reserve(std::size_t triangles) {
+  tv.reserve(3 * triangles);
+  tn.reserve(3 * triangles);
+  if (constrained()) seg.reserve(3 * triangles);
+}
+
+std::uint32_t HalfEdgeMesh::new_slot() {
+  if (!free_slots.empty()) {
+    const std::uint32_t t = free_slots.back();
+    free_slots.pop_back();
+    return t;
+  }
+  const std::uint32_t t = slot_count();
+  tv.resize(tv.size() + 3);
+  tn.resize(tn.size() + 3);
+  if (constrained()) seg.resize(seg.size() + 3, no_index);
+  return t;
+}
+
+void HalfEdgeMesh::free_slot(std::uint32_t t) {
+  tv[3 * t] = no_index;
+  free_slots.push_back(t);
+}
+
+std::uint32_t HalfEdgeMesh::find_half_edge(std::uint32_t corner, std::uint32_t b) const noexcept {
+  const std::uint32_t start = prev_half_edge(corner);  // leaves a = tv[corner]
+  // Counter-clockwise around a: the edge entering a in the same triangle,
+  // whose twin leaves a in the next one. A consistent mesh comes back to
+  // start within the slot count; a broken one must not hang.
+  std::uint32_t h = start;
+  std::uint32_t turns = 0;
+  do {
+    if (dest(h) == b) return h;
+    const std::uint32_t back = tn[prev_half_edge(h)];
+    if (back == no_index) break;
+    h = back;
+  } while (h != start && ++turns <= slot_count());
+  if (h == start) return no_index;
+  // Clockwise from the start, for a vertex on an open boundary.
+  h = start;
+  for (turns = 0; turns <= slot_count(); ++turns) {
+    const std::uint32_t in = tn[h];
+    if (in == no_index) return no_index;
+    h = next_half_edge(in);
+    if (h == start) return no_index;
+    if (dest(h) == b) return h;
+  }
+  return no_index;
+}
+
+std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
+  std::uint32_t live = 0;
+  for (std::uint32_t& d : dead) d = d ? no_index : live++;
+  // Each kept triangle moves to index[t] <= t, so one forward pass never
+  // overwrites a triangle it has yet to read.
+  const bool constrained_mesh = constrained();
+  for (std::uint32_t t = 0; t < dead.size(); ++t) {
+    const std::uint32_t to = dead[t];
+    if (to == no_index) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      tv[3 * to + i] = tv[3 * t + i];
+      if (constrained_mesh) seg[3 * to + i] = seg[3 * t + i];
+      const std::uint32_t twin = tn[3 * t + i];
+      const std::uint32_t u = twin == no_index ? no_index : dead[twin / 3];
+      tn[3 * to + i] = u == no_index ? no_index : 3 * u + twin % 3;
+    }
+  }
+  tv.resize(3 * std::size_t{live});
+  tn.resize(3 * std::size_t{live});
+  if (constrained_mesh) seg.resize(3 * std::size_t{live});
+  free_slots.clear();
+  ghost = no_index;
+  return live;
+}
+
+} // namespace madd::detail
