@@ -102,7 +102,10 @@ std::vector<std::uint32_t> region_labels(const HalfEdgeMesh& mesh, const Pslg& p
 
 bool constrained_delaunay(HalfEdgeMesh& mesh, const Pslg& pslg, const TriangulateOptions& options,
                           std::vector<std::uint32_t>* regions) {
-  if (!build_delaunay(mesh, pslg.points)) return false;
+  if (!build_delaunay(mesh, pslg.points)) {
+    mesh = HalfEdgeMesh{};
+    return false;
+  }
   insert_segments(mesh, pslg);
   std::vector<std::uint32_t> dead = classify(mesh, pslg, options);
   if (regions) *regions = region_labels(mesh, pslg, dead);

@@ -33,17 +33,15 @@ std::uint32_t HalfEdgeMesh::find_half_edge(std::uint32_t corner, std::uint32_t b
   // whose twin leaves a in the next one. A consistent mesh comes back to
   // start within the slot count; a broken one must not hang.
   std::uint32_t h = start;
-  std::uint32_t turns = 0;
-  do {
+  for (std::uint32_t turns = 0; turns <= slot_count(); ++turns) {
     if (dest(h) == b) return h;
     const std::uint32_t back = tn[prev_half_edge(h)];
-    if (back == no_index) break;
+    if (back == no_index) break;  // an open boundary: the rest lies clockwise
     h = back;
-  } while (h != start && ++turns <= slot_count());
-  if (h == start) return no_index;
-  // Clockwise from the start, for a vertex on an open boundary.
+    if (h == start) return no_index;
+  }
   h = start;
-  for (turns = 0; turns <= slot_count(); ++turns) {
+  for (std::uint32_t turns = 0; turns <= slot_count(); ++turns) {
     const std::uint32_t in = tn[h];
     if (in == no_index) return no_index;
     h = next_half_edge(in);
