@@ -47,14 +47,14 @@ WalkResult RefinementMesh::walk(std::uint32_t from, Point p) const {
 
 bool RefinementMesh::prepare(std::uint32_t t, Point p) {
   pending_ = p;
-  cavity_.dig(mesh_, points_, t, p, true);
+  cavity_.dig(mesh_, points_, t, p);
   rim_segments_.clear();
   if (!cavity_.star_shaped(points_, p)) {
     cavity_.clear();
     return false;
   }
-  for (const Cavity::RimEdge& r : cavity_.rim())
-    if (r.segment != no_index) rim_segments_.push_back(r.inner);
+  for (const std::uint32_t h : cavity_.rim_inner())
+    if (mesh_.seg[h] != no_index) rim_segments_.push_back(h);
   return true;
 }
 
@@ -74,8 +74,8 @@ std::uint32_t RefinementMesh::add_vertex(Point p, std::uint32_t vertex_segment, 
   vertex_parameter_.push_back(parameter);
   vertex_triangle_.push_back(no_index);
   rim_labels_.clear();
-  for (const Cavity::RimEdge& r : cavity_.rim()) rim_labels_.push_back(label_[r.inner / 3]);
-  const std::vector<std::uint32_t>& fan = cavity_.fill(mesh_, v);
+  for (const std::uint32_t h : cavity_.rim_inner()) rim_labels_.push_back(label_[h / 3]);
+  const std::span<const std::uint32_t> fan = cavity_.fill(mesh_, v);
   if (label_.size() < mesh_.slot_count()) label_.resize(mesh_.slot_count(), 0);
   fresh_.clear();
   for (std::size_t i = 0; i < fan.size(); ++i) {

@@ -1,4 +1,7 @@
-// Bowyer-Watson cavity and fan on the half-edge core.
+// Bowyer-Watson cavity and fan on the half-edge core. This is the inner loop
+// of both the triangulator and refinement: the arrays are read through local
+// pointers and the small steps are local functions, so that it compiles to
+// one tight loop per kind of mesh.
 #include "triangulation/cavity.hpp"
 
 #include <algorithm>
@@ -16,6 +19,16 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
   return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
 }
 
+// The triangle with corners t[0..2] in conflict with p, one of them perhaps
+// the ghost.
+inline bool in_conflict(const Point* P, const std::uint32_t* t, std::uint32_t ghost, Point p) noexcept {
+  const std::uint32_t a = t[0], b = t[1], c = t[2];
+  if (c == ghost) return ghost_conflict(P[a], P[b], p);
+  if (a == ghost) return ghost_conflict(P[b], P[c], p);
+  if (b == ghost) return ghost_conflict(P[c], P[a], p);
+  return incircle(P[a], P[b], P[c], p) > 0;
+}
+
 } // namespace
 
 bool ghost_conflict(Point a, Point b, Point p) noexcept {
@@ -24,61 +37,73 @@ bool ghost_conflict(Point a, Point b, Point p) noexcept {
 }
 
 void Cavity::reserve(std::size_t slots, std::size_t vertices) {
-  if (in_cavity_.size() < slots) in_cavity_.resize(slots, 0);
+  if (in_cavity_.size() < slots) in_cavity_.resize(slots, Mark::out);
   if (link_.size() < vertices) link_.resize(vertices, no_index);
 }
 
-bool Cavity::in_conflict(const HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p) const noexcept {
-  const std::uint32_t a = m.tv[3 * t], b = m.tv[3 * t + 1], c = m.tv[3 * t + 2];
-  const std::uint32_t g = m.ghost;
-  if (c == g) return ghost_conflict(P[a], P[b], p);
-  if (a == g) return ghost_conflict(P[b], P[c], p);
-  if (b == g) return ghost_conflict(P[c], P[a], p);
-  return incircle(P[a], P[b], P[c], p) > 0;
-}
-
 void Cavity::start(const HalfEdgeMesh& m) {
-  if (in_cavity_.size() < m.slot_count()) in_cavity_.resize(m.slot_count(), 0);
+  if (in_cavity_.size() < m.slot_count()) in_cavity_.resize(m.slot_count(), Mark::out);
   triangles_.clear();
   rim_.clear();
+  rim_inner_.clear();
+  rim_segment_.clear();
   stack_.clear();
 }
 
-void Cavity::mark(std::uint32_t t) {
-  in_cavity_[t] = 1;
-  stack_.push_back(t);
-  if (order_ == SlotOrder::last_found_first) triangles_.push_back(t);
-}
-
 // Grows the cavity from the marked triangles on the stack (an explicit
-// stack: no recursion grows with the input), recording the rim as it meets it.
-void Cavity::grow(const HalfEdgeMesh& m, std::span<const Point> P, Point p, bool stop_at_segments) {
+// stack: no recursion grows with the input), recording the rim as it meets
+// it. `Constrained`: stop at segments, record the rim's half-edges and
+// segments, and leave the split edge (dig_on_edge) off the rim.
+// `FoundOrder`: record the triangles as they are found, not as examined.
+template <bool Constrained, bool FoundOrder>
+void Cavity::grow_from_stack(const HalfEdgeMesh& m, const Point* P, Point p) {
+  const std::uint32_t* tv = m.tv.data();
+  const std::uint32_t* tn = m.tn.data();
+  const std::uint32_t* seg = Constrained ? m.seg.data() : nullptr;
+  const std::uint32_t ghost = m.ghost, skip = skip_, skip_twin = skip_twin_;
+  Mark* in_cavity = in_cavity_.data();
   while (!stack_.empty()) {
     const std::uint32_t c = stack_.back();
     stack_.pop_back();
-    if (order_ == SlotOrder::examined) triangles_.push_back(c);
+    if (!FoundOrder) triangles_.push_back(c);
     for (std::uint32_t h = 3 * c; h < 3 * c + 3; ++h) {
-      const std::uint32_t out = m.tn[h];
-      const bool blocked = stop_at_segments && m.seg[h] != no_index;
-      if (!blocked && out != no_index) {
+      const std::uint32_t out = tn[h];
+      if (!Constrained || (seg[h] == no_index && out != no_index)) {
         const std::uint32_t u = out / 3;
-        if (in_cavity_[u]) continue;
-        if (in_conflict(m, P, u, p)) {
-          mark(u);
+        if (in_cavity[u] == Mark::in) continue;
+        if (in_conflict(P, tv + 3 * u, ghost, p)) {
+          in_cavity[u] = Mark::in;
+          stack_.push_back(u);
+          if (FoundOrder) triangles_.push_back(u);
           continue;
         }
       }
-      if (h == skip_ || h == skip_twin_) continue;
-      rim_.push_back({m.origin(h), m.dest(h), h, out, m.constrained() ? m.seg[h] : no_index});
+      if (Constrained && (h == skip || h == skip_twin)) continue;
+      rim_.push_back({tv[next_half_edge(h)], tv[prev_half_edge(h)], out});
+      if (Constrained) {
+        rim_inner_.push_back(h);
+        rim_segment_.push_back(seg[h]);
+      }
     }
   }
 }
 
-void Cavity::dig(const HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p, bool stop_at_segments) {
+void Cavity::grow(const HalfEdgeMesh& m, std::span<const Point> P, Point p) {
+  const bool found = order_ == SlotOrder::last_found_first;
+  if (m.constrained()) {
+    found ? grow_from_stack<true, true>(m, P.data(), p) : grow_from_stack<true, false>(m, P.data(), p);
+  } else {
+    found ? grow_from_stack<false, true>(m, P.data(), p) : grow_from_stack<false, false>(m, P.data(), p);
+  }
+}
+
+void Cavity::dig(const HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p) {
   start(m);
   skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
-  mark(t);
-  grow(m, P, p, stop_at_segments);
+  in_cavity_[t] = Mark::in;
+  stack_.push_back(t);
+  if (order_ == SlotOrder::last_found_first) triangles_.push_back(t);
+  grow(m, P, p);
 }
 
 // p, strictly inside the edge, is strictly inside the circumcircles of the
@@ -89,68 +114,105 @@ void Cavity::dig_on_edge(const HalfEdgeMesh& m, std::span<const Point> P, std::u
   skip_twin_ = m.tn[h];
   open_a_ = skip_twin_ == no_index ? m.origin(h) : no_index;
   open_b_ = skip_twin_ == no_index ? m.dest(h) : no_index;
-  mark(h / 3);
-  if (skip_twin_ != no_index) mark(skip_twin_ / 3);
-  grow(m, P, p, true);
+  for (const std::uint32_t e : {h, skip_twin_}) {
+    if (e == no_index) continue;
+    in_cavity_[e / 3] = Mark::in;
+    stack_.push_back(e / 3);
+    if (order_ == SlotOrder::last_found_first) triangles_.push_back(e / 3);
+  }
+  grow(m, P, p);
 }
 
 bool Cavity::star_shaped(std::span<const Point> P, Point p) const noexcept {
   return std::all_of(rim_.begin(), rim_.end(), [&](const RimEdge& r) { return orient2d(P[r.a], P[r.b], p) > 0; });
 }
 
-std::uint32_t Cavity::slot_for(HalfEdgeMesh& m, std::size_t i) {
-  const std::size_t k = triangles_.size();
-  if (i >= k) return m.new_slot();
-  return triangles_[order_ == SlotOrder::examined ? i : k - 1 - i];
+// Puts the fan's slots first in triangles_: the cavity's own (as SlotOrder
+// says), then freed ones (last freed first); new ones at the end follow. A
+// cavity never has more triangles than its fan (k triangles, k + 2 rim
+// edges, one fewer when open); should one have, its spare slots are freed,
+// the first found last.
+void Cavity::order_slots(HalfEdgeMesh& m) {
+  if (order_ == SlotOrder::last_found_first) std::reverse(triangles_.begin(), triangles_.end());
+  const std::size_t n = rim_.size();
+  while (triangles_.size() > n) {
+    in_cavity_[triangles_.back()] = Mark::out;
+    m.free_slot(triangles_.back());
+    triangles_.pop_back();
+  }
+  while (triangles_.size() < n && !m.free_slots.empty()) {
+    triangles_.push_back(m.free_slots.back());
+    m.free_slots.pop_back();
+  }
 }
 
-const std::vector<std::uint32_t>& Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
-  const std::uint32_t top = m.ghost == no_index ? v : std::max(v, m.ghost);
-  if (link_.size() <= top) link_.resize(top + top / 2 + 16, no_index);
-  for (const std::uint32_t t : triangles_) in_cavity_[t] = 0;
-  // A cavity never has more triangles than its fan (k triangles, k + 2 rim
-  // edges, one fewer when open); should one have, its spare slots are freed.
-  for (std::size_t i = rim_.size(); i < triangles_.size(); ++i) m.free_slot(slot_for(m, i));
-  fan_.clear();
-  const bool constrained = m.constrained();
-  for (std::size_t i = 0; i < rim_.size(); ++i) {
+// The fan, specialised: in a mesh closed by ghosts every edge has a twin and
+// no fan is open; an unconstrained one has no segments to copy. (The
+// triangulator's mesh is both, and this is its inner loop.)
+template <bool Closed, bool Constrained>
+void Cavity::fill_fan(HalfEdgeMesh& m, std::uint32_t v) {
+  const std::size_t n = rim_.size(), k = triangles_.size();
+  std::uint32_t next_new = m.append_slots(static_cast<std::uint32_t>(n > k ? n - k : 0));
+  std::uint32_t* slot = fan_.data();
+  std::uint32_t* tv = m.tv.data();
+  std::uint32_t* tn = m.tn.data();
+  std::uint32_t* seg = m.seg.data();
+  std::uint32_t* link = link_.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t s = i < k ? triangles_[i] : next_new++;
+    slot[i] = s;
     const RimEdge& r = rim_[i];
-    const std::uint32_t s = slot_for(m, i);
-    m.tv[3 * s] = v;
-    m.tv[3 * s + 1] = r.a;
-    m.tv[3 * s + 2] = r.b;
-    m.tn[3 * s] = r.outer;
-    if (r.outer != no_index) m.tn[r.outer] = 3 * s;
-    if (constrained) {
-      m.seg[3 * s] = r.segment;
-      m.seg[3 * s + 1] = m.seg[3 * s + 2] = no_index;
+    tv[3 * s] = v;
+    tv[3 * s + 1] = r.a;
+    tv[3 * s + 2] = r.b;
+    tn[3 * s] = r.outer;
+    if (Closed || r.outer != no_index) tn[r.outer] = 3 * s;
+    if (Constrained) {
+      seg[3 * s] = rim_segment_[i];
+      seg[3 * s + 1] = seg[3 * s + 2] = no_index;
     }
-    link_[r.a] = s;
-    fan_.push_back(s);
+    link[r.a] = s;
   }
   // Edge 1 (b->v) of the triangle over a->b meets edge 2 (v->b) of the one
   // over b->c. An open fan has no triangle over an edge from a0: its
   // neighbours there are the outside.
-  if (open_a_ != no_index) link_[open_a_] = no_index;
-  for (const std::uint32_t s : fan_) {
-    const std::uint32_t next = link_[m.tv[3 * s + 2]];
-    if (next == no_index) {
-      m.tn[3 * s + 1] = no_index;
+  if (!Closed && open_a_ != no_index) link[open_a_] = no_index;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t s = slot[i];
+    const std::uint32_t next = link[tv[3 * s + 2]];
+    if (!Closed && next == no_index) {
+      tn[3 * s + 1] = no_index;
     } else {
-      m.link(3 * s + 1, 3 * next + 2);
+      tn[3 * s + 1] = 3 * next + 2;
+      tn[3 * next + 2] = 3 * s + 1;
     }
   }
-  if (open_b_ != no_index) m.tn[3 * link_[open_b_] + 2] = no_index;
-  triangles_.clear();
-  rim_.clear();
-  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
-  return fan_;
+  if (!Closed && open_b_ != no_index) tn[3 * link[open_b_] + 2] = no_index;
+}
+
+std::span<const std::uint32_t> Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
+  const std::uint32_t top = m.ghost == no_index ? v : std::max(v, m.ghost);
+  if (link_.size() <= top) link_.resize(top + top / 2 + 16, no_index);
+  const std::size_t n = rim_.size();
+  if (fan_.size() < n) fan_.resize(n + 16);
+  const std::size_t k = triangles_.size();
+  if (order_ == SlotOrder::last_found_first || k > n || (k < n && !m.free_slots.empty())) order_slots(m);
+  const bool closed = m.ghost != no_index;
+  if (m.constrained()) {
+    closed ? fill_fan<true, true>(m, v) : fill_fan<false, true>(m, v);
+  } else {
+    closed ? fill_fan<true, false>(m, v) : fill_fan<false, false>(m, v);
+  }
+  clear();
+  return {fan_.data(), n};
 }
 
 void Cavity::clear() noexcept {
-  for (const std::uint32_t t : triangles_) in_cavity_[t] = 0;
+  for (const std::uint32_t t : triangles_) in_cavity_[t] = Mark::out;
   triangles_.clear();
   rim_.clear();
+  rim_inner_.clear();
+  rim_segment_.clear();
   skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
 }
 

@@ -2,9 +2,9 @@
 // Bowyer-Watson insertion on the half-edge core: the cavity of a new point
 // (the triangles whose circumcircle strictly holds it, a connected region
 // grown from a triangle holding the point) and the fan of triangles that
-// replaces it. The triangulator digs through every edge; refinement stops at
-// the segments (the cavity of a constrained Delaunay triangulation) and
-// splits a subsegment by digging from both of its sides.
+// replaces it. In a constrained mesh the cavity never crosses a segment (the
+// cavity of a constrained Delaunay triangulation), so the segments stay
+// edges; a subsegment is split by digging from both of its sides.
 //
 // A ghost triangle (over hull edge ab) is in conflict with p when p lies
 // strictly outside ab or inside the open segment ab (Shewchuk's rule), so
@@ -32,10 +32,8 @@ public:
   enum class SlotOrder : std::uint8_t { examined, last_found_first };
 
   struct RimEdge {
-    std::uint32_t a, b;     // the rim edge a->b, seen from inside the cavity
-    std::uint32_t inner;    // that half-edge (valid until fill())
-    std::uint32_t outer;    // its twin outside (no_index: none)
-    std::uint32_t segment;  // its segment (no_index: none, or unconstrained mesh)
+    std::uint32_t a, b;   // the rim edge a->b, seen from inside the cavity
+    std::uint32_t outer;  // its twin outside (no_index: none)
   };
 
   explicit Cavity(SlotOrder order) noexcept : order_(order) {}
@@ -44,11 +42,10 @@ public:
   void reserve(std::size_t slots, std::size_t vertices);
 
   // Digs the cavity of p from triangle t, which holds p in its closure.
-  // With `stop_at_segments` the cavity never crosses a segment.
-  void dig(const HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t t, Point p, bool stop_at_segments);
-  // Digs the cavity of p lying strictly inside the segment half-edge h, from
-  // both sides of h when it has a twin, never across another segment; h and
-  // its twin are then not on the rim, and the fan closes over them (or stays
+  void dig(const HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t t, Point p);
+  // Digs the cavity of p lying strictly inside the segment half-edge h of a
+  // constrained mesh, from both sides of h when it has a twin; h and its
+  // twin are then not on the rim, and the fan closes over them (or stays
   // open at h on the outside of the mesh).
   void dig_on_edge(const HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t h, Point p);
 
@@ -56,27 +53,38 @@ public:
   // star-shaped from p, exactly.
   bool star_shaped(std::span<const Point> points, Point p) const noexcept;
   const std::vector<RimEdge>& rim() const noexcept { return rim_; }
+  // In a constrained mesh, per rim edge, that half-edge itself (its segment
+  // is the mesh's, until fill()); empty otherwise.
+  const std::vector<std::uint32_t>& rim_inner() const noexcept { return rim_inner_; }
   const std::vector<std::uint32_t>& triangles() const noexcept { return triangles_; }
 
   // Replaces the cavity by the fan of triangles (v, a, b), one per rim edge,
   // in rim order: edge 0 is the rim edge (keeping its segment), edge 1 is
   // b->v and edge 2 is v->a. The cavity's slots are reused first (as
-  // SlotOrder says), then freed ones, then new ones. Returns the fan.
-  const std::vector<std::uint32_t>& fill(HalfEdgeMesh& m, std::uint32_t v);
+  // SlotOrder says), then freed ones, then new ones. Returns the fan's
+  // slots (valid until the next fill).
+  std::span<const std::uint32_t> fill(HalfEdgeMesh& m, std::uint32_t v);
   // Forgets the cavity, leaving the mesh as it was.
   void clear() noexcept;
 
 private:
   void start(const HalfEdgeMesh& m);
-  void mark(std::uint32_t t);
-  void grow(const HalfEdgeMesh& m, std::span<const Point> points, Point p, bool stop_at_segments);
-  bool in_conflict(const HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t t, Point p) const noexcept;
-  std::uint32_t slot_for(HalfEdgeMesh& m, std::size_t i);
+  void grow(const HalfEdgeMesh& m, std::span<const Point> points, Point p);
+  template <bool Constrained, bool FoundOrder>
+  void grow_from_stack(const HalfEdgeMesh& m, const Point* points, Point p);
+  void order_slots(HalfEdgeMesh& m);
+  template <bool Closed, bool Constrained>
+  void fill_fan(HalfEdgeMesh& m, std::uint32_t v);
 
   SlotOrder order_;
-  std::vector<std::uint32_t> triangles_, stack_, fan_;
-  std::vector<std::uint8_t> in_cavity_;  // per slot
+  std::vector<std::uint32_t> triangles_, stack_;
+  std::vector<std::uint32_t> fan_;  // the slots of the last fan, in rim order (its first entries)
+  // Per slot: in the cavity being dug. An enum rather than a byte, whose
+  // stores the compiler must assume alias everything (the arrays included).
+  enum class Mark : std::uint8_t { out, in };
+  std::vector<Mark> in_cavity_;
   std::vector<RimEdge> rim_;
+  std::vector<std::uint32_t> rim_inner_, rim_segment_;  // per rim edge, in a constrained mesh
   std::vector<std::uint32_t> link_;  // per vertex: the fan triangle whose rim edge starts there
   std::uint32_t skip_ = no_index, skip_twin_ = no_index;  // the split edge and its twin (dig_on_edge)
   std::uint32_t open_a_ = no_index, open_b_ = no_index;    // its ends, when the fan stays open there

@@ -70,11 +70,11 @@ private:
 
 SegmentInserter::SegmentInserter(HalfEdgeMesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg), P_(pslg.points) {
   v2c_.assign(P_.size(), no_index);
-  for (std::uint32_t c = 0; c < mesh.tv.size(); ++c) {
+  for (std::uint32_t c = 0; c < 3 * mesh.slot_count(); ++c) {
     if (mesh.tv[c] != mesh.ghost) v2c_[mesh.tv[c]] = c;
   }
   m_.seg.assign(m_.tv.size(), no_index);
-  in_cavity_.assign(m_.tv.size() / 3, 0);
+  in_cavity_.assign(m_.slot_count(), 0);
 }
 
 void SegmentInserter::find_slits(const Path& path) {
@@ -116,7 +116,7 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
   std::uint32_t c = v2c_[a];
   const auto& P = P_;
   const Point pa = P[a], pb = P[b];
-  for (std::size_t guard = 0; guard <= m_.tv.size(); ++guard) {
+  for (std::size_t guard = 0; guard <= 3 * std::size_t{m_.slot_count()}; ++guard) {
     const std::uint32_t x = m_.tv[next_half_edge(c)], y = m_.tv[prev_half_edge(c)];
     if (x != m_.ghost && y != m_.ghost) {
       const double ox = orient2d(pa, pb, P[x]);

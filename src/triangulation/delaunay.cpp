@@ -54,7 +54,7 @@ private:
 void Inserter::start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   const std::uint32_t g = m_.ghost;
   const std::uint32_t init[12] = {a, b, c, b, a, g, c, b, g, a, c, g};
-  for (int t = 0; t < 4; ++t) m_.new_slot();
+  m_.append_slots(4);
   std::copy(init, init + 12, m_.tv.begin());
   m_.link(2, 3 + 2);   // a->b : ghost (b,a,g)
   m_.link(0, 6 + 2);   // b->c : ghost (c,b,g)
@@ -75,7 +75,7 @@ void Inserter::insert(std::uint32_t v) {
       if (P_[u] == p) throw_duplicate(P_, order_[u], order_[v]);
     }
   }
-  cavity_.dig(m_, P_, t, p, false);
+  cavity_.dig(m_, P_, t, p);
   last_ = cavity_.fill(m_, v).front();
 }
 
@@ -135,8 +135,8 @@ bool build_delaunay(HalfEdgeMesh& mesh, std::span<const Point> input) {
     for (std::uint32_t i = 3; i < n; ++i) ins.insert(i);
   }
   // Back to input indices; the ghost (n) is the same in both numberings.
-  for (std::uint32_t& v : mesh.tv) {
-    if (v != mesh.ghost) v = order[v];
+  for (std::size_t c = 0; c < 3 * std::size_t{mesh.slot_count()}; ++c) {
+    if (mesh.tv[c] != mesh.ghost) mesh.tv[c] = order[mesh.tv[c]];
   }
   return true;
 }

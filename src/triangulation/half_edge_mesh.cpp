@@ -1,6 +1,8 @@
 // Slots, edge search and compaction of the half-edge core.
 #include "triangulation/half_edge_mesh.hpp"
 
+#include <algorithm>
+
 namespace madd::detail {
 
 void HalfEdgeMesh::reserve(std::size_t triangles) {
@@ -9,17 +11,16 @@ void HalfEdgeMesh::reserve(std::size_t triangles) {
   if (constrained()) seg.reserve(3 * triangles);
 }
 
-std::uint32_t HalfEdgeMesh::new_slot() {
-  if (!free_slots.empty()) {
-    const std::uint32_t t = free_slots.back();
-    free_slots.pop_back();
-    return t;
-  }
-  const std::uint32_t t = slot_count();
-  tv.resize(tv.size() + 3);
-  tn.resize(tn.size() + 3);
-  if (constrained()) seg.resize(seg.size() + 3, no_index);
-  return t;
+// Room for the slots in use and up to 64 more, within the capacity when it
+// holds them (a caller that reserved its final size gets arrays of exactly
+// that size); past it the vectors double as usual.
+void HalfEdgeMesh::grow_arrays() {
+  const std::size_t need = 3 * std::size_t{slots};
+  std::size_t size = need + 3 * 64;
+  if (tv.capacity() >= need) size = std::min(size, tv.capacity());
+  tv.resize(size);
+  tn.resize(size);
+  if (constrained()) seg.resize(size, no_index);
 }
 
 void HalfEdgeMesh::free_slot(std::uint32_t t) {
@@ -71,6 +72,7 @@ std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
   tv.resize(3 * std::size_t{live});
   tn.resize(3 * std::size_t{live});
   if (constrained_mesh) seg.resize(3 * std::size_t{live});
+  slots = live;
   free_slots.clear();
   ghost = no_index;
   return live;

@@ -29,16 +29,17 @@ inline std::uint32_t prev_half_edge(std::uint32_t h) noexcept { return h % 3 == 
 
 struct HalfEdgeMesh {
   std::uint32_t ghost = no_index;  // the virtual vertex closing the hull, if any
-  std::vector<std::uint32_t> tv;   // 3 vertex ids per triangle slot
-  std::vector<std::uint32_t> tn;   // twin per half-edge (no_index: none)
-  // Per half-edge: its segment, or no_index. Empty while the mesh is
-  // unconstrained (a Delaunay triangulation of points does without it).
-  std::vector<std::uint32_t> seg;
+  // Per triangle slot, its 3 vertex ids (tv) and per half-edge its twin (tn,
+  // no_index: none) and its segment (seg, no_index: none; empty while the
+  // mesh is unconstrained: a Delaunay triangulation of points does without).
+  // The arrays may run past the slots in use (slot_count()): room to grow.
+  std::vector<std::uint32_t> tv, tn, seg;
   // Slots of removed triangles, reused last-freed first. A free slot's first
   // corner is no_index.
   std::vector<std::uint32_t> free_slots;
+  std::uint32_t slots = 0;  // slots in use (live or free)
 
-  std::uint32_t slot_count() const noexcept { return static_cast<std::uint32_t>(tv.size() / 3); }
+  std::uint32_t slot_count() const noexcept { return slots; }
   bool alive(std::uint32_t t) const noexcept { return tv[3 * t] != no_index; }
   bool constrained() const noexcept { return !seg.empty(); }
   std::uint32_t origin(std::uint32_t h) const noexcept { return tv[next_half_edge(h)]; }
@@ -51,13 +52,19 @@ struct HalfEdgeMesh {
     tn[b] = a;
   }
 
-  // Room for this many triangles, so that growing does not copy the arrays
-  // again and again.
+  // Capacity for this many triangles, so that growing does not copy the
+  // arrays again and again.
   void reserve(std::size_t triangles);
-  // A slot for a new triangle: the last freed one, or a new one at the end.
-  // Its corners and twins are left for the caller to set; its segments (in a
-  // constrained mesh) are no_index.
-  std::uint32_t new_slot();
+  // n new slots at the end; returns the first. Their corners, twins and
+  // segments are for the caller to set. The arrays grow by a few dozen
+  // slots at a time: the triangulator adds two slots per point, and a
+  // resize per point would cost more than the insertion's own bookkeeping.
+  std::uint32_t append_slots(std::uint32_t n) {
+    const std::uint32_t first = slots;
+    slots += n;
+    if (tv.size() < 3 * std::size_t{slots}) grow_arrays();
+    return first;
+  }
   // Marks slot t free for reuse; the caller has unlinked it.
   void free_slot(std::uint32_t t);
 
@@ -70,8 +77,12 @@ struct HalfEdgeMesh {
   // and no free slot outside them) and numbers the rest in slot order; twins
   // into removed triangles become no_index. On return dead[t] is the new
   // index of triangle t (no_index if removed), so that the caller can move
-  // its own per-triangle data the same way. Returns the triangles kept.
+  // its own per-triangle data the same way. The arrays are then exactly
+  // the slots kept. Returns the triangles kept.
   std::uint32_t remove_triangles(std::vector<std::uint32_t>& dead);
+
+private:
+  void grow_arrays();
 };
 
 } // namespace madd::detail

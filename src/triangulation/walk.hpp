@@ -29,11 +29,7 @@ struct WalkResult {
 // The random state of a visibility walk: a caller that locates many nearby
 // points keeps one across them.
 struct WalkRandom {
-  std::uint32_t state = 12345;
-  std::uint32_t next_of_three() noexcept {
-    state = state * 1103515245u + 12345u;
-    return (state >> 16) % 3;
-  }
+  std::uint32_t state = 12345;  // a linear congruential generator's
 };
 
 // A visibility walk from `start` (a live triangle, or a ghost). A walk that
