@@ -55,8 +55,10 @@ void Cavity::start(const HalfEdgeMesh& m) {
 // it. `Constrained`: stop at segments, record the rim's half-edges and
 // segments, and leave the split edge (dig_on_edge) off the rim.
 // `FoundOrder`: record the triangles as they are found, not as examined.
+// Inlined into its few callers: an insertion is then one function, and a
+// call per step would cost more than a small cavity's own bookkeeping.
 template <bool Constrained, bool FoundOrder>
-void Cavity::grow_from_stack(const HalfEdgeMesh& m, const Point* P, Point p) {
+[[gnu::always_inline]] inline void Cavity::grow_from_stack(const HalfEdgeMesh& m, const Point* P, Point p) {
   const std::uint32_t* tv = m.tv.data();
   const std::uint32_t* tn = m.tn.data();
   const std::uint32_t* seg = Constrained ? m.seg.data() : nullptr;
@@ -150,7 +152,7 @@ void Cavity::order_slots(HalfEdgeMesh& m) {
 // no fan is open; an unconstrained one has no segments to copy. (The
 // triangulator's mesh is both, and this is its inner loop.)
 template <bool Closed, bool Constrained>
-void Cavity::fill_fan(HalfEdgeMesh& m, std::uint32_t v) {
+[[gnu::always_inline]] inline void Cavity::fill_fan(HalfEdgeMesh& m, std::uint32_t v) {
   const std::size_t n = rim_.size(), k = triangles_.size();
   std::uint32_t next_new = m.append_slots(static_cast<std::uint32_t>(n > k ? n - k : 0));
   std::uint32_t* slot = fan_.data();
@@ -190,19 +192,43 @@ void Cavity::fill_fan(HalfEdgeMesh& m, std::uint32_t v) {
   if (!Closed && open_b_ != no_index) tn[3 * link[open_b_] + 2] = no_index;
 }
 
-std::span<const std::uint32_t> Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
+// Scratch for a fan around vertex v, and the slots in order (order_slots).
+void Cavity::ready_fill(HalfEdgeMesh& m, std::uint32_t v) {
   const std::uint32_t top = m.ghost == no_index ? v : std::max(v, m.ghost);
   if (link_.size() <= top) link_.resize(top + top / 2 + 16, no_index);
-  const std::size_t n = rim_.size();
+  const std::size_t n = rim_.size(), k = triangles_.size();
   if (fan_.size() < n) fan_.resize(n + 16);
-  const std::size_t k = triangles_.size();
   if (order_ == SlotOrder::last_found_first || k > n || (k < n && !m.free_slots.empty())) order_slots(m);
+}
+
+std::span<const std::uint32_t> Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
+  ready_fill(m, v);
   const bool closed = m.ghost != no_index;
   if (m.constrained()) {
     closed ? fill_fan<true, true>(m, v) : fill_fan<false, true>(m, v);
   } else {
     closed ? fill_fan<true, false>(m, v) : fill_fan<false, false>(m, v);
   }
+  const std::size_t n = rim_.size();
+  clear();
+  return {fan_.data(), n};
+}
+
+std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p,
+                                              std::uint32_t v) {
+  if (m.ghost == no_index || m.constrained() || order_ != SlotOrder::examined) {
+    dig(m, P, t, p);
+    return fill(m, v);
+  }
+  // The triangulator's case, once per point: one function, one loop each.
+  start(m);
+  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
+  in_cavity_[t] = Mark::in;
+  stack_.push_back(t);
+  grow_from_stack<false, false>(m, P.data(), p);
+  ready_fill(m, v);
+  fill_fan<true, false>(m, v);
+  const std::size_t n = rim_.size();
   clear();
   return {fan_.data(), n};
 }

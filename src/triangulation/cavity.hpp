@@ -64,6 +64,10 @@ public:
   // SlotOrder says), then freed ones, then new ones. Returns the fan's
   // slots (valid until the next fill).
   std::span<const std::uint32_t> fill(HalfEdgeMesh& m, std::uint32_t v);
+  // dig() then fill() at once, for a caller that does not look before it
+  // leaps (the triangulator).
+  std::span<const std::uint32_t> insert(HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t t, Point p,
+                                        std::uint32_t v);
   // Forgets the cavity, leaving the mesh as it was.
   void clear() noexcept;
 
@@ -73,6 +77,7 @@ private:
   template <bool Constrained, bool FoundOrder>
   void grow_from_stack(const HalfEdgeMesh& m, const Point* points, Point p);
   void order_slots(HalfEdgeMesh& m);
+  void ready_fill(HalfEdgeMesh& m, std::uint32_t v);
   template <bool Closed, bool Constrained>
   void fill_fan(HalfEdgeMesh& m, std::uint32_t v);
 

@@ -35,8 +35,8 @@ public:
   Inserter(HalfEdgeMesh& mesh, std::span<const Point> points, std::span<const std::uint32_t> order)
       : m_(mesh), P_(points), order_(order) {
     const std::size_t triangles = 2 * points.size() - 2;
-    m_.reserve(triangles);
     cavity_.reserve(triangles, points.size() + 1);
+    m_.reserve(triangles);
   }
 
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c);
@@ -75,8 +75,7 @@ void Inserter::insert(std::uint32_t v) {
       if (P_[u] == p) throw_duplicate(P_, order_[u], order_[v]);
     }
   }
-  cavity_.dig(m_, P_, t, p);
-  last_ = cavity_.fill(m_, v).front();
+  last_ = cavity_.insert(m_, P_, t, p, v).front();
 }
 
 // Chooses the first three non-collinear points of `order` as the starting
@@ -135,8 +134,8 @@ bool build_delaunay(HalfEdgeMesh& mesh, std::span<const Point> input) {
     for (std::uint32_t i = 3; i < n; ++i) ins.insert(i);
   }
   // Back to input indices; the ghost (n) is the same in both numberings.
-  for (std::size_t c = 0; c < 3 * std::size_t{mesh.slot_count()}; ++c) {
-    if (mesh.tv[c] != mesh.ghost) mesh.tv[c] = order[mesh.tv[c]];
+  for (std::uint32_t& v : std::span(mesh.tv).first(3 * std::size_t{mesh.slot_count()})) {
+    if (v != mesh.ghost) v = order[v];
   }
   return true;
 }

@@ -52,26 +52,48 @@ std::uint32_t HalfEdgeMesh::find_half_edge(std::uint32_t corner, std::uint32_t b
   return no_index;
 }
 
-std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
-  std::uint32_t live = 0;
-  for (std::uint32_t& d : dead) d = d ? no_index : live++;
-  // Each kept triangle moves to index[t] <= t, so one forward pass never
-  // overwrites a triangle it has yet to read.
-  const bool constrained_mesh = constrained();
-  for (std::uint32_t t = 0; t < dead.size(); ++t) {
-    const std::uint32_t to = dead[t];
+namespace {
+
+// Moves each kept triangle t to index[t] <= t, so one forward pass never
+// overwrites a triangle it has yet to read. A twin moves down with its
+// triangle, from q to u <= q; one into a removed triangle becomes none.
+// `Closed`: every half-edge has a twin (ghosts close the mesh).
+template <bool Closed, bool Constrained>
+void move_down(HalfEdgeMesh& m, const std::vector<std::uint32_t>& index) {
+  std::uint32_t* tv = m.tv.data();
+  std::uint32_t* tn = m.tn.data();
+  std::uint32_t* seg = m.seg.data();
+  for (std::uint32_t t = 0; t < index.size(); ++t) {
+    const std::uint32_t to = index[t];
     if (to == no_index) continue;
     for (std::uint32_t i = 0; i < 3; ++i) {
       tv[3 * to + i] = tv[3 * t + i];
-      if (constrained_mesh) seg[3 * to + i] = seg[3 * t + i];
+      if (Constrained) seg[3 * to + i] = seg[3 * t + i];
       const std::uint32_t twin = tn[3 * t + i];
-      const std::uint32_t u = twin == no_index ? no_index : dead[twin / 3];
-      tn[3 * to + i] = u == no_index ? no_index : 3 * u + twin % 3;
+      if (!Closed && twin == no_index) {
+        tn[3 * to + i] = no_index;
+        continue;
+      }
+      const std::uint32_t q = twin / 3, u = index[q];
+      tn[3 * to + i] = u == no_index ? no_index : twin - 3 * (q - u);
     }
+  }
+}
+
+} // namespace
+
+std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
+  std::uint32_t live = 0;
+  for (std::uint32_t& d : dead) d = d ? no_index : live++;
+  const bool closed = ghost != no_index;
+  if (constrained()) {
+    closed ? move_down<true, true>(*this, dead) : move_down<false, true>(*this, dead);
+  } else {
+    closed ? move_down<true, false>(*this, dead) : move_down<false, false>(*this, dead);
   }
   tv.resize(3 * std::size_t{live});
   tn.resize(3 * std::size_t{live});
-  if (constrained_mesh) seg.resize(3 * std::size_t{live});
+  if (constrained()) seg.resize(3 * std::size_t{live});
   slots = live;
   free_slots.clear();
   ghost = no_index;

@@ -59,7 +59,11 @@ std::uint32_t scan_for(const HalfEdgeMesh& m, const Point* P, Point p) {
 }
 
 // `Closed`: the mesh is closed by ghosts (every edge has a twin).
-template <bool Closed, class Steering>
+// `Bounded`: give up after a step count no walk needs. A visibility walk on
+// a Delaunay triangulation always ends (Edelsbrunner), and an unconstrained
+// mesh of the core is one (Bowyer-Watson makes it); on a constrained one it
+// may circle, and ends with probability one: the bound only limits bad luck.
+template <bool Closed, bool Bounded, class Steering>
 WalkResult walk(const HalfEdgeMesh& m, const Point* P, Point p, std::uint32_t start, Steering& steer) {
   const std::uint32_t* tv = m.tv.data();
   const std::uint32_t* tn = m.tn.data();
@@ -67,11 +71,8 @@ WalkResult walk(const HalfEdgeMesh& m, const Point* P, Point p, std::uint32_t st
   const std::uint32_t ghost = m.ghost;
   std::uint32_t t = start;
   std::uint32_t came = no_index;
-  // Neither walk visits a triangle twice on a Delaunay triangulation; a
-  // visibility walk in a constrained one may circle, and ends with
-  // probability one: this only bounds bad luck.
-  const std::size_t max_steps = 16 * std::size_t{m.slot_count()} + 64;
-  for (std::size_t step = 0; step < max_steps; ++step) {
+  std::size_t steps_left = 16 * std::size_t{m.slot_count()} + 64;
+  while (!Bounded || steps_left-- > 0) {
     if (Closed) {
       const std::uint32_t* c = tv + 3 * t;
       const std::uint32_t gi = c[0] == ghost ? 0 : c[1] == ghost ? 1 : c[2] == ghost ? 2 : 3;
@@ -99,8 +100,9 @@ WalkResult walk(const HalfEdgeMesh& m, const Point* P, Point p, std::uint32_t st
 WalkResult walk_visibly(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
                         WalkRandom& random) {
   RandomSteering steer{random.state};
-  const WalkResult result = m.ghost != no_index ? walk<true>(m, points.data(), p, start, steer)
-                                                : walk<false>(m, points.data(), p, start, steer);
+  const WalkResult result = m.ghost == no_index ? walk<false, true>(m, points.data(), p, start, steer)
+                            : m.constrained()   ? walk<true, true>(m, points.data(), p, start, steer)
+                                                : walk<true, false>(m, points.data(), p, start, steer);
   random.state = steer.state;
   return result;
 }
@@ -108,8 +110,8 @@ WalkResult walk_visibly(const HalfEdgeMesh& m, std::span<const Point> points, Po
 WalkResult walk_straight(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
                          Point from) {
   LineSteering steer{from};
-  return m.ghost != no_index ? walk<true>(m, points.data(), p, start, steer)
-                             : walk<false>(m, points.data(), p, start, steer);
+  return m.ghost != no_index ? walk<true, true>(m, points.data(), p, start, steer)
+                             : walk<false, true>(m, points.data(), p, start, steer);
 }
 
 } // namespace madd::detail
