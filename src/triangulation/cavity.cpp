@@ -161,7 +161,13 @@ template <bool Closed, bool Constrained>
   std::uint32_t* seg = m.seg.data();
   std::uint32_t* link = link_.data();
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t s = i < k ? triangles_[i] : next_new++;
+    std::uint32_t s;
+    if (i < k) {
+      s = triangles_[i];
+      in_cavity_[s] = Mark::out;
+    } else {
+      s = next_new++;
+    }
     slot[i] = s;
     const RimEdge& r = rim_[i];
     tv[3 * s] = v;
@@ -210,7 +216,7 @@ std::span<const std::uint32_t> Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
     closed ? fill_fan<true, false>(m, v) : fill_fan<false, false>(m, v);
   }
   const std::size_t n = rim_.size();
-  clear();
+  reset();
   return {fan_.data(), n};
 }
 
@@ -229,17 +235,21 @@ std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const P
   ready_fill(m, v);
   fill_fan<true, false>(m, v);
   const std::size_t n = rim_.size();
-  clear();
+  reset();
   return {fan_.data(), n};
 }
 
-void Cavity::clear() noexcept {
-  for (const std::uint32_t t : triangles_) in_cavity_[t] = Mark::out;
+void Cavity::reset() noexcept {
   triangles_.clear();
   rim_.clear();
   rim_inner_.clear();
   rim_segment_.clear();
   skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
+}
+
+void Cavity::clear() noexcept {
+  for (const std::uint32_t t : triangles_) in_cavity_[t] = Mark::out;
+  reset();
 }
 
 } // namespace madd::detail

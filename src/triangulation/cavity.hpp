@@ -78,6 +78,7 @@ private:
   void grow_from_stack(const HalfEdgeMesh& m, const Point* points, Point p);
   void order_slots(HalfEdgeMesh& m);
   void ready_fill(HalfEdgeMesh& m, std::uint32_t v);
+  void reset() noexcept;  // forgets the cavity's lists (its marks already cleared)
   template <bool Closed, bool Constrained>
   void fill_fan(HalfEdgeMesh& m, std::uint32_t v);
 
