@@ -43,6 +43,7 @@ void Cavity::reserve(std::size_t slots, std::size_t vertices) {
 
 void Cavity::start(const HalfEdgeMesh& m) {
   if (in_cavity_.size() < m.slot_count()) in_cavity_.resize(m.slot_count(), Mark::out);
+  ghost_ = m.ghost;
   triangles_.clear();
   rim_.clear();
   rim_inner_.clear();
@@ -126,7 +127,9 @@ void Cavity::dig_on_edge(const HalfEdgeMesh& m, std::span<const Point> P, std::u
 }
 
 bool Cavity::star_shaped(std::span<const Point> P, Point p) const noexcept {
-  return std::all_of(rim_.begin(), rim_.end(), [&](const RimEdge& r) { return orient2d(P[r.a], P[r.b], p) > 0; });
+  return std::all_of(rim_.begin(), rim_.end(), [&](const RimEdge& r) {
+    return r.a == ghost_ || r.b == ghost_ || orient2d(P[r.a], P[r.b], p) > 0;
+  });
 }
 
 // Puts the fan's slots first in triangles_: the cavity's own (as SlotOrder

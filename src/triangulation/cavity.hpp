@@ -49,10 +49,9 @@ public:
   // open at h on the outside of the mesh).
   void dig_on_edge(const HalfEdgeMesh& m, std::span<const Point> points, std::uint32_t h, Point p);
 
-  // Every fan triangle (p, a, b) strictly counter-clockwise: the cavity is
-  // star-shaped from p, exactly.
+  // Every fan triangle (p, a, b) but the ghosts strictly counter-clockwise:
+  // the cavity is star-shaped from p, exactly.
   bool star_shaped(std::span<const Point> points, Point p) const noexcept;
-  const std::vector<RimEdge>& rim() const noexcept { return rim_; }
   // In a constrained mesh, per rim edge, that half-edge itself (its segment
   // is the mesh's, until fill()); empty otherwise.
   const std::vector<std::uint32_t>& rim_inner() const noexcept { return rim_inner_; }
@@ -94,6 +93,7 @@ private:
   std::vector<std::uint32_t> link_;  // per vertex: the fan triangle whose rim edge starts there
   std::uint32_t skip_ = no_index, skip_twin_ = no_index;  // the split edge and its twin (dig_on_edge)
   std::uint32_t open_a_ = no_index, open_b_ = no_index;    // its ends, when the fan stays open there
+  std::uint32_t ghost_ = no_index;                         // the mesh's, as dug
 };
 
 } // namespace madd::detail
