@@ -53,8 +53,8 @@ bool RefinementMesh::prepare(std::uint32_t t, Point p) {
     cavity_.clear();
     return false;
   }
-  for (const std::uint32_t h : cavity_.rim_inner())
-    if (mesh_.seg[h] != no_index) rim_segments_.push_back(h);
+  for (const Cavity::RimSide& r : cavity_.rim_sides())
+    if (r.segment != no_index) rim_segments_.push_back(r.inner);
   return true;
 }
 
@@ -74,7 +74,7 @@ std::uint32_t RefinementMesh::add_vertex(Point p, std::uint32_t vertex_segment, 
   vertex_parameter_.push_back(parameter);
   vertex_triangle_.push_back(no_index);
   rim_labels_.clear();
-  for (const std::uint32_t h : cavity_.rim_inner()) rim_labels_.push_back(label_[h / 3]);
+  for (const Cavity::RimSide& r : cavity_.rim_sides()) rim_labels_.push_back(label_[r.inner / 3]);
   const std::span<const std::uint32_t> fan = cavity_.fill(mesh_, v);
   if (label_.size() < mesh_.slot_count()) label_.resize(mesh_.slot_count(), 0);
   fresh_.clear();

@@ -46,8 +46,7 @@ void Cavity::start(const HalfEdgeMesh& m) {
   ghost_ = m.ghost;
   triangles_.clear();
   rim_.clear();
-  rim_inner_.clear();
-  rim_segment_.clear();
+  rim_sides_.clear();
   stack_.clear();
 }
 
@@ -84,8 +83,7 @@ template <bool Constrained, bool FoundOrder>
       if (Constrained && (h == skip || h == skip_twin)) continue;
       rim_.push_back({tv[next_half_edge(h)], tv[prev_half_edge(h)], out});
       if (Constrained) {
-        rim_inner_.push_back(h);
-        rim_segment_.push_back(seg[h]);
+        rim_sides_.push_back({h, seg[h]});
       }
     }
   }
@@ -179,7 +177,7 @@ template <bool Closed, bool Constrained>
     tn[3 * s] = r.outer;
     if (Closed || r.outer != no_index) tn[r.outer] = 3 * s;
     if (Constrained) {
-      seg[3 * s] = rim_segment_[i];
+      seg[3 * s] = rim_sides_[i].segment;
       seg[3 * s + 1] = seg[3 * s + 2] = no_index;
     }
     link[r.a] = s;
@@ -245,8 +243,7 @@ std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const P
 void Cavity::reset() noexcept {
   triangles_.clear();
   rim_.clear();
-  rim_inner_.clear();
-  rim_segment_.clear();
+  rim_sides_.clear();
   skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
 }
 

@@ -35,6 +35,12 @@ public:
     std::uint32_t a, b;   // the rim edge a->b, seen from inside the cavity
     std::uint32_t outer;  // its twin outside (no_index: none)
   };
+  // What a constrained mesh also keeps of a rim edge (apart, so that the
+  // triangulator's rim stays small).
+  struct RimSide {
+    std::uint32_t inner;    // the rim half-edge itself (valid until fill())
+    std::uint32_t segment;  // its segment, or no_index
+  };
 
   explicit Cavity(SlotOrder order) noexcept : order_(order) {}
   // Scratch for this many slots and vertices up front (it grows on demand
@@ -52,9 +58,8 @@ public:
   // Every fan triangle (p, a, b) but the ghosts strictly counter-clockwise:
   // the cavity is star-shaped from p, exactly.
   bool star_shaped(std::span<const Point> points, Point p) const noexcept;
-  // In a constrained mesh, per rim edge, that half-edge itself (its segment
-  // is the mesh's, until fill()); empty otherwise.
-  const std::vector<std::uint32_t>& rim_inner() const noexcept { return rim_inner_; }
+  // In a constrained mesh, per rim edge, its side (empty otherwise).
+  const std::vector<RimSide>& rim_sides() const noexcept { return rim_sides_; }
   const std::vector<std::uint32_t>& triangles() const noexcept { return triangles_; }
 
   // Replaces the cavity by the fan of triangles (v, a, b), one per rim edge,
@@ -89,7 +94,7 @@ private:
   enum class Mark : std::uint8_t { out, in };
   std::vector<Mark> in_cavity_;
   std::vector<RimEdge> rim_;
-  std::vector<std::uint32_t> rim_inner_, rim_segment_;  // per rim edge, in a constrained mesh
+  std::vector<RimSide> rim_sides_;  // per rim edge, in a constrained mesh
   std::vector<std::uint32_t> link_;  // per vertex: the fan triangle whose rim edge starts there
   std::uint32_t skip_ = no_index, skip_twin_ = no_index;  // the split edge and its twin (dig_on_edge)
   std::uint32_t open_a_ = no_index, open_b_ = no_index;    // its ends, when the fan stays open there
