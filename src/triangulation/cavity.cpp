@@ -1,7 +1,8 @@
 // Bowyer-Watson cavity and fan on the half-edge core. This is the inner loop
 // of both the triangulator and refinement: the arrays are read through local
-// pointers and the small steps are local functions, so that it compiles to
-// one tight loop per kind of mesh.
+// pointers, and the loops are templates on what the mesh has (ghosts,
+// segments) and on the slot order, so that each kind of mesh gets its own
+// tight loop.
 #include "triangulation/cavity.hpp"
 
 #include <algorithm>
@@ -41,13 +42,18 @@ void Cavity::reserve(std::size_t slots, std::size_t vertices) {
   if (link_.size() < vertices) link_.resize(vertices, no_index);
 }
 
-void Cavity::start(const HalfEdgeMesh& m) {
+// A new cavity holding triangle t, to grow from.
+void Cavity::start(const HalfEdgeMesh& m, std::uint32_t t) {
   if (in_cavity_.size() < m.slot_count()) in_cavity_.resize(m.slot_count(), Mark::out);
   ghost_ = m.ghost;
   triangles_.clear();
   rim_.clear();
   rim_sides_.clear();
   stack_.clear();
+  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
+  in_cavity_[t] = Mark::in;
+  stack_.push_back(t);
+  if (order_ == SlotOrder::last_found_first) triangles_.push_back(t);
 }
 
 // Grows the cavity from the marked triangles on the stack (an explicit
@@ -99,27 +105,24 @@ void Cavity::grow(const HalfEdgeMesh& m, std::span<const Point> P, Point p) {
 }
 
 void Cavity::dig(const HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p) {
-  start(m);
-  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
-  in_cavity_[t] = Mark::in;
-  stack_.push_back(t);
-  if (order_ == SlotOrder::last_found_first) triangles_.push_back(t);
+  start(m, t);
   grow(m, P, p);
 }
 
 // p, strictly inside the edge, is strictly inside the circumcircles of the
 // triangles on both its sides: both belong to the cavity.
 void Cavity::dig_on_edge(const HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t h, Point p) {
-  start(m);
+  const std::uint32_t twin = m.tn[h];
+  start(m, h / 3);
   skip_ = h;
-  skip_twin_ = m.tn[h];
-  open_a_ = skip_twin_ == no_index ? m.origin(h) : no_index;
-  open_b_ = skip_twin_ == no_index ? m.dest(h) : no_index;
-  for (const std::uint32_t e : {h, skip_twin_}) {
-    if (e == no_index) continue;
-    in_cavity_[e / 3] = Mark::in;
-    stack_.push_back(e / 3);
-    if (order_ == SlotOrder::last_found_first) triangles_.push_back(e / 3);
+  skip_twin_ = twin;
+  if (twin == no_index) {
+    open_a_ = m.origin(h);
+    open_b_ = m.dest(h);
+  } else {
+    in_cavity_[twin / 3] = Mark::in;
+    stack_.push_back(twin / 3);
+    if (order_ == SlotOrder::last_found_first) triangles_.push_back(twin / 3);
   }
   grow(m, P, p);
 }
@@ -133,8 +136,7 @@ bool Cavity::star_shaped(std::span<const Point> P, Point p) const noexcept {
 // Puts the fan's slots first in triangles_: the cavity's own (as SlotOrder
 // says), then freed ones (last freed first); new ones at the end follow. A
 // cavity never has more triangles than its fan (k triangles, k + 2 rim
-// edges, one fewer when open); should one have, its spare slots are freed,
-// the first found last.
+// edges, one fewer when open); should one have, its spare slots are freed.
 void Cavity::order_slots(HalfEdgeMesh& m) {
   if (order_ == SlotOrder::last_found_first) std::reverse(triangles_.begin(), triangles_.end());
   const std::size_t n = rim_.size();
@@ -216,9 +218,7 @@ std::span<const std::uint32_t> Cavity::fill(HalfEdgeMesh& m, std::uint32_t v) {
   } else {
     closed ? fill_fan<true, false>(m, v) : fill_fan<false, false>(m, v);
   }
-  const std::size_t n = rim_.size();
-  reset();
-  return {fan_.data(), n};
+  return finish();
 }
 
 std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const Point> P, std::uint32_t t, Point p,
@@ -228,13 +228,15 @@ std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const P
     return fill(m, v);
   }
   // The triangulator's case, once per point: one function, one loop each.
-  start(m);
-  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
-  in_cavity_[t] = Mark::in;
-  stack_.push_back(t);
+  start(m, t);
   grow_from_stack<false, false>(m, P.data(), p);
   ready_fill(m, v);
   fill_fan<true, false>(m, v);
+  return finish();
+}
+
+// The fan just made; the cavity's marks were cleared as its slots were reused.
+std::span<const std::uint32_t> Cavity::finish() noexcept {
   const std::size_t n = rim_.size();
   reset();
   return {fan_.data(), n};

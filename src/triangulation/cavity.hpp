@@ -76,12 +76,13 @@ public:
   void clear() noexcept;
 
 private:
-  void start(const HalfEdgeMesh& m);
+  void start(const HalfEdgeMesh& m, std::uint32_t t);
   void grow(const HalfEdgeMesh& m, std::span<const Point> points, Point p);
   template <bool Constrained, bool FoundOrder>
   void grow_from_stack(const HalfEdgeMesh& m, const Point* points, Point p);
   void order_slots(HalfEdgeMesh& m);
   void ready_fill(HalfEdgeMesh& m, std::uint32_t v);
+  std::span<const std::uint32_t> finish() noexcept;
   void reset() noexcept;  // forgets the cavity's lists (its marks already cleared)
   template <bool Closed, bool Constrained>
   void fill_fan(HalfEdgeMesh& m, std::uint32_t v);

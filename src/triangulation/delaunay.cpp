@@ -32,6 +32,10 @@ namespace {
 class Inserter {
 public:
   // Every insertion adds two triangles (ghosts included): 2n - 2 in the end.
+  // The cavity's scratch is allocated before the arrays, as it was before the
+  // core was shared: the heap then lays them out alike, and repeated runs
+  // (glibc keeps freed memory once its mmap threshold has grown) peak no
+  // higher.
   Inserter(HalfEdgeMesh& mesh, std::span<const Point> points, std::span<const std::uint32_t> order)
       : m_(mesh), P_(points), order_(order) {
     const std::size_t triangles = 2 * points.size() - 2;

@@ -23,7 +23,9 @@ namespace madd::detail {
 
 struct WalkResult {
   std::uint32_t triangle = no_index;    // holds p in its closure (a ghost: p outside the hull)
-  std::uint32_t blocked_by = no_index;  // the segment half-edge a straight walk could not cross
+  // The half-edge the walk could not cross: a segment (straight walk), or
+  // the outside of a mesh without ghosts.
+  std::uint32_t blocked_by = no_index;
 };
 
 // The random state of a visibility walk: a caller that locates many nearby
