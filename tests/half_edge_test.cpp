@@ -1,7 +1,8 @@
-// Tests of the half-edge triangulation core (src/triangulation/half_edge_mesh,
-// cavity, walk): the structure's invariants checked by brute force, the
-// cavity's fan kept Delaunay through insertions, slot reuse, the walks, edge
-// search, compaction, and splitting an edge of a constrained mesh.
+// Tests of the half-edge triangulation core (src/triangulation/half_edge_mesh.hpp,
+// src/triangulation/cavity.hpp, src/triangulation/walk.hpp): the structure's
+// invariants checked by brute force, the cavity's fan kept Delaunay through
+// insertions, slot reuse, the walks, edge search, compaction, and splitting
+// an edge of a constrained mesh.
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -43,7 +43,7 @@ void Cavity::reserve(std::size_t slots, std::size_t vertices) {
 }
 
 // A new cavity holding triangle t, to grow from.
-void Cavity::start(const HalfEdgeMesh& m, std::uint32_t t) {
+[[gnu::always_inline]] inline void Cavity::start(const HalfEdgeMesh& m, std::uint32_t t) {
   if (in_cavity_.size() < m.slot_count()) in_cavity_.resize(m.slot_count(), Mark::out);
   ghost_ = m.ghost;
   triangles_.clear();
@@ -201,8 +201,23 @@ template <bool Closed, bool Constrained>
   if (!Closed && open_b_ != no_index) tn[3 * link[open_b_] + 2] = no_index;
 }
 
+// Forgets the cavity's lists; its marks are cleared already.
+[[gnu::always_inline]] inline void Cavity::reset() noexcept {
+  triangles_.clear();
+  rim_.clear();
+  rim_sides_.clear();
+  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
+}
+
+// The fan just made; the cavity's marks were cleared as its slots were reused.
+[[gnu::always_inline]] inline std::span<const std::uint32_t> Cavity::finish() noexcept {
+  const std::size_t n = rim_.size();
+  reset();
+  return {fan_.data(), n};
+}
+
 // Scratch for a fan around vertex v, and the slots in order (order_slots).
-void Cavity::ready_fill(HalfEdgeMesh& m, std::uint32_t v) {
+[[gnu::always_inline]] inline void Cavity::ready_fill(HalfEdgeMesh& m, std::uint32_t v) {
   const std::uint32_t top = m.ghost == no_index ? v : std::max(v, m.ghost);
   if (link_.size() <= top) link_.resize(top + top / 2 + 16, no_index);
   const std::size_t n = rim_.size(), k = triangles_.size();
@@ -233,20 +248,6 @@ std::span<const std::uint32_t> Cavity::insert(HalfEdgeMesh& m, std::span<const P
   ready_fill(m, v);
   fill_fan<true, false>(m, v);
   return finish();
-}
-
-// The fan just made; the cavity's marks were cleared as its slots were reused.
-std::span<const std::uint32_t> Cavity::finish() noexcept {
-  const std::size_t n = rim_.size();
-  reset();
-  return {fan_.data(), n};
-}
-
-void Cavity::reset() noexcept {
-  triangles_.clear();
-  rim_.clear();
-  rim_sides_.clear();
-  skip_ = skip_twin_ = open_a_ = open_b_ = no_index;
 }
 
 void Cavity::clear() noexcept {

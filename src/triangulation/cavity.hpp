@@ -83,7 +83,7 @@ private:
   void order_slots(HalfEdgeMesh& m);
   void ready_fill(HalfEdgeMesh& m, std::uint32_t v);
   std::span<const std::uint32_t> finish() noexcept;
-  void reset() noexcept;  // forgets the cavity's lists (its marks already cleared)
+  void reset() noexcept;
   template <bool Closed, bool Constrained>
   void fill_fan(HalfEdgeMesh& m, std::uint32_t v);
 
