@@ -31,9 +31,9 @@
 
 #include "madd/error.hpp"
 #include "madd/predicates.hpp"
-#include "madd/triangulation.hpp"
 #include "mesh/refinement_mesh.hpp"
 #include "quality/mesh_angle.hpp"
+#include "triangulation/cdt.hpp"
 
 namespace madd::detail {
 
@@ -378,7 +378,7 @@ void Refiner::try_triangle(std::uint32_t t) {
     reason_[t] = Reason::precision;
     return;
   }
-  const RefinementMesh::Walk w = m_.walk(t, p);
+  const WalkResult w = m_.walk(t, p);
   std::vector<std::uint32_t>& encroached = encroached_;
   encroached.clear();
   if (w.blocked_by != no_index) {
@@ -508,30 +508,17 @@ std::vector<RefinementSegment> refinement_segments(const Pslg& pslg, const std::
   return out;
 }
 
-// The labels of the triangles of `pslg`'s triangulation: 1 + the index of
-// the region of pslg.regions whose face holds it, 0 for none (Triangle's -A
-// on the region numbers, so the flood is the triangulator's own).
-Triangulation labelled_triangulation(const Pslg& pslg, std::vector<std::uint32_t>& labels) {
-  if (pslg.regions.empty()) {
-    labels.clear();
-    return triangulate(pslg);
-  }
-  Pslg numbered = pslg;
-  for (std::size_t r = 0; r < numbered.regions.size(); ++r) numbered.regions[r].attribute = static_cast<double>(r + 1);
-  TriangulateOptions options;
-  options.region_attributes = true;
-  Triangulation tri = triangulate(numbered, options);
-  labels.resize(tri.triangles.size());
-  for (std::size_t t = 0; t < labels.size(); ++t) labels[t] = static_cast<std::uint32_t>(tri.attributes[t]);
-  return tri;
-}
-
 } // namespace
 
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings) {
+  // Refinement grows the triangulator's own mesh. The labels are 1 + the
+  // index of the region of pslg.regions whose face holds a triangle, 0 for
+  // none (the triangulator's -A flood on the region numbers).
+  HalfEdgeMesh cdt;
   std::vector<std::uint32_t> labels;
-  const Triangulation tri = labelled_triangulation(pslg, labels);
-  RefinementMesh m(tri, refinement_segments(pslg, splittable), labels);
+  // All points collinear: no triangles, and nothing to refine.
+  (void)constrained_delaunay(cdt, pslg, {}, pslg.regions.empty() ? nullptr : &labels);
+  RefinementMesh m(std::move(cdt), pslg.points, refinement_segments(pslg, splittable), std::move(labels));
   std::vector<double> label_area(pslg.regions.size() + 1, std::numeric_limits<double>::infinity());
   for (std::size_t r = 0; r < pslg.regions.size(); ++r)
     if (pslg.regions[r].max_area > 0) label_area[r + 1] = pslg.regions[r].max_area;

@@ -2,13 +2,13 @@
 // The working triangulation of Delaunay refinement: a constrained Delaunay
 // triangulation of one subdomain that grows one vertex at a time.
 //
-// Half-edges as in the triangulator (triangulation/delaunay_mesh.hpp):
-// h = 3t + i is edge i of triangle t, opposite corner i, directed
-// counter-clockwise from tv[3t + (i+1)%3] to tv[3t + (i+2)%3]; tn[h] is the
-// twin, no_index outside the subdomain (every such edge is a segment). There
-// are no ghost triangles: the subdomain is closed by its segments. An
-// interior segment (a constraint inside the subdomain) has triangles on both
-// sides: its half-edges have twins and a segment.
+// It is the triangulator's own half-edge core (triangulation/half_edge_mesh.hpp),
+// taken over as constrained_delaunay() leaves it, and grown by the core's
+// cavity and walk; what refinement adds lives here. Twins are no_index
+// outside the subdomain (every such edge is a segment). There are no ghost
+// triangles: the subdomain is closed by its segments. An interior segment
+// (a constraint inside the subdomain) has triangles on both sides: its
+// half-edges have twins and a segment.
 //
 // Every triangle carries a label (the caller's region number): a cavity
 // never crosses a segment, so the triangles replacing it take the label of
@@ -24,12 +24,11 @@
 
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
-#include "madd/triangulation.hpp"
+#include "triangulation/cavity.hpp"
+#include "triangulation/half_edge_mesh.hpp"
+#include "triangulation/walk.hpp"
 
 namespace madd::detail {
-
-inline std::uint32_t next_half_edge(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
-inline std::uint32_t prev_half_edge(std::uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
 
 // A segment of the subdomain: a piece of the discretised boundary.
 struct RefinementSegment {
@@ -39,11 +38,12 @@ struct RefinementSegment {
 
 class RefinementMesh {
 public:
-  // From a constrained Delaunay triangulation of the subdomain whose segment
-  // i is segments[i] (tri.segment_of indexes it); labels[t] is triangle t's
-  // label (empty: all 0).
-  RefinementMesh(const Triangulation& tri, std::vector<RefinementSegment> segments,
-                 const std::vector<std::uint32_t>& labels = {});
+  // Takes over `mesh`, a constrained Delaunay triangulation of the subdomain
+  // without ghosts or free slots (constrained_delaunay()), whose vertex i is
+  // points[i] and whose segment i is segments[i] (mesh.seg indexes it);
+  // labels[t] is triangle t's label (empty: all 0).
+  RefinementMesh(HalfEdgeMesh mesh, std::vector<Point> points, std::vector<RefinementSegment> segments,
+                 std::vector<std::uint32_t> labels = {});
 
   // Room for this many triangles (and about half as many vertices), so
   // that growing does not copy the arrays again and again.
@@ -52,14 +52,14 @@ public:
   std::span<const Point> points() const noexcept { return points_; }
   Point point(std::uint32_t v) const noexcept { return points_[v]; }
   std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
-  std::uint32_t slot_count() const noexcept { return static_cast<std::uint32_t>(tv_.size() / 3); }
-  bool alive(std::uint32_t t) const noexcept { return alive_[t] != 0; }
+  std::uint32_t slot_count() const noexcept { return mesh_.slot_count(); }
+  bool alive(std::uint32_t t) const noexcept { return mesh_.alive(t); }
   std::uint32_t label(std::uint32_t t) const noexcept { return label_[t]; }
-  std::uint32_t corner(std::uint32_t t, int i) const noexcept { return tv_[3 * t + static_cast<std::uint32_t>(i)]; }
-  std::uint32_t origin(std::uint32_t h) const noexcept { return tv_[next_half_edge(h)]; }
-  std::uint32_t dest(std::uint32_t h) const noexcept { return tv_[prev_half_edge(h)]; }
-  std::uint32_t twin(std::uint32_t h) const noexcept { return tn_[h]; }
-  std::uint32_t segment_of(std::uint32_t h) const noexcept { return seg_[h]; }
+  std::uint32_t corner(std::uint32_t t, int i) const noexcept { return mesh_.tv[3 * t + static_cast<std::uint32_t>(i)]; }
+  std::uint32_t origin(std::uint32_t h) const noexcept { return mesh_.origin(h); }
+  std::uint32_t dest(std::uint32_t h) const noexcept { return mesh_.dest(h); }
+  std::uint32_t twin(std::uint32_t h) const noexcept { return mesh_.tn[h]; }
+  std::uint32_t segment_of(std::uint32_t h) const noexcept { return mesh_.seg[h]; }
   const RefinementSegment& segment(std::uint32_t s) const noexcept { return segments_[s]; }
   std::size_t segment_count() const noexcept { return segments_.size(); }
   // The segment a vertex lies inside (no_index for an input vertex or one
@@ -72,15 +72,10 @@ public:
   // The half-edge from a to b, or no_index when a and b are not joined.
   std::uint32_t find_half_edge(std::uint32_t a, std::uint32_t b) const noexcept;
 
-  // The outcome of locating a point by walking from a triangle.
-  struct Walk {
-    std::uint32_t triangle = no_index;   // containing triangle (closure) when reached
-    std::uint32_t blocked_by = no_index; // the segment half-edge the straight walk hit first
-  };
   // Walks the straight line from the centroid of `from` to p, crossing only
-  // unconstrained edges. Exact orientation tests; gives up (triangle and
-  // blocked_by both no_index) after a step count no walk needs.
-  Walk walk(std::uint32_t from, Point p) const;
+  // unconstrained edges (walk_straight: the triangle holding p, or the
+  // segment half-edge in the way, or neither when it gives up).
+  WalkResult walk(std::uint32_t from, Point p) const;
 
   // Inserting p, found in the closure of triangle `t` and visible from it,
   // by Bowyer-Watson, in two steps so that the caller can look before it
@@ -108,37 +103,23 @@ public:
   std::vector<std::uint32_t>& fresh() noexcept { return fresh_; }
 
 private:
-  bool collect_cavity(std::uint32_t t, Point p, std::uint32_t skip, std::uint32_t skip_twin);
-  std::uint32_t fan(std::uint32_t vertex_segment, double parameter);
-  void clear_cavity();
-  std::uint32_t new_slot();
+  std::uint32_t add_vertex(Point p, std::uint32_t vertex_segment, double parameter);
   void set_corner_home(std::uint32_t t);
 
+  HalfEdgeMesh mesh_;
+  Cavity cavity_{Cavity::SlotOrder::last_found_first};
   std::vector<Point> points_;
   std::vector<std::uint32_t> vertex_segment_;
   std::vector<double> vertex_parameter_;
   std::vector<std::uint32_t> vertex_triangle_;  // some live triangle at each vertex
   std::uint32_t input_vertices_ = 0;
   std::vector<RefinementSegment> segments_;
-
-  std::vector<std::uint32_t> tv_, tn_, seg_;
-  std::vector<std::uint8_t> alive_;
-  std::vector<std::uint32_t> label_;
-  std::vector<std::uint32_t> free_;
+  std::vector<std::uint32_t> label_;  // per slot
 
   // Scratch of one insertion.
-  std::vector<std::uint32_t> cavity_, stack_;
-  std::vector<std::uint8_t> in_cavity_;
-  struct Rim {
-    std::uint32_t a, b, outer, segment;  // rim edge a->b seen from inside, its twin outside, its segment
-    std::uint32_t label;                 // of the cavity triangle it bounds
-  };
-  std::vector<Rim> rim_;
   std::vector<std::uint32_t> rim_segments_;
-  std::vector<std::uint32_t> link_;  // per vertex: the new triangle whose rim edge starts there
-  Point pending_;                    // the point prepare() dug for
-  std::uint32_t skip_ = no_index;    // the subsegment being split (not a rim edge of the fan)
-  std::uint32_t skip_twin_ = no_index;  // its twin, when it is an interior subsegment
+  std::vector<std::uint32_t> rim_labels_;
+  Point pending_;  // the point prepare() dug for
   std::vector<std::uint32_t> fresh_;
 };
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "triangulation/delaunay_mesh.hpp"
+#include "triangulation/cdt.hpp"
 #include "madd/error.hpp"
 #include "madd/predicates.hpp"
 
@@ -31,7 +31,7 @@ bool same_direction(Point a, Point b, Point c) noexcept {
 
 class SegmentInserter {
 public:
-  SegmentInserter(Mesh& mesh, const Pslg& pslg);
+  SegmentInserter(HalfEdgeMesh& mesh, const Pslg& pslg);
   void insert(std::uint32_t s);
 
 private:
@@ -50,7 +50,7 @@ private:
   void find_slits(const Path& path);
   void close_slits();
 
-  Mesh& m_;
+  HalfEdgeMesh& m_;
   const Pslg& pslg_;
   std::span<const Point> P_;         // the mesh's vertices are indices into it
   std::vector<std::uint32_t> v2c_;   // per vertex: a corner (3t+i) holding it
@@ -68,13 +68,13 @@ private:
   std::vector<Slit> slits_;
 };
 
-SegmentInserter::SegmentInserter(Mesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg), P_(pslg.points) {
+SegmentInserter::SegmentInserter(HalfEdgeMesh& mesh, const Pslg& pslg) : m_(mesh), pslg_(pslg), P_(pslg.points) {
   v2c_.assign(P_.size(), no_index);
-  for (std::uint32_t c = 0; c < mesh.tv.size(); ++c) {
+  for (std::uint32_t c = 0; c < 3 * mesh.slot_count(); ++c) {
     if (mesh.tv[c] != mesh.ghost) v2c_[mesh.tv[c]] = c;
   }
   m_.seg.assign(m_.tv.size(), no_index);
-  in_cavity_.assign(m_.tv.size() / 3, 0);
+  in_cavity_.assign(m_.slot_count(), 0);
 }
 
 void SegmentInserter::find_slits(const Path& path) {
@@ -108,34 +108,25 @@ void SegmentInserter::mark(std::uint32_t h, std::uint32_t s) {
 // in the triangle whose opposite edge the segment crosses.
 std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::uint32_t& corner) const {
   // Fast path, no geometry: most segments are already Delaunay edges.
-  const std::uint32_t start = v2c_[a];
-  std::uint32_t c = start;
-  std::size_t turns = 0;
-  do {
-    if (m_.tv[next_edge(c)] == b) {
-      corner = prev_edge(c);
-      return b;
-    }
-    c = next_edge(m_.tn[next_edge(c)]);
-    // A consistent mesh brings the rotation back to start within the
-    // triangle count; a broken one must fail loudly, never hang.
-    if (++turns > m_.tv.size() / 3) {
-      throw InternalError("triangulate: internal error: open fan around vertex " + std::to_string(a));
-    }
-  } while (c != start);
+  const std::uint32_t h = m_.find_half_edge(v2c_[a], b);
+  if (h != no_index) {
+    corner = h;
+    return b;
+  }
+  std::uint32_t c = v2c_[a];
   const auto& P = P_;
   const Point pa = P[a], pb = P[b];
-  for (std::size_t guard = 0; guard <= m_.tv.size(); ++guard) {
-    const std::uint32_t x = m_.tv[next_edge(c)], y = m_.tv[prev_edge(c)];
+  for (std::size_t guard = 0; guard <= 3 * std::size_t{m_.slot_count()}; ++guard) {
+    const std::uint32_t x = m_.tv[next_half_edge(c)], y = m_.tv[prev_half_edge(c)];
     if (x != m_.ghost && y != m_.ghost) {
       const double ox = orient2d(pa, pb, P[x]);
       if (ox == 0 && same_direction(pa, pb, P[x])) {
-        corner = prev_edge(c);  // edge i+2 = a->x
+        corner = prev_half_edge(c);  // edge i+2 = a->x
         return x;
       }
       const double oy = orient2d(pa, pb, P[y]);
       if (oy == 0 && same_direction(pa, pb, P[y])) {
-        corner = next_edge(c);  // edge i+1 = y->a
+        corner = next_half_edge(c);  // edge i+1 = y->a
         return y;
       }
       if (ox < 0 && oy > 0) {
@@ -144,8 +135,8 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
       }
     }
     // Next triangle counter-clockwise around a: across edge y->a (edge i+1).
-    const std::uint32_t twin = m_.tn[next_edge(c)];
-    c = next_edge(twin);
+    const std::uint32_t twin = m_.tn[next_half_edge(c)];
+    c = next_half_edge(twin);
   }
   throw InternalError("triangulate: internal error: no exit around vertex " + std::to_string(a));
 }
@@ -157,10 +148,10 @@ std::uint32_t SegmentInserter::find_exit(std::uint32_t a, std::uint32_t b, std::
 std::uint32_t SegmentInserter::cross(std::uint32_t a, std::uint32_t b, std::uint32_t t0, std::uint32_t h,
                                      std::uint32_t s) {
   const auto& P = P_;
-  upper_.verts = {a, m_.tv[prev_edge(t0)]};
-  upper_.ext = {m_.tn[next_edge(t0)]};
-  lower_.verts = {a, m_.tv[next_edge(t0)]};
-  lower_.ext = {m_.tn[prev_edge(t0)]};
+  upper_.verts = {a, m_.tv[prev_half_edge(t0)]};
+  upper_.ext = {m_.tn[next_half_edge(t0)]};
+  lower_.verts = {a, m_.tv[next_half_edge(t0)]};
+  lower_.ext = {m_.tn[prev_half_edge(t0)]};
   crossed_ = {t0 / 3};
   std::uint32_t end = no_index;
   while (end == no_index) {
@@ -169,7 +160,7 @@ std::uint32_t SegmentInserter::cross(std::uint32_t a, std::uint32_t b, std::uint
     crossed_.push_back(g / 3);
     const std::uint32_t e = m_.tv[g];
     if (e == m_.ghost) throw InternalError("triangulate: internal error: segment leaves the hull");
-    const std::uint32_t xe = next_edge(g), ey = prev_edge(g);
+    const std::uint32_t xe = next_half_edge(g), ey = prev_half_edge(g);
     const double o = e == b ? 0.0 : orient2d(P[a], P[b], P[e]);
     if (o > 0) {
       upper_.verts.push_back(e);
@@ -279,40 +270,9 @@ void SegmentInserter::insert(std::uint32_t s) {
 
 } // namespace
 
-void insert_segments(Mesh& mesh, const Pslg& pslg) {
+void insert_segments(HalfEdgeMesh& mesh, const Pslg& pslg) {
   SegmentInserter inserter(mesh, pslg);
   for (std::uint32_t s = 0; s < pslg.segments.size(); ++s) inserter.insert(s);
-}
-
-std::uint32_t walk_to(const Mesh& mesh, std::span<const Point> P, Point p, std::uint32_t start) {
-  std::uint32_t t = start;
-  std::uint32_t rng = 2463534242u;
-  for (std::size_t steps = 0; steps < 16 * mesh.tv.size() + 64; ++steps) {
-    if (mesh.is_ghost(t)) return t;
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    const std::uint32_t r = rng % 3;
-    bool moved = false;
-    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-      const std::uint32_t h = 3 * t + (r + k) % 3;
-      if (orient2d(P[mesh.origin(h)], P[mesh.dest(h)], p) < 0) {
-        t = mesh.tn[h] / 3;
-        moved = true;
-      }
-    }
-    if (!moved) return t;
-  }
-  // A stochastic walk ends with probability one; this only bounds bad luck.
-  for (std::uint32_t u = 0; u < mesh.triangle_count(); ++u) {
-    if (mesh.is_ghost(u)) continue;
-    bool inside = true;
-    for (std::uint32_t h = 3 * u; h < 3 * u + 3 && inside; ++h) {
-      inside = orient2d(P[mesh.origin(h)], P[mesh.dest(h)], p) >= 0;
-    }
-    if (inside) return u;
-  }
-  return no_index;
 }
 
 } // namespace madd::detail
