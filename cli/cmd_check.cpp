@@ -138,8 +138,7 @@ void print_pslg_summary(const std::string& path, const Pslg& pslg, const Invalid
   std::printf("  parts             %zu\n", s.parts);
   std::printf("  area              %.17g\n", s.area);
   std::printf("  bounding box      [%.17g, %.17g] x [%.17g, %.17g]\n", xmin, xmax, ymin, ymax);
-  std::printf("  madd triangulate takes it; madd decompose and madd mesh refuse it:\n  %s\n",
-              not_a_domain.what());
+  std::printf("  madd triangulate takes it; madd decompose and madd mesh refuse it:\n  %s\n", not_a_domain.what());
 }
 
 int check_body(void* context) {
@@ -167,7 +166,8 @@ int check_body(void* context) {
 int run_check(int argc, char** argv) {
   const CommandOptions& options = options_of("check");
   CommandLine line;
-  if (const auto done = read_command_line(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
+  if (const auto done =
+          read_command_line(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
     return *done;
   if (line.operands.size() != 1) return usage_error("check", "expected exactly one input file");
   CheckArgs args;
@@ -176,7 +176,8 @@ int run_check(int argc, char** argv) {
   return run_guarded("check", check_body, &args);
 }
 
-const CommandRegistration registration({"check", "validate a domain, a PSLG or a point set and print a summary", run_check});
+const CommandRegistration registration({"check", "validate a domain, a PSLG or a point set and print a summary",
+                                        run_check});
 
-} // namespace
-} // namespace madd::cli
+}  // namespace
+}  // namespace madd::cli

@@ -76,16 +76,19 @@ void print_required_area(std::FILE* out, const DecomposeArgs& args, const Metric
   std::fprintf(out, "  required area: largest area / required area %s (bound %s)\n",
                fig(m.max_area_over_required, "%.4g").c_str(), fig(m.subdomain_area_ratio, "%.4g").c_str());
   if (m.subdomains_over_area_bound > 0)
-    std::fprintf(out, "  note: the maximum of %u subdomains was reached with %u still above the area bound "
-                 "(raise -n to split them)\n", args.line.mesh.decomposition.subdomains, m.subdomains_over_area_bound);
+    std::fprintf(out,
+                 "  note: the maximum of %u subdomains was reached with %u still above the area bound "
+                 "(raise -n to split them)\n",
+                 args.line.mesh.decomposition.subdomains, m.subdomains_over_area_bound);
 }
 
 void print_summary(std::FILE* out, const DecomposeArgs& args, const Decomposition& d, const Metrics& m) {
   const CommandLine& line = args.line;
   std::fprintf(out, "%s: %zu subdomains, %zu points, %zu segments (%u separator)\n", args.input.c_str(),
                d.subdomains.size(), d.points.size(), d.segments.size(), m.separator_segments);
-  std::fprintf(out, "  C1 new angles: min %s deg (bound %s), median %s, at boundary median %s\n", fig(m.angle_min).c_str(),
-               fig(m.min_angle_bound_deg).c_str(), fig(m.angle_median).c_str(), fig(m.boundary_angle_median).c_str());
+  std::fprintf(out, "  C1 new angles: min %s deg (bound %s), median %s, at boundary median %s\n",
+               fig(m.angle_min).c_str(), fig(m.min_angle_bound_deg).c_str(), fig(m.angle_median).c_str(),
+               fig(m.boundary_angle_median).c_str());
   std::fprintf(out, "  C2 separator length %s (%s x sqrt(area))\n", fig(m.separator_length, "%.6g").c_str(),
                fig(m.separator_length_norm, "%.4g").c_str());
   std::fprintf(out, "  C3 area max/mean %s, min/mean %s\n", fig(m.max_area_over_mean, "%.4f").c_str(),
@@ -96,7 +99,8 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
                  fig(m.angle_p10, "%.4f").c_str(), fig(m.angle_p90, "%.4f").c_str(), m.boundary_angles,
                  fig(m.boundary_angle_min, "%.4f").c_str());
     std::fprintf(out, "  separator per subdomain %s, max sep/area x sqrt(mean area) %s\n",
-                 fig(m.mean_separator_per_subdomain, "%.6g").c_str(), fig(m.max_separator_over_area_norm, "%.4f").c_str());
+                 fig(m.mean_separator_per_subdomain, "%.6g").c_str(),
+                 fig(m.max_separator_over_area_norm, "%.4f").c_str());
     std::fprintf(out, "  weight max/mean %s, min/mean %s; shortest new segment / sqrt(mean area) %s\n",
                  fig(m.max_weight_over_mean, "%.4f").c_str(), fig(m.min_weight_over_mean, "%.4f").c_str(),
                  fig(m.shortest_new_segment_norm, "%.4g").c_str());
@@ -108,8 +112,8 @@ void print_summary(std::FILE* out, const DecomposeArgs& args, const Decompositio
   if (!line.split_dir.empty()) {
     const auto n = static_cast<std::uint32_t>(d.subdomains.size());
     const std::string stem = stem_of(args.input);
-    std::fprintf(out, "  wrote %s/%s ... %s (%u files)\n", line.split_dir.c_str(),
-                 split_file_name(stem, 0, n).c_str(), split_file_name(stem, n - 1, n).c_str(), n);
+    std::fprintf(out, "  wrote %s/%s ... %s (%u files)\n", line.split_dir.c_str(), split_file_name(stem, 0, n).c_str(),
+                 split_file_name(stem, n - 1, n).c_str(), n);
   }
 }
 
@@ -155,9 +159,8 @@ int decompose_body(void* context) {
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
   DecomposeOptions options = with_background_files(line).decomposition;
-  if (progress.enabled()) options.progress = [&progress](std::uint32_t done, std::uint32_t target) {
-    progress.count(done, target);
-  };
+  if (progress.enabled())
+    options.progress = [&progress](std::uint32_t done, std::uint32_t target) { progress.count(done, target); };
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;
@@ -249,5 +252,5 @@ int run_decompose(int argc, char** argv) {
 const CommandRegistration registration({"decompose", "split a domain into N subdomains (the default mode)",
                                         run_decompose});
 
-} // namespace
-} // namespace madd::cli
+}  // namespace
+}  // namespace madd::cli

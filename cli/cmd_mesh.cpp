@@ -26,13 +26,12 @@ extern volatile std::sig_atomic_t writing_outputs;  // main.cpp: interrupts unwi
 
 namespace {
 
-constexpr const char* mesh_intro =
-    "usage: madd mesh [options] INPUT.poly\n\n"
-    "Decomposes the domain into N subdomains, splits every separator and boundary\n"
-    "piece once to the local size (the Delaunay decoupling), refines every subdomain\n"
-    "on its own thread with our Delaunay refinement (off-centres, small-angle rules)\n"
-    "and writes one conforming mesh, self-checked (verify_mesh) before anything is\n"
-    "written. The mesh is identical for any thread count.\n\n";
+constexpr const char* mesh_intro = "usage: madd mesh [options] INPUT.poly\n\n"
+                                   "Decomposes the domain into N subdomains, splits every separator and boundary\n"
+                                   "piece once to the local size (the Delaunay decoupling), refines every subdomain\n"
+                                   "on its own thread with our Delaunay refinement (off-centres, small-angle rules)\n"
+                                   "and writes one conforming mesh, self-checked (verify_mesh) before anything is\n"
+                                   "written. The mesh is identical for any thread count.\n\n";
 
 constexpr const char* mesh_exit_codes =
     "\nexit codes: 0 ok, 2 usage error, 3 bad input, 4 no decomposition, 5 output not written,\n"
@@ -102,5 +101,5 @@ int run_mesh(int argc, char** argv) {
 const CommandRegistration registration{
     {"mesh", "decompose and mesh every subdomain into one conforming quality mesh", run_mesh}};
 
-} // namespace
-} // namespace madd::cli
+}  // namespace
+}  // namespace madd::cli

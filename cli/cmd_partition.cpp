@@ -169,6 +169,6 @@ int run(int argc, char** argv) {
 
 const CommandRegistration registration({"partition", "partition a METIS graph file (gpmetis-compatible output)", run});
 
-} // namespace
+}  // namespace
 
-} // namespace madd::cli
+}  // namespace madd::cli

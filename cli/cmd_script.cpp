@@ -79,7 +79,8 @@ int run_script_command(int argc, char** argv) {
   // option, and a script whose name starts with '-' follows '--'.
   const CommandOptions& options = options_of("script");
   CommandLine line;
-  if (const auto done = read_command_line(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes))
+  if (const auto done =
+          read_command_line(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes))
     return *done;
   if (line.operands.size() != 1) return usage_error("script", "expected exactly one script file (or '-' for stdin)");
   ScriptArgs args{line.operands.front(), line.quiet};
@@ -89,5 +90,5 @@ int run_script_command(int argc, char** argv) {
 const CommandRegistration registration({"script", "run a script of maddi commands (read, set, dec, write...)",
                                         run_script_command});
 
-} // namespace
-} // namespace madd::cli
+}  // namespace
+}  // namespace madd::cli

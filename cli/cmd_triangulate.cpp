@@ -243,5 +243,5 @@ int run_triangulate(int argc, char** argv) {
 const CommandRegistration registration({"triangulate", "constrained Delaunay triangulation, Triangle's outputs",
                                         run_triangulate});
 
-} // namespace
-} // namespace madd::cli
+}  // namespace
+}  // namespace madd::cli

@@ -11,8 +11,9 @@ MeshOptions with_background_files(const CommandLine& line) {
     options.decomposition.weight_samples = read_background_samples(line.weights_file, SampleValue::weight);
   if (!line.areas_file.empty())
     options.decomposition.subdomain_area_samples = read_background_samples(line.areas_file, SampleValue::area);
-  if (!line.sizes_file.empty()) options.size.triangle_area_samples = read_background_samples(line.sizes_file, SampleValue::area);
+  if (!line.sizes_file.empty())
+    options.size.triangle_area_samples = read_background_samples(line.sizes_file, SampleValue::area);
   return options;
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -40,15 +40,15 @@ struct CommandLine {
   bool report = false;
   std::string report_file;  // --report=FILE; empty: on stdout
 
-  std::uint32_t parts = 0;  // partition: -k
-  long ufactor = 1;         // partition: METIS's default for -ptype=rb, 1.001
-  bool write_output = true;  // partition: not --nooutput
+  std::uint32_t parts = 0;         // partition: -k
+  long ufactor = 1;                // partition: METIS's default for -ptype=rb, 1.001
+  bool write_output = true;        // partition: not --nooutput
   bool resolve_crossings = false;  // triangulate -r
   bool subdomains_given = false;   // -n was given
   bool quiet = false, verbose = false, help = false;
 
-  std::vector<std::string> operands;     // the arguments that are no option, in order
-  std::map<std::string, Typed> typed;    // by option name: what the user typed, for messages
+  std::vector<std::string> operands;   // the arguments that are no option, in order
+  std::map<std::string, Typed> typed;  // by option name: what the user typed, for messages
 };
 
 // line.mesh with the background meshes the command line names read into the
@@ -57,4 +57,4 @@ struct CommandLine {
 // Throws what read_background_samples throws (bad input, exit 3).
 MeshOptions with_background_files(const CommandLine& line);
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -23,9 +23,10 @@ constexpr OptionUse decompose_uses[] = {
     {"smoothing", "smoothing iterations, Sec. 5.1 (default 1; 0 = off)"},
     {"rebalance", "re-split subdomains above X x the mean area with their\n"
                   "neighbours (default 1.2; 0 = off; uniform or --weights runs)"},
-    {"gradation", "grade by the boundary density weights (vertex attribute 1):\n"
-                  "a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
-                  "(-a A is deprecated here: madd mesh's -a is the largest triangle area)",
+    {"gradation",
+     "grade by the boundary density weights (vertex attribute 1):\n"
+     "a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
+     "(-a A is deprecated here: madd mesh's -a is the largest triangle area)",
      deprecated},
     {"adaptive-refine", "graded by boundary weights: heavier edges get up to L times\n"
                         "more refinement points (default 4; 1 = uniform; 1 <= L <= 64)"},
@@ -40,16 +41,18 @@ constexpr OptionUse decompose_uses[] = {
     {"time-limit", "give up (exit 6, nothing written) after S seconds (default 0 = none)"},
     {"max-memory", "give up (exit 6, nothing written) above MB megabytes resident\n"
                    "(default 0 = none; checked before every split)"},
-    {"max-area", "write the outputs with every segment split for meshes of\n"
-                 "triangle area <= A (the decoupling, docs/mesh.md): --split's\n"
-                 "files, meshed one by one by `triangle -pq30Y`, join up",
+    {"max-area",
+     "write the outputs with every segment split for meshes of\n"
+     "triangle area <= A (the decoupling, docs/mesh.md): --split's\n"
+     "files, meshed one by one by `triangle -pq30Y`, join up",
      none},
     {"size-fn", "the same, the largest area at (x, y) given by EXPR"},
     {"no-verify", "skip the self-check (verify_decomposition) before writing"},
     {nullptr, ""},
     {nullptr, "outputs (none by default; see docs/formats.md):"},
-    {"output", "the whole decomposition as one .poly, one region per subdomain\n"
-               "(per face: with the input's regions, their attributes)",
+    {"output",
+     "the whole decomposition as one .poly, one region per subdomain\n"
+     "(per face: with the input's regions, their attributes)",
      usual, "FILE.poly"},
     {"split", "one .poly per subdomain: DIR/<stem>-<k>.poly"},
     {"subdomains-file", "the paper's subdomain file"},
@@ -146,7 +149,7 @@ const CommandOptions commands[] = {
     {"script", script_uses, 25},       {"check", check_uses, 16}, {"triangulate", triangulate_uses, 23},
 };
 
-} // namespace
+}  // namespace
 
 const CommandOptions& options_of(std::string_view command) {
   for (const CommandOptions& c : commands)
@@ -156,4 +159,4 @@ const CommandOptions& options_of(std::string_view command) {
 
 std::span<const CommandOptions> command_options() { return commands; }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -11,12 +11,12 @@ namespace madd::cli {
 // Exit codes, documented in `madd --help` and docs/cli.md.
 enum ExitCode : int {
   exit_ok = 0,
-  exit_usage = 2,          // bad command line
-  exit_bad_input = 3,      // unreadable or invalid input file
+  exit_usage = 2,             // bad command line
+  exit_bad_input = 3,         // unreadable or invalid input file
   exit_decompose_failed = 4,  // no valid decomposition exists at these settings
-  exit_io = 5,             // an output could not be written
-  exit_limit = 6,          // --time-limit or --max-memory reached
-  exit_internal = 70,      // a bug: an unexpected exception or failed self-check
+  exit_io = 5,                // an output could not be written
+  exit_limit = 6,             // --time-limit or --max-memory reached
+  exit_internal = 70,         // a bug: an unexpected exception or failed self-check
 };
 
 using CommandFn = int (*)(int argc, char** argv);
@@ -64,4 +64,4 @@ std::optional<int> read_command_line(const CommandOptions& options, int argc, ch
 
 const char* version_string() noexcept;
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -16,4 +16,4 @@ inline void on_interrupts(void (*handler)(int)) {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

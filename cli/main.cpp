@@ -31,24 +31,22 @@ std::map<std::string, Command>& commands() {
 }
 
 void print_help() {
-  std::printf(
-      "madd %s - Medial Axis Domain Decomposition for parallel mesh generation\n\n"
-      "usage: madd [options] INPUT.poly          decompose (the default mode; see madd decompose --help)\n"
-      "       madd COMMAND [options] ARGS...\n"
-      "       madd help [COMMAND] | --help | --version\n\n"
-      "commands:\n",
-      version_string());
+  std::printf("madd %s - Medial Axis Domain Decomposition for parallel mesh generation\n\n"
+              "usage: madd [options] INPUT.poly          decompose (the default mode; see madd decompose --help)\n"
+              "       madd COMMAND [options] ARGS...\n"
+              "       madd help [COMMAND] | --help | --version\n\n"
+              "commands:\n",
+              version_string());
   for (const auto& [name, command] : commands()) std::printf("  %-12s %s\n", name.c_str(), command.summary);
-  std::printf(
-      "\nEach command takes --help (or: madd help COMMAND).\n\n"
-      "exit codes:\n"
-      "  0   success\n"
-      "  2   usage error (bad command line)\n"
-      "  3   bad input (unreadable, malformed or invalid file; the message says path:line:column)\n"
-      "  4   decomposition failed (no split meets the minimum angle; names the subdomain)\n"
-      "  5   an output file could not be written\n"
-      "  6   a resource limit was reached\n"
-      "  70  internal error (a bug: please report it with the input)\n");
+  std::printf("\nEach command takes --help (or: madd help COMMAND).\n\n"
+              "exit codes:\n"
+              "  0   success\n"
+              "  2   usage error (bad command line)\n"
+              "  3   bad input (unreadable, malformed or invalid file; the message says path:line:column)\n"
+              "  4   decomposition failed (no split meets the minimum angle; names the subdomain)\n"
+              "  5   an output file could not be written\n"
+              "  6   a resource limit was reached\n"
+              "  70  internal error (a bug: please report it with the input)\n");
 }
 // SIGINT/SIGTERM: nothing partial may stay on disk (docs/hostile.md). When
 // no output is being written, exit at once (128 + signal): the result only
@@ -130,7 +128,7 @@ const char* mistyped_command(const std::string& word) {
   consider("help");
   return best;
 }
-} // namespace
+}  // namespace
 
 CommandRegistration::CommandRegistration(Command command) { commands()[command.name] = command; }
 
@@ -166,7 +164,7 @@ int run_guarded(const char* command, int (*body)(void*), void* context) {
   }
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli
 
 int main(int argc, char** argv) {
   using namespace madd::cli;

@@ -30,7 +30,7 @@ std::string option_problem(const CommandLine& line) {
   return {};
 }
 
-} // namespace
+}  // namespace
 
 std::span<const char* const> whole_mesh_file_options() { return whole_mesh_only; }
 
@@ -45,7 +45,7 @@ std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool req
   if (!line.subdomains_given) {
     if (require_subdomains) return "-n N is required (the mesh depends on N, and must not depend on the rank count)";
     const unsigned t = line.mesh.decomposition.threads ? line.mesh.decomposition.threads
-                                                        : std::max(1u, std::thread::hardware_concurrency());
+                                                       : std::max(1u, std::thread::hardware_concurrency());
     line.mesh.decomposition.subdomains = 4 * t;
   }
   args.prefix = line.output;
@@ -57,4 +57,4 @@ std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool req
   return option_problem(line);
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -31,7 +31,6 @@ std::span<const char* const> whole_mesh_file_options();
 // defaults to 4 x the thread count. `whole_mesh_files`: --neigh, --edge,
 // --msh and --split-mesh are taken (the single-process tool); else they are
 // refused as not available here.
-std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool require_subdomains,
-                                 bool whole_mesh_files);
+std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool require_subdomains, bool whole_mesh_files);
 
-} // namespace madd::cli
+}  // namespace madd::cli

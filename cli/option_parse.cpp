@@ -62,7 +62,7 @@ bool is_declined(std::span<const char* const> declined, const char* name) {
   return std::any_of(declined.begin(), declined.end(), [&](const char* d) { return std::string_view(d) == name; });
 }
 
-} // namespace
+}  // namespace
 
 std::string parse_command_line(const CommandOptions& command, int argc, char** argv, CommandLine& line,
                                std::span<const char* const> declined) {
@@ -146,7 +146,7 @@ std::string in_cli_words(const std::string& text, Scope scope, const CommandOpti
   return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string cli_message(const OptionError& error, Scope scope, const CommandOptions& command, const CommandLine& line,
                         bool with_value) {
@@ -162,4 +162,4 @@ std::string cli_message(const OptionError& error, Scope scope, const CommandOpti
   return message;
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -19,9 +19,7 @@ using Text = const char*;
 using Flag = const std::string&;
 
 // "--seed needs a whole number, got 'x'".
-std::string refused(Flag flag, const char* what, Text value) {
-  return flag + " " + what + ", got '" + value + "'";
-}
+std::string refused(Flag flag, const char* what, Text value) { return flag + " " + what + ", got '" + value + "'"; }
 
 std::string number(Text value, Flag flag, double& target) {
   double x = 0;
@@ -258,7 +256,7 @@ constexpr Option rows[] = {
     {"help", 'h', none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { return switch_on(l.help); }},
 };
 
-} // namespace
+}  // namespace
 
 std::span<const Option> option_table() { return rows; }
 
@@ -268,4 +266,4 @@ const Option* find_option(std::string_view name) {
   return nullptr;
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -26,8 +26,8 @@ using Setter = std::string (*)(CommandLine& line, const char* value, const std::
 
 // One row of the table.
 struct Option {
-  const char* name;   // the long flag without "--": "min-angle"
-  char letter;        // the short flag ('n' for -n), 0 without one; a command may not take it (Letter)
+  const char* name;  // the long flag without "--": "min-angle"
+  char letter;       // the short flag ('n' for -n), 0 without one; a command may not take it (Letter)
   Arity arity;
   const char* value;  // the value's name in the help ("DEG"), nullptr without a value
   Scope scope;
@@ -86,7 +86,7 @@ std::string parse_command_line(const CommandOptions& command, int argc, char** a
 // the fields its requirement names as their long flags; with ", got 'VALUE'"
 // when `with_value` and the option was typed. A field no option of the
 // command sets keeps its name.
-std::string cli_message(const OptionError& error, Scope scope, const CommandOptions& command,
-                        const CommandLine& line, bool with_value = true);
+std::string cli_message(const OptionError& error, Scope scope, const CommandOptions& command, const CommandLine& line,
+                        bool with_value = true);
 
-} // namespace madd::cli
+}  // namespace madd::cli

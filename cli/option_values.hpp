@@ -23,4 +23,4 @@ inline bool parse_count(const char* text, unsigned long long limit, unsigned lon
   return *end == '\0' && errno == 0 && value <= limit;
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -13,4 +13,4 @@ namespace madd::cli {
 // input (InvalidInputError naming the file).
 Triangulation triangulate_points(const Pslg& points, const std::string& path);
 
-} // namespace madd::cli
+}  // namespace madd::cli

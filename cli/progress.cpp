@@ -39,4 +39,4 @@ void Progress::show(const std::string& text) {
   shown_ = true;
 }
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -34,4 +34,4 @@ private:
   std::chrono::steady_clock::time_point phase_start_ = std::chrono::steady_clock::now(), last_count_;
 };
 
-} // namespace madd::cli
+}  // namespace madd::cli

@@ -45,11 +45,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const madd::Decomposition d = madd::decompose(file.pslg, options);
     const madd::Verification check = madd::verify_decomposition(d, file.pslg, options.subdomains);
     if (!check.ok()) {
-      std::fprintf(stderr, "verify_decomposition (N=%u, Phi0=%g): %s\n", options.subdomains, options.separator_angle_deg,
-                   check.problems.front().c_str());
+      std::fprintf(stderr, "verify_decomposition (N=%u, Phi0=%g): %s\n", options.subdomains,
+                   options.separator_angle_deg, check.problems.front().c_str());
       std::abort();
     }
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   return 0;
 }

@@ -25,7 +25,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const madd::ParseError& error) {
     // Columns point into the text (one past its end for "unexpected end").
     if (error.line() != 1 || error.column() < 1 || error.column() > size + 1) std::abort();
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   return 0;
 }

@@ -88,8 +88,9 @@ double sharp_corner_triangles(const madd::Pslg& p) {
 [[noreturn]] void fail(const madd::MeshOptions& o, const char* what) {
   std::fprintf(stderr,
                "fuzz_mesh (N=%u, q=%g, max_area=%g, Phi0=%g, threads=%u, off_centres=%d, balance_by_work=%d): %s\n",
-               o.decomposition.subdomains, o.size.min_triangle_angle_deg, o.size.max_triangle_area, o.decomposition.separator_angle_deg,
-               o.decomposition.threads, o.off_centres ? 1 : 0, o.balance_by_work ? 1 : 0, what);
+               o.decomposition.subdomains, o.size.min_triangle_angle_deg, o.size.max_triangle_area,
+               o.decomposition.separator_angle_deg, o.decomposition.threads, o.off_centres ? 1 : 0,
+               o.balance_by_work ? 1 : 0, what);
   std::abort();
 }
 
@@ -98,7 +99,8 @@ void check_properties(const madd::Mesh& m, const madd::MeshOptions& o) {
   for (const auto& t : m.triangles) {
     const madd::Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
     if (!(madd::orient2d(a, b, c) > 0)) fail(o, "a triangle is not strictly counter-clockwise");
-    if (madd::detail::smallest_angle_deg(a, b, c) < o.size.min_triangle_angle_deg - madd::detail::mesh_angle_slack_deg) ++below;
+    if (madd::detail::smallest_angle_deg(a, b, c) < o.size.min_triangle_angle_deg - madd::detail::mesh_angle_slack_deg)
+      ++below;
   }
   if (below != m.shortfall.total()) {
     std::fprintf(stderr, "%zu triangles below the bound, shortfall total %zu\n", below, m.shortfall.total());
@@ -106,7 +108,7 @@ void check_properties(const madd::Mesh& m, const madd::MeshOptions& o) {
   }
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
@@ -132,9 +134,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double area = madd::domain_area(file.pslg);
     options.size.max_triangle_area = area * area_fractions[k2 % 4];
     if (!std::isfinite(options.size.max_triangle_area)) return 0;
-    const double wanted = std::max(options.size.max_triangle_area > 0 ? area / options.size.max_triangle_area : 0.0,
-                                   4.0 * boundary_pieces(file.pslg, options.size.max_triangle_area) +
-                                       sharp_corner_triangles(file.pslg));
+    const double wanted =
+        std::max(options.size.max_triangle_area > 0 ? area / options.size.max_triangle_area : 0.0,
+                 4.0 * boundary_pieces(file.pslg, options.size.max_triangle_area) + sharp_corner_triangles(file.pslg));
     if (!(wanted <= 2e4)) return 0;
     const madd::Mesh m = madd::mesh(file.pslg, options);
     check_properties(m, options);
@@ -145,7 +147,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   } catch (const madd::InternalError& e) {
     fail(options, e.what());
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   return 0;
 }

@@ -44,7 +44,7 @@ void check(const madd::Graph& g, const madd::BisectOptions& options) {
     std::abort();
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
@@ -63,7 +63,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const madd::Partition p = madd::partition(g, 3);
     if (p.part.size() != g.vertex_count()) std::abort();
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   return 0;
 }

@@ -24,8 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (summary.interior_segments + summary.boundary_segments + summary.outside_segments != file.pslg.segments.size())
       std::abort();
     if (summary.isolated_inside > summary.isolated_vertices) std::abort();
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   try {
     madd::validate(file.pslg, file.source);
     if (!pslg) std::abort();  // every domain is a PSLG
@@ -33,7 +32,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string written = madd::format_poly(file.pslg);
     if (madd::parse_poly(written, "roundtrip.poly").pslg != file.pslg) std::abort();
     (void)madd::domain_area(file.pslg);
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   return 0;
 }

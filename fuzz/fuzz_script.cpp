@@ -26,7 +26,7 @@ void refuse_costly(const madd::DecomposeOptions& o) {
     throw madd::OptionError("options", "outside the fuzzing sandbox (r <= 8, s <= 4, j = 1)");
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
@@ -40,8 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     madd::run_script(text, "fuzz.txt", context);
   } catch (const madd::ParseError& e) {
     if (e.path() != "fuzz.txt" || e.line() < 1) std::abort();  // every script error names its line
-  } catch (const madd::Error&) {
-  }
+  } catch (const madd::Error&) {}
   if (context.decomposition) {
     const madd::Decomposition& d = *context.decomposition;
     const auto n = static_cast<std::uint32_t>(d.subdomains.size());

@@ -40,7 +40,7 @@ bool identical(const madd::Triangulation& a, const madd::Triangulation& b) {
           std::memcmp(a.attributes.data(), b.attributes.data(), a.attributes.size() * sizeof(double)) == 0);
 }
 
-} // namespace
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::uint8_t mode = size > 0 && data[0] < 16 ? data[0] : 0;

@@ -17,7 +17,7 @@ void replay_file(const std::filesystem::path& path) {
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   std::size_t count = 0;

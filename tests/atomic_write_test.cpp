@@ -45,7 +45,7 @@ std::size_t entries(const fs::path& dir) {
 
 bool stale(const std::string& name) { return name.rfind("old-", 0) == 0; }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("atomic write") {
 
@@ -113,4 +113,4 @@ TEST_CASE("a path named twice in one set is refused before anything is written")
   CHECK_FALSE(fs::exists(s.dir / "a.txt"));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("atomic write")

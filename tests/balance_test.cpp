@@ -34,7 +34,7 @@ madd::Metrics checked(const Pslg& domain, std::uint32_t n, double min_angle = 60
   return madd::test::checked_decomposition(domain, n, min_angle);
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("balance") {
 
@@ -152,7 +152,7 @@ TEST_CASE("the archipelago: within 1.25 at every N and Phi0 the sweep uses") {
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("balance")
 
 TEST_CASE("rebalancing works on background weights too: the heaviest subdomain comes down, every rule kept") {
   // Weights concentrated in one corner of the pipe (a dense coastline, say):

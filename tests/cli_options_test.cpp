@@ -67,7 +67,7 @@ std::string problem_of(const std::string& output, const std::string& command) {
   return output.substr(from, output.find('\n', from) - from);
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("cli options") {
 
@@ -150,16 +150,18 @@ TEST_CASE("every option decompose and mesh share is taken by both commands") {
   const CliSandbox box;
   // A value on key.poly for each shared option (a new shared option needs one here).
   const std::map<std::string, std::string> value = {
-      {"subdomains", " 3"},      {"min-angle", " 50"},  {"threads", " 2"},       {"seed", " 7"},
-      {"rebalance", " 1.5"},     {"time-limit", " 60"}, {"max-memory", " 4000"}, {"max-area", " 0.05"},
-      {"size-fn", " 0.05+x*x"},  {"output", " o"},      {"report", "=r.json"},   {"no-verify", ""},
-      {"quiet", ""},             {"help", ""}};
+      {"subdomains", " 3"},    {"min-angle", " 50"},  {"threads", " 2"},
+      {"seed", " 7"},          {"rebalance", " 1.5"}, {"time-limit", " 60"},
+      {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
+      {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
+      {"quiet", ""},           {"help", ""}};
   const madd::cli::CommandOptions& mesh = madd::cli::options_of("mesh");
   int shared = 0;
   for (const madd::cli::OptionUse& use : madd::cli::options_of("decompose").uses) {
     if (use.name == nullptr) continue;
     bool in_mesh = false;
-    for (const madd::cli::OptionUse& m : mesh.uses) in_mesh = in_mesh || (m.name != nullptr && std::string(m.name) == use.name);
+    for (const madd::cli::OptionUse& m : mesh.uses)
+      in_mesh = in_mesh || (m.name != nullptr && std::string(m.name) == use.name);
     if (!in_mesh) continue;
     CAPTURE(use.name);
     ++shared;
@@ -270,6 +272,6 @@ TEST_CASE("the set of outputs is all or nothing: a failed write leaves no output
   CHECK_MESSAGE(contains(twice.output, "is named by two outputs"), twice.output);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("cli options")
 
 #endif

@@ -55,7 +55,8 @@ int exit_status(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -
 
 // Runs `madd ARGS` (ARGS is shell text) in `dir`; captures stdout and stderr.
 Result run_madd(const Scratch& dir, const std::string& args) {
-  const std::string command = "cd '" + dir.path.string() + "' && '" MADD_CLI_PATH "' " + args + " > stdout.txt 2> stderr.txt";
+  const std::string command =
+      "cd '" + dir.path.string() + "' && '" MADD_CLI_PATH "' " + args + " > stdout.txt 2> stderr.txt";
   Result r;
   r.code = exit_status(std::system(command.c_str()));
   r.out = slurp(dir / "stdout.txt");
@@ -100,13 +101,13 @@ std::string node_file(const std::vector<madd::Point>& points) {
 
 // The unit square's corners, edge midpoints and a few inner points.
 std::vector<madd::Point> square_points() {
-  return {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5},
-          {0.3, 0.4}, {0.7, 0.2}, {0.6, 0.8}, {0.25, 0.75}, {0.5, 0.5}};
+  return {{0, 0},   {1, 0},     {1, 1},     {0, 1},     {0.5, 0},     {1, 0.5},  {0.5, 1},
+          {0, 0.5}, {0.3, 0.4}, {0.7, 0.2}, {0.6, 0.8}, {0.25, 0.75}, {0.5, 0.5}};
 }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("cli") {
 
@@ -166,11 +167,12 @@ TEST_CASE("partition: -q, and gpmetis's -name=value options") {
   const std::string expected = slurp(dir / "g.metis.part.4");
   fs::remove(dir / "g.metis.part.4");
   const Result gp = run_madd(dir, "partition -ptype=rb -ufactor=30 -seed=7 -contig -niter=3 -objtype=cut "
-                              "-ctype=shem -iptype=grow -no2hop g.metis 4 -q");
+                                  "-ctype=shem -iptype=grow -no2hop g.metis 4 -q");
   CHECK_MESSAGE(gp.code == 0, gp.err);
   CHECK(slurp(dir / "g.metis.part.4") == expected);
   fs::remove(dir / "g.metis.part.4");
-  CHECK(run_madd(dir, "partition g.metis 4 -q -ufactor 30 -seed 7 -contig -niter 3").code == 0);  // gpmetis accepts a space too
+  CHECK(run_madd(dir, "partition g.metis 4 -q -ufactor 30 -seed 7 -contig -niter 3").code ==
+        0);  // gpmetis accepts a space too
   CHECK(slurp(dir / "g.metis.part.4") == expected);
   fs::remove(dir / "g.metis.part.4");
   // A different seed or ufactor changes the input to the bisector (not necessarily the result),
@@ -186,8 +188,8 @@ TEST_CASE("partition: -q, and gpmetis's -name=value options") {
   CHECK(run_madd(dir, "partition -help").out == run_madd(dir, "partition --help").out);
 
   // gpmetis options madd cannot honour are refused by name, with nothing written.
-  for (const char* refused : {"-ptype=kway", "-objtype=vol", "-ctype=rm", "-iptype=random", "-minconn",
-                              "-tpwgts=t.txt", "-ubvec=1.05", "-ncuts=4", "-dbglvl=1"}) {
+  for (const char* refused : {"-ptype=kway", "-objtype=vol", "-ctype=rm", "-iptype=random", "-minconn", "-tpwgts=t.txt",
+                              "-ubvec=1.05", "-ncuts=4", "-dbglvl=1"}) {
     CAPTURE(refused);
     const Result r = run_madd(dir, std::string("partition g.metis 4 ") + refused);
     CHECK(r.code == 2);
@@ -245,10 +247,13 @@ TEST_CASE("triangulate: a .poly without segments is a point set, as a .node is")
   CHECK(!fs::exists(dir / "h.1.ele"));
 }
 
-TEST_CASE("mesh: writes every format asked for, the same for -j 1 and -j 2, and refuses bad options with nothing written") {
+TEST_CASE(
+    "mesh: writes every format asked for, the same for -j 1 and -j 2, and refuses bad options with nothing written") {
   const Scratch dir("mesh");
   const std::string pipe = "'" MADD_DATA_DIR "/pipe.poly'";
-  const Result one = run_madd(dir, "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 1 -o one --msh --vtu --neigh --edge --split-mesh parts --report=r.json");
+  const Result one = run_madd(
+      dir,
+      "mesh " + pipe + " -n 4 -q 30 -a 0.02 -j 1 -o one --msh --vtu --neigh --edge --split-mesh parts --report=r.json");
   REQUIRE_MESSAGE(one.code == 0, one.err);
   CHECK(has(one.out, "4 subdomains"));
   for (const char* ext : {".node", ".ele", ".neigh", ".edge", ".msh", ".vtu"}) {
@@ -441,6 +446,6 @@ TEST_CASE("the progress line counts subdomains and time on a terminal, and is cl
   CHECK((error == 0 || bad_text.compare(error - 4, 4, "\r\033[K") == 0 || bad_text[error - 1] == '\n'));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("cli")
 
 #endif

@@ -108,7 +108,8 @@ void check_decomposition(const Decomposition& d, const Pslg& domain, std::uint32
   for (const madd::Subdomain& s : d.subdomains) {
     for (const std::uint32_t seg : s.interior_segments) {
       ++interior[seg];
-      for (const auto& [at, far] : {std::pair{d.segments[seg].a, d.segments[seg].b}, std::pair{d.segments[seg].b, d.segments[seg].a}}) {
+      for (const auto& [at, far] :
+           {std::pair{d.segments[seg].a, d.segments[seg].b}, std::pair{d.segments[seg].b, d.segments[seg].a}}) {
         for (const std::uint32_t w : separators_at[at])
           CHECK(madd::degrees(madd::angle_at(d.points[at], d.points[far], d.points[w])) >= phi - 1e-7);
       }
@@ -148,7 +149,7 @@ std::vector<std::string> data_files() {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("decompose") {
 
@@ -301,4 +302,4 @@ TEST_CASE("bad options are rejected") {
   CHECK_THROWS_AS(madd::decompose(square, o), madd::OptionError);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("decompose")

@@ -27,4 +27,4 @@ inline Metrics checked_decomposition(const Pslg& domain, std::uint32_t n, double
   return m;
 }
 
-} // namespace madd::test
+}  // namespace madd::test

@@ -77,7 +77,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 bool starts_with(const std::string& s, const std::string& head) { return s.rfind(head, 0) == 0; }
 
 bool is_word_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0 || std::string_view("_./-<>*${}\\").find(c) != std::string_view::npos;
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+         std::string_view("_./-<>*${}\\").find(c) != std::string_view::npos;
 }
 
 // A part of the word that is one capital letter alone (`pipe-N.svg`, `a/K/b`).
@@ -92,9 +93,9 @@ bool has_placeholder_letter(const std::string& w) {
 }
 
 const std::vector<std::string> top_level_folders = {"src/", "include/", "cli/", "tests/", "fuzz/", "data/", "docs/"};
-const std::vector<std::string> include_prefixes = {"madd/",  "kernel/", "pslg/", "triangulation/", "graph/", "medial/",
-                                                   "subdivision/", "split/", "decompose/", "quality/", "output/",
-                                                   "script/"};
+const std::vector<std::string> include_prefixes = {"madd/",      "kernel/",  "pslg/",        "triangulation/",
+                                                   "graph/",     "medial/",  "subdivision/", "split/",
+                                                   "decompose/", "quality/", "output/",      "script/"};
 
 // True when `w` is a file name ending in `ext` (not the extension alone).
 bool names_file_with(const std::string& w, const std::string& ext) {
@@ -113,8 +114,8 @@ std::vector<fs::path> roots_for(const std::string& w, const fs::path& folder) {
   if (names_file_with(w, ".md")) return {folder, "."};
   if (names_file_with(w, ".cpp") || names_file_with(w, ".hpp") || names_file_with(w, ".h")) {
     const bool bare = w.find('/') == std::string::npos;
-    const bool include_style =
-        std::any_of(include_prefixes.begin(), include_prefixes.end(), [&](const std::string& p) { return starts_with(w, p); });
+    const bool include_style = std::any_of(include_prefixes.begin(), include_prefixes.end(),
+                                           [&](const std::string& p) { return starts_with(w, p); });
     if (bare || include_style) return {folder, ".", "include", "include/madd", "src"};
   }
   return {};
@@ -235,44 +236,44 @@ std::string joined(const std::vector<std::string>& lines) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("docs") {
-  TEST_CASE("the reference rule flags missing files and leaves example outputs alone") {
-    const fs::path root = source_root;
-    const auto count = [&](const char* rel, const char* text) { return dangling_references(root, rel, text).size(); };
-    // Files a user's clone does not have, or that moved.
-    CHECK(count("src/pslg/validate.cpp", "// the rules (FORMATS.md, \"Bad input\")") == 1);
-    CHECK(count("include/madd/metrics.hpp", "// docs/QUALITY.md") == 1);
-    CHECK(count("docs/algorithm.md", "see `src/split_round.cpp`.") == 1);
-    CHECK(count("src/split/chord.cpp", "// the rule of split_chord.hpp") == 1);
-    CHECK(count("docs/api.md", "[formats](FORMATS.md) ![](img/none.svg)") == 2);
-    CHECK(count("src/split/split.cpp", "// see formats.md") == 1);  // from src/, it is docs/formats.md
-    CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"No such section\")") == 1);
-    CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"Bad input\"), `docs/quality.md` \"Phase times\"") == 0);
-    // What exists, named as the file's folder, the root or the includes see it.
-    CHECK(count("docs/api.md", "[formats.md](formats.md), `docs/formats.md`, ![](img/pipe-64.svg), [x](#anchor)") == 0);
-    CHECK(count("src/split/split.cpp", "// chord.hpp, split/chord.hpp, madd/metrics.hpp, docs/algorithm.md.") == 0);
-    CHECK(count("README.md", "`data/pipe.poly`, include/madd/, [`docs/cli.md`](docs/cli.md), https://x.org/y.md") == 0);
-    // Outputs of examples, placeholders and other machines are not references.
-    CHECK(count("README.md", "--svg build/pipe.svg --split parts/ parts/pipe-0.poly out.svg") == 0);
-    CHECK(count("docs/algorithm.md", "--svg docs/img/pipe-N.svg, tests/<concept>_test.cpp, $dir/docs/x.md") == 0);
-    CHECK(count("docs/performance.md", "shared/peers/cgal_cdt.cpp, /usr/include/doctest/doctest.h, <sys/wait.h>") == 0);
-  }
-
-  TEST_CASE("every file the docs and comments refer to exists") {
-    const fs::path root = source_root;
-    std::vector<std::string> dangling;
-    const std::vector<fs::path> files = scanned_files(root);
-    CHECK(files.size() > 100);
-    for (const fs::path& rel : files) {
-      if (rel == "tests/docs_test.cpp") continue;  // names missing files on purpose, as test data
-      const std::vector<std::string> found = dangling_references(root, rel, slurp(root / rel));
-      dangling.insert(dangling.end(), found.begin(), found.end());
-    }
-    CHECK_MESSAGE(dangling.empty(), dangling.size() << " dangling references:\n" << joined(dangling));
-  }
+TEST_CASE("the reference rule flags missing files and leaves example outputs alone") {
+  const fs::path root = source_root;
+  const auto count = [&](const char* rel, const char* text) { return dangling_references(root, rel, text).size(); };
+  // Files a user's clone does not have, or that moved.
+  CHECK(count("src/pslg/validate.cpp", "// the rules (FORMATS.md, \"Bad input\")") == 1);
+  CHECK(count("include/madd/metrics.hpp", "// docs/QUALITY.md") == 1);
+  CHECK(count("docs/algorithm.md", "see `src/split_round.cpp`.") == 1);
+  CHECK(count("src/split/chord.cpp", "// the rule of split_chord.hpp") == 1);
+  CHECK(count("docs/api.md", "[formats](FORMATS.md) ![](img/none.svg)") == 2);
+  CHECK(count("src/split/split.cpp", "// see formats.md") == 1);  // from src/, it is docs/formats.md
+  CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"No such section\")") == 1);
+  CHECK(count("src/pslg/validate.cpp", "// (docs/formats.md, \"Bad input\"), `docs/quality.md` \"Phase times\"") == 0);
+  // What exists, named as the file's folder, the root or the includes see it.
+  CHECK(count("docs/api.md", "[formats.md](formats.md), `docs/formats.md`, ![](img/pipe-64.svg), [x](#anchor)") == 0);
+  CHECK(count("src/split/split.cpp", "// chord.hpp, split/chord.hpp, madd/metrics.hpp, docs/algorithm.md.") == 0);
+  CHECK(count("README.md", "`data/pipe.poly`, include/madd/, [`docs/cli.md`](docs/cli.md), https://x.org/y.md") == 0);
+  // Outputs of examples, placeholders and other machines are not references.
+  CHECK(count("README.md", "--svg build/pipe.svg --split parts/ parts/pipe-0.poly out.svg") == 0);
+  CHECK(count("docs/algorithm.md", "--svg docs/img/pipe-N.svg, tests/<concept>_test.cpp, $dir/docs/x.md") == 0);
+  CHECK(count("docs/performance.md", "shared/peers/cgal_cdt.cpp, /usr/include/doctest/doctest.h, <sys/wait.h>") == 0);
 }
+
+TEST_CASE("every file the docs and comments refer to exists") {
+  const fs::path root = source_root;
+  std::vector<std::string> dangling;
+  const std::vector<fs::path> files = scanned_files(root);
+  CHECK(files.size() > 100);
+  for (const fs::path& rel : files) {
+    if (rel == "tests/docs_test.cpp") continue;  // names missing files on purpose, as test data
+    const std::vector<std::string> found = dangling_references(root, rel, slurp(root / rel));
+    dangling.insert(dangling.end(), found.begin(), found.end());
+  }
+  CHECK_MESSAGE(dangling.empty(), dangling.size() << " dangling references:\n" << joined(dangling));
+}
+}  // TEST_SUITE("docs")
 
 // ---------------------------------------------------------------------------
 // 1b. docs/api.md lists the whole public API.
@@ -303,32 +304,32 @@ std::vector<std::string> public_names(const std::string& text) {
   return names;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("docs") {
-  TEST_CASE("docs/api.md names every public header and every type and function they declare") {
-    const std::string api = slurp(source_root / "docs/api.md");
-    const auto named = [&](const std::string& name) {
-      for (std::size_t at = api.find('`' + name); at != std::string::npos; at = api.find('`' + name, at + 1)) {
-        const std::size_t end = at + 1 + name.size();
-        if (end < api.size() && !(std::isalnum(static_cast<unsigned char>(api[end])) || api[end] == '_')) return true;
-      }
-      return false;
-    };
-    std::vector<std::string> missing;
-    std::size_t names = 0;
-    for (const auto& e : fs::directory_iterator(source_root / "include/madd")) {
-      const std::string header = "madd/" + e.path().filename().string();
-      if (!named(header)) missing.push_back(header);
-      for (const std::string& name : public_names(slurp(e.path()))) {
-        ++names;
-        if (!named(name)) missing.push_back(header + ": " + name);
-      }
+TEST_CASE("docs/api.md names every public header and every type and function they declare") {
+  const std::string api = slurp(source_root / "docs/api.md");
+  const auto named = [&](const std::string& name) {
+    for (std::size_t at = api.find('`' + name); at != std::string::npos; at = api.find('`' + name, at + 1)) {
+      const std::size_t end = at + 1 + name.size();
+      if (end < api.size() && !(std::isalnum(static_cast<unsigned char>(api[end])) || api[end] == '_')) return true;
     }
-    CHECK(names > 150);  // the reader found the declarations
-    CHECK_MESSAGE(missing.empty(), "not in docs/api.md:\n" << joined(missing));
+    return false;
+  };
+  std::vector<std::string> missing;
+  std::size_t names = 0;
+  for (const auto& e : fs::directory_iterator(source_root / "include/madd")) {
+    const std::string header = "madd/" + e.path().filename().string();
+    if (!named(header)) missing.push_back(header);
+    for (const std::string& name : public_names(slurp(e.path()))) {
+      ++names;
+      if (!named(name)) missing.push_back(header + ": " + name);
+    }
   }
+  CHECK(names > 150);  // the reader found the declarations
+  CHECK_MESSAGE(missing.empty(), "not in docs/api.md:\n" << joined(missing));
 }
+}  // TEST_SUITE("docs")
 
 // ---------------------------------------------------------------------------
 // 2. The figures the docs quote, recomputed with the CLI built from this tree.
@@ -427,13 +428,16 @@ struct QuotedRun {
 };
 
 const std::vector<QuotedRun> quoted_runs = {
-    {"README.md", "madd data/pipe.poly -n 64 --svg pipe.svg",
+    {"README.md",
+     "madd data/pipe.poly -n 64 --svg pipe.svg",
      "minimum new angle 65.2°, median 93.0°, largest area / mean 1.07",
      {"angle_min", "angle_median", "max_area_over_mean"}},
-    {"docs/algorithm.md", "madd data/key.poly -n 200 --min-angle 70 --svg docs/img/key-200-phi70.svg",
+    {"docs/algorithm.md",
+     "madd data/key.poly -n 200 --min-angle 70 --svg docs/img/key-200-phi70.svg",
      "minimum new angle 70.2°, median 94.3°, largest area / mean 1.16",
      {"angle_min", "angle_median", "max_area_over_mean"}},
-    {"docs/grading.md", "madd docs/img/grading-key-weights.poly -n 64 --gradation 3 -p 0.5 --svg docs/img/grading-boundary.svg",
+    {"docs/grading.md",
+     "madd docs/img/grading-key-weights.poly -n 64 --gradation 3 -p 0.5 --svg docs/img/grading-boundary.svg",
      "— area max/mean 2.45, weight max/mean 1.84, min angle 63.3°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
@@ -443,13 +447,16 @@ const std::vector<QuotedRun> quoted_runs = {
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
      "madd data/pipe.poly -n 1000 --areas docs/img/grading-pipe-areas.node --svg docs/img/grading-background-areas.svg",
-     "— stops at 64 subdomains (every ratio ≤ 1), min angle 61.0°", {"subdomains", "", "angle_min"}},
-    {"docs/grading.md", "madd data/key.poly -n 100 --weight-fn x+2.5 --svg docs/img/grading-weight-fn.svg",
+     "— stops at 64 subdomains (every ratio ≤ 1), min angle 61.0°",
+     {"subdomains", "", "angle_min"}},
+    {"docs/grading.md",
+     "madd data/key.poly -n 100 --weight-fn x+2.5 --svg docs/img/grading-weight-fn.svg",
      "— area max/mean 2.04, weight max/mean 1.23, min angle 62.0°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
      "madd data/key.poly -n 1000 --area-fn \"0.01+0.01*(x+2)^2\" --svg docs/img/grading-area-fn.svg",
-     "— stops at 532 subdomains (every ratio ≤ 1), min angle 60.1°", {"subdomains", "", "angle_min"}},
+     "— stops at 532 subdomains (every ratio ≤ 1), min angle 60.1°",
+     {"subdomains", "", "angle_min"}},
 };
 
 // A script a doc shows, verbatim, with what `madd script` prints for it.
@@ -483,83 +490,83 @@ const std::vector<QuotedScript> quoted_scripts = {
      {"pipe.poly"}},
 };
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("docs") {
-  TEST_CASE("the figures the docs quote are what the code gives") {
-    for (const QuotedRun& q : quoted_runs) {
-      const std::string doc = q.doc, command = q.command;
-      CAPTURE(doc);
-      CAPTURE(command);
-      CHECK_MESSAGE(doc_quotes(q.doc, q.command), "the doc no longer quotes the command");
-      CHECK_MESSAGE(doc_quotes(q.doc, q.figures), "the doc no longer quotes: " << std::string(q.figures));
-      REQUIRE(numbers_in(q.figures).size() == q.keys.size());
-    }
-    for (const QuotedScript& q : quoted_scripts) {
-      const std::string script = q.script;
-      CAPTURE(script);
-      CHECK_MESSAGE(slurp(source_root / q.doc).find(q.script) != std::string::npos, "the doc no longer shows the script");
-      CHECK_MESSAGE(slurp(source_root / q.doc).find(q.output) != std::string::npos, "the doc no longer shows the output");
-    }
-#ifndef MADD_CLI_PATH
-    MESSAGE("skipped running the examples: the madd CLI is not built");
-#else
-    const TempDir dir("figures");
-    const fs::path report = dir.path / "report.json";
-    const fs::path log = dir.path / "log";
-    for (const QuotedRun& q : quoted_runs) {
-      const std::string command = q.command;
-      CAPTURE(command);
-      fs::remove(report);
-      REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log.string() + ".err"));
-      const std::string json = slurp(report);
-      const std::vector<std::string> written = numbers_in(q.figures);
-      for (std::size_t k = 0; k < q.keys.size(); ++k) {
-        if (q.keys[k].empty()) continue;
-        CAPTURE(q.keys[k]);
-        CHECK(rounded_like(report_value(json, q.keys[k]), written[k]) == written[k]);
-      }
-    }
-    for (const QuotedScript& q : quoted_scripts) {
-      const std::string script = q.script;
-      CAPTURE(script);
-      for (const std::string& input : q.inputs) fs::copy_file(source_root / "data" / input, dir.path / input,
-                                                               fs::copy_options::overwrite_existing);
-      std::ofstream(dir.path / "script.txt") << q.script;
-      REQUIRE_MESSAGE(run_cli(dir.path, "script script.txt", log) == 0, slurp(log.string() + ".err"));
-      CHECK(slurp(log) == q.output);
-    }
-#endif
+TEST_CASE("the figures the docs quote are what the code gives") {
+  for (const QuotedRun& q : quoted_runs) {
+    const std::string doc = q.doc, command = q.command;
+    CAPTURE(doc);
+    CAPTURE(command);
+    CHECK_MESSAGE(doc_quotes(q.doc, q.command), "the doc no longer quotes the command");
+    CHECK_MESSAGE(doc_quotes(q.doc, q.figures), "the doc no longer quotes: " << std::string(q.figures));
+    REQUIRE(numbers_in(q.figures).size() == q.keys.size());
   }
-
-  TEST_CASE("README: every bundled domain decomposes at a minimum angle of 89 degrees") {
-    CHECK(doc_quotes("README.md", "any Φ0 below 90° may be asked for, and every bundled domain decomposes even at 89°"));
-#ifndef MADD_CLI_PATH
-    MESSAGE("skipped: the madd CLI is not built");
-#else
-    const TempDir dir("phi89");
-    const fs::path report = dir.path / "report.json";
-    const fs::path log = dir.path / "log";
-    std::vector<fs::path> domains;
-    for (const auto& e : fs::directory_iterator(source_root / "data"))
-      if (e.path().extension() == ".poly") domains.push_back(e.path());
-    std::sort(domains.begin(), domains.end());
-    CHECK(domains.size() >= 7);
-    for (const fs::path& domain : domains) {
-      for (const int n : {7, 256}) {
-        CAPTURE(domain);
-        CAPTURE(n);
-        std::string arguments = "'";
-        arguments += domain.string();
-        arguments += "' -n " + std::to_string(n) + " --min-angle 89 --quiet --report='";
-        arguments += report.string();
-        arguments += "'";
-        REQUIRE_MESSAGE(run_cli(dir.path, arguments, log) == 0, slurp(log.string() + ".err"));
-        const std::string json = slurp(report);
-        CHECK(report_value(json, "subdomains") == n);
-        CHECK(report_value(json, "angle_min") >= 89.0);
-      }
-    }
-#endif
+  for (const QuotedScript& q : quoted_scripts) {
+    const std::string script = q.script;
+    CAPTURE(script);
+    CHECK_MESSAGE(slurp(source_root / q.doc).find(q.script) != std::string::npos, "the doc no longer shows the script");
+    CHECK_MESSAGE(slurp(source_root / q.doc).find(q.output) != std::string::npos, "the doc no longer shows the output");
   }
+#ifndef MADD_CLI_PATH
+  MESSAGE("skipped running the examples: the madd CLI is not built");
+#else
+  const TempDir dir("figures");
+  const fs::path report = dir.path / "report.json";
+  const fs::path log = dir.path / "log";
+  for (const QuotedRun& q : quoted_runs) {
+    const std::string command = q.command;
+    CAPTURE(command);
+    fs::remove(report);
+    REQUIRE_MESSAGE(run_cli(source_root, arguments_of(q.command, report), log) == 0, slurp(log.string() + ".err"));
+    const std::string json = slurp(report);
+    const std::vector<std::string> written = numbers_in(q.figures);
+    for (std::size_t k = 0; k < q.keys.size(); ++k) {
+      if (q.keys[k].empty()) continue;
+      CAPTURE(q.keys[k]);
+      CHECK(rounded_like(report_value(json, q.keys[k]), written[k]) == written[k]);
+    }
+  }
+  for (const QuotedScript& q : quoted_scripts) {
+    const std::string script = q.script;
+    CAPTURE(script);
+    for (const std::string& input : q.inputs)
+      fs::copy_file(source_root / "data" / input, dir.path / input, fs::copy_options::overwrite_existing);
+    std::ofstream(dir.path / "script.txt") << q.script;
+    REQUIRE_MESSAGE(run_cli(dir.path, "script script.txt", log) == 0, slurp(log.string() + ".err"));
+    CHECK(slurp(log) == q.output);
+  }
+#endif
 }
+
+TEST_CASE("README: every bundled domain decomposes at a minimum angle of 89 degrees") {
+  CHECK(doc_quotes("README.md", "any Φ0 below 90° may be asked for, and every bundled domain decomposes even at 89°"));
+#ifndef MADD_CLI_PATH
+  MESSAGE("skipped: the madd CLI is not built");
+#else
+  const TempDir dir("phi89");
+  const fs::path report = dir.path / "report.json";
+  const fs::path log = dir.path / "log";
+  std::vector<fs::path> domains;
+  for (const auto& e : fs::directory_iterator(source_root / "data"))
+    if (e.path().extension() == ".poly") domains.push_back(e.path());
+  std::sort(domains.begin(), domains.end());
+  CHECK(domains.size() >= 7);
+  for (const fs::path& domain : domains) {
+    for (const int n : {7, 256}) {
+      CAPTURE(domain);
+      CAPTURE(n);
+      std::string arguments = "'";
+      arguments += domain.string();
+      arguments += "' -n " + std::to_string(n) + " --min-angle 89 --quiet --report='";
+      arguments += report.string();
+      arguments += "'";
+      REQUIRE_MESSAGE(run_cli(dir.path, arguments, log) == 0, slurp(log.string() + ".err"));
+      const std::string json = slurp(report);
+      CHECK(report_value(json, "subdomains") == n);
+      CHECK(report_value(json, "angle_min") >= 89.0);
+    }
+  }
+#endif
+}
+}  // TEST_SUITE("docs")

@@ -43,7 +43,7 @@ double random_double(std::mt19937_64& rng, int lo) {
   return std::ldexp(m(rng), e(rng)) * (rng() % 2 ? 1.0 : -1.0);
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("exact_sum") {
 
@@ -165,4 +165,4 @@ TEST_CASE("rings: ring_signed_area and rings_area stay within their error bounds
   CHECK(madd::detail::ring_signed_area_error(RingView(square)) < 1e-15);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("exact_sum")

@@ -52,7 +52,7 @@ void check_error(const std::string& text, std::size_t column, const std::string&
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("expression") {
 
@@ -183,18 +183,18 @@ TEST_CASE("deep nesting is rejected cleanly, shallow nesting accepted") {
   // Nesting just inside the limit works (the top-level operand is one level).
   const std::string ok = std::string(limit - 1, '(') + "x" + std::string(limit - 1, ')');
   CHECK(parse_expression(ok)(2.0, 0.0) == 2.0);
-  for (const std::string& deep :
-       {std::string(limit, '(') + "x" + std::string(limit, ')'), std::string(100000, '('),
-        std::string(100000, '-') + "x", [] {
-          std::string s;
-          for (int i = 0; i < 50000; ++i) s += "sin(";
-          return s;
-        }(),
-        [] {
-          std::string s = "2";
-          for (int i = 0; i < 50000; ++i) s += "^2";
-          return s;
-        }()}) {
+  for (const std::string& deep : {std::string(limit, '(') + "x" + std::string(limit, ')'), std::string(100000, '('),
+                                  std::string(100000, '-') + "x",
+                                  [] {
+                                    std::string s;
+                                    for (int i = 0; i < 50000; ++i) s += "sin(";
+                                    return s;
+                                  }(),
+                                  [] {
+                                    std::string s = "2";
+                                    for (int i = 0; i < 50000; ++i) s += "^2";
+                                    return s;
+                                  }()}) {
     try {
       (void)parse_expression(deep);
       FAIL("deep nesting accepted");
@@ -233,4 +233,4 @@ TEST_CASE("the deepest accepted right-nested sum evaluates correctly") {
   CHECK(e(1.0, 0.0) == static_cast<double>(levels + 1));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("expression")

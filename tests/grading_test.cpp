@@ -94,7 +94,7 @@ Decomposition checked(const Pslg& domain, const madd::DecomposeOptions& o, std::
   return d;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("grading") {
 
@@ -235,4 +235,4 @@ TEST_CASE("graded output is identical for 1 and 2 threads") {
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("grading")

@@ -61,7 +61,7 @@ madd::InvalidInputError expect_invalid(const Pslg& domain) {
   return madd::InvalidInputError(madd::InputProblem::other, "");
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("hostile") {
 
@@ -129,8 +129,10 @@ TEST_CASE("sloping sides far from the origin: a unit triangle near (1e9, 1e9) an
   }
   const double o = 1e10, c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
   const double length = 1000, width = 1e-3;  // aspect ratio 1e6, at 30 degrees
-  const Pslg sliver = polygon({{{o, o}, {o + length * c, o + length * s},
-                                {o + length * c - width * s, o + length * s + width * c}, {o - width * s, o + width * c}}});
+  const Pslg sliver = polygon({{{o, o},
+                                {o + length * c, o + length * s},
+                                {o + length * c - width * s, o + length * s + width * c},
+                                {o - width * s, o + width * c}}});
   for (const std::uint32_t n : {2u, 8u}) expect_valid(sliver, n);
 }
 
@@ -141,8 +143,9 @@ TEST_CASE("a hole within 1e-12 of the outer boundary without touching it") {
 }
 
 TEST_CASE("two holes within 1e-12 of each other") {
-  const Pslg p = polygon({rectangle(0, 0, 4, 2), rectangle(1, 0.5, 2, 1.5, true), rectangle(2 + 1e-12, 0.5, 3, 1.5, true)},
-                         {{1.5, 1}, {2.5, 1}});
+  const Pslg p =
+      polygon({rectangle(0, 0, 4, 2), rectangle(1, 0.5, 2, 1.5, true), rectangle(2 + 1e-12, 0.5, 3, 1.5, true)},
+              {{1.5, 1}, {2.5, 1}});
   madd::validate(p);
   expect_valid(p, 4);
 }
@@ -349,8 +352,7 @@ TEST_CASE("after interrupt_output_writes nothing is written and no temporary fil
     try {
       madd::write_file_atomically((dir / "out.poly").string(), "data");
       code = 2;
-    } catch (const madd::OutputError&) {
-    }
+    } catch (const madd::OutputError&) {}
     _exit(code);
   }
   int status = 0;
@@ -361,4 +363,4 @@ TEST_CASE("after interrupt_output_writes nothing is written and no temporary fil
   fs::remove_all(dir);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("hostile")

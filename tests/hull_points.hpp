@@ -26,4 +26,4 @@ inline std::size_t hull_point_count(std::vector<Point> pts) {
   return h.size();
 }
 
-} // namespace madd::test
+}  // namespace madd::test

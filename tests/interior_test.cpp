@@ -24,19 +24,16 @@ using madd::Pslg;
 // A 4 x 2 rectangle holding every kind of interior constraint.
 Pslg constrained_rectangle() {
   Pslg p;
-  p.points = {{0, 0}, {4, 0}, {4, 2}, {0, 2},
-              {0.5, 0.5}, {1.2, 0.9}, {1.5, 1.6},        // 4-6: an open polyline
-              {2.4, 0.4}, {3.2, 0.4}, {2.8, 1.0},        // 7-9: a closed loop (a region)
-              {2.0, 2.0}, {2.1, 1.4},                    // 10-11: a segment from the boundary
-              {3.0, 1.6}, {3.6, 1.6}, {3.3, 1.2},        // 12-14: a T: 14-15 ends on 12-13,
-              {3.3, 1.6},                                // 15: at a vertex inside it
-              {1.0, 0.2}, {0.6, 1.6}};                   // 16-17: isolated vertices
-  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1},
-                {4, 5, 2}, {5, 6, 2},
-                {7, 8, 3}, {8, 9, 3}, {9, 7, 3},
-                {10, 11, 4},
-                {12, 13, 5}, {15, 14, 5},
-                {5, 11, 6}};  // a Y at 5 (with 4-5, 5-6); joins the boundary segment's end
+  p.points = {{0, 0},     {4, 0},     {4, 2},     {0, 2}, {0.5, 0.5}, {1.2, 0.9}, {1.5, 1.6},  // 4-6: an open polyline
+              {2.4, 0.4}, {3.2, 0.4}, {2.8, 1.0},  // 7-9: a closed loop (a region)
+              {2.0, 2.0}, {2.1, 1.4},              // 10-11: a segment from the boundary
+              {3.0, 1.6}, {3.6, 1.6}, {3.3, 1.2},  // 12-14: a T: 14-15 ends on 12-13,
+              {3.3, 1.6},                          // 15: at a vertex inside it
+              {1.0, 0.2}, {0.6, 1.6}};             // 16-17: isolated vertices
+  p.segments = {
+      {0, 1, 1}, {1, 2, 1}, {2, 3, 1},   {3, 0, 1},   {4, 5, 2},   {5, 6, 2}, {7, 8, 3},
+      {8, 9, 3}, {9, 7, 3}, {10, 11, 4}, {12, 13, 5}, {15, 14, 5}, {5, 11, 6}};  // a Y at 5 (with 4-5, 5-6); joins the
+                                                                                 // boundary segment's end
   p.has_segment_markers = true;
   p.regions.push_back({{2.8, 0.6}, 7.0, 0.01});
   return p;
@@ -144,7 +141,7 @@ madd::DecomposeOptions options(std::uint32_t n, double phi = 60.0, unsigned thre
   return o;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("interior") {
 
@@ -237,4 +234,4 @@ TEST_CASE("a square with a stub from its side and a survey point still halves ev
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("interior")

@@ -52,7 +52,7 @@ void check_resolved(const madd::Pslg& input, const madd::ResolvedPslg& r) {
   CHECK(r.pslg == madd::resolve_intersections(input).pslg);  // deterministic
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("intersections") {
 
@@ -122,7 +122,7 @@ TEST_CASE("overlapping and repeated collinear segments become one chain of piece
   const madd::ResolvedPslg r = madd::resolve_intersections(p);
   CHECK(r.new_vertices == 0);
   CHECK(r.crossings == 0);
-  CHECK(r.overlaps == 4);  // [0,2]-[1,3], [1,3]-[2.5,4], and the repeat with both
+  CHECK(r.overlaps == 4);              // [0,2]-[1,3], [1,3]-[2.5,4], and the repeat with both
   CHECK(r.pslg.segments.size() == 5);  // between 0, 1, 2, 2.5, 3, 4
   CHECK(length_of(r.pslg) == 4.0);
   check_resolved(p, r);
@@ -158,4 +158,4 @@ TEST_CASE("attributes of a new vertex are interpolated along a segment through i
   CHECK((a == doctest::Approx(2.0) || a == doctest::Approx(5.0)));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("intersections")

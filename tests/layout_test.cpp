@@ -42,7 +42,7 @@ std::vector<fs::path> sources_under(const fs::path& dir) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("layout") {
 
@@ -83,4 +83,4 @@ TEST_CASE("no include of src/ runs back up the pipeline") {
   CHECK(includes > 100);  // the scan saw the tree
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("layout")

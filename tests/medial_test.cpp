@@ -70,7 +70,7 @@ double reference_angle(Point at, Point prev, Point next, Point towards) {
   return std::min(a1, a2);
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("medial") {
 
@@ -81,7 +81,8 @@ TEST_CASE("boundary_angle on a straight edge and at a reflex corner") {
   CHECK(madd::boundary_angle({0, 0}, {-1, 0}, {1, 0}, {2, 0}) < 0.0);   // along the boundary
   // Reflex corner (270 degree wedge): a diagonal into it makes 135 degrees with both edges.
   CHECK(madd::boundary_angle({0, 0}, {0, -1}, {1, 0}, {-1, 1}) == doctest::Approx(135.0));
-  CHECK(madd::boundary_angle({0, 0}, {0, -1}, {1, 0}, {-1, -2}) == doctest::Approx(std::atan(0.5) * 180.0 / std::numbers::pi));
+  CHECK(madd::boundary_angle({0, 0}, {0, -1}, {1, 0}, {-1, -2}) ==
+        doctest::Approx(std::atan(0.5) * 180.0 / std::numbers::pi));
 }
 
 TEST_CASE("junction triangle: the central triangle of a hexagon, depending on Phi0") {
@@ -155,7 +156,8 @@ TEST_CASE("contraction removes exactly the unacceptable edges (random polygons)"
       // An acceptable triangle edge really makes angles >= Phi0 at both ends.
       if (e.from < p.points.size() && e.to < p.points.size()) {
         for (auto [at, to] : {std::pair{e.from, e.to}, std::pair{e.to, e.from}}) {
-          const double ref = reference_angle(t.points[at], t.points[links[at].prev], t.points[links[at].next], t.points[to]);
+          const double ref =
+              reference_angle(t.points[at], t.points[links[at].prev], t.points[links[at].next], t.points[to]);
           CHECK(ref >= phi - 1e-9);
         }
       }
@@ -181,4 +183,4 @@ TEST_CASE("contraction removes exactly the unacceptable edges (random polygons)"
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("medial")

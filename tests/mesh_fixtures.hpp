@@ -92,8 +92,8 @@ inline Mesh mesh_without_steiner_points(const Decomposition& d) {
       m.point_markers[s.a] = std::max(m.point_markers[s.a], s.marker);
       m.point_markers[s.b] = std::max(m.point_markers[s.b], s.marker);
     }
-    m.segments.push_back({s.a, s.b, d.is_separator(static_cast<std::uint32_t>(j)) ? 0 : s.marker,
-                          static_cast<std::uint32_t>(j)});
+    m.segments.push_back(
+        {s.a, s.b, d.is_separator(static_cast<std::uint32_t>(j)) ? 0 : s.marker, static_cast<std::uint32_t>(j)});
   }
   m.subdomain_first_triangle.push_back(0);
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
@@ -121,4 +121,4 @@ inline Mesh mesh_without_steiner_points(const Decomposition& d) {
   return m;
 }
 
-} // namespace madd::test
+}  // namespace madd::test

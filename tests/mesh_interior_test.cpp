@@ -34,8 +34,9 @@ using madd::Point;
 double smallest_angle(const Mesh& m, std::size_t t) {
   double best = 180;
   for (int i = 0; i < 3; ++i)
-    best = std::min(best, madd::degrees(madd::angle_at(m.points[m.triangles[t][i]], m.points[m.triangles[t][(i + 1) % 3]],
-                                                       m.points[m.triangles[t][(i + 2) % 3]])));
+    best =
+        std::min(best, madd::degrees(madd::angle_at(m.points[m.triangles[t][i]], m.points[m.triangles[t][(i + 1) % 3]],
+                                                    m.points[m.triangles[t][(i + 2) % 3]])));
   return best;
 }
 
@@ -60,9 +61,10 @@ Mesh mesh_fixture(double q, double area, unsigned threads) {
   return madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;  // verify_mesh runs inside
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("mesh interior: each interior input segment is a chain of mesh edges, triangles of its subdomain on both sides") {
+TEST_CASE(
+    "mesh interior: each interior input segment is a chain of mesh edges, triangles of its subdomain on both sides") {
   const madd::test::InteriorFixture f = madd::test::interior_fixture();
   const Mesh m = mesh_fixture(30, 0.05, 1);
   const auto edges = edges_of(m);
@@ -122,7 +124,7 @@ TEST_CASE("mesh interior: every angle >= q but at the 2.9-degree angle between t
     CAPTURE(q);
     const madd::test::InteriorFixture f = madd::test::interior_fixture();
     const Mesh m = mesh_fixture(q, 0.0, 1);  // no size bound: only the features and the angles grade the mesh
-    CHECK(m.triangles.size() < 20000);        // refinement ended, and not at the budget
+    CHECK(m.triangles.size() < 20000);       // refinement ended, and not at the budget
     CHECK(m.shortfall.limit == 0);
     CHECK(m.shortfall.total() == m.shortfall.input_angle);
     const Point corner = f.domain.points[6];
@@ -179,7 +181,8 @@ TEST_CASE("mesh interior: the same mesh for 1, 2 and 3 threads") {
   CHECK(one == mesh_fixture(30, 0.01, 3));
 }
 
-TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior, and resolves an isolated vertex near a separator") {
+TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior, and resolves an isolated vertex near "
+          "a separator") {
   madd::test::InteriorFixture f = madd::test::interior_fixture();
   // An isolated vertex 0.01 from the separator x = 2: the separator's pieces
   // near it must be no longer than half that distance.
@@ -204,7 +207,8 @@ TEST_CASE("mesh interior: discretise splits interior pieces, keeps them interior
     if (d.is_separator(j)) CHECK(madd::distance(madd::midpoint(a, b), Point{2.01, 1.0}) > 0.5 * madd::distance(a, b));
   }
   CHECK(interior > 7);
-  for (const madd::Subdomain& s : d.subdomains) CHECK(std::is_sorted(s.interior_segments.begin(), s.interior_segments.end()));
+  for (const madd::Subdomain& s : d.subdomains)
+    CHECK(std::is_sorted(s.interior_segments.begin(), s.interior_segments.end()));
   // The mesh of it still verifies.
   madd::MeshOptions o = madd::test::options_for(2, 30, 0.05);
   CHECK_NOTHROW(madd::mesh_decomposition(f.decomposition, f.domain, o));
@@ -214,9 +218,10 @@ namespace {
 
 madd::Pslg estuary() { return madd::read_domain(MADD_DATA_DIR "/estuary.poly"); }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("mesh interior: the estuary through mesh(): interior segments kept, survey points as vertices, the loop's region") {
+TEST_CASE(
+    "mesh interior: the estuary through mesh(): interior segments kept, survey points as vertices, the loop's region") {
   const madd::Pslg domain = estuary();
   madd::MeshOptions o = madd::test::options_for(4, 30, 0.0);
   const Mesh m = madd::mesh(domain, o);
@@ -332,7 +337,8 @@ double segment_distance(Point a, Point b, Point c, Point d) {
     const double t = std::clamp(madd::dot(p - u, uv) / madd::dot(uv, uv), 0.0, 1.0);
     return madd::distance(p, u + t * uv);
   };
-  const bool crosses = madd::orient2d(a, b, c) * madd::orient2d(a, b, d) < 0 && madd::orient2d(c, d, a) * madd::orient2d(c, d, b) < 0;
+  const bool crosses =
+      madd::orient2d(a, b, c) * madd::orient2d(a, b, d) < 0 && madd::orient2d(c, d, a) * madd::orient2d(c, d, b) < 0;
   if (crosses) return 0.0;
   return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
 }
@@ -375,9 +381,10 @@ madd::Pslg random_interior_domain(std::uint32_t seed, int count) {
   return p;
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 and 3, q 30: verified, every attribute the later region's") {
+TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 and 3, q 30: verified, every attribute "
+          "the later region's") {
   int decomposed = 0;
   for (std::uint32_t seed = 1; seed <= 6; ++seed) {
     for (const std::uint32_t n : {1u, 3u}) {
@@ -390,7 +397,7 @@ TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 
       try {
         m = madd::mesh(domain, o);  // verify_mesh runs inside: InternalError on any broken invariant
       } catch (const madd::DecompositionError& e) {
-        REQUIRE(n > 1);  // one subdomain needs no separator
+        REQUIRE(n > 1);                                        // one subdomain needs no separator
         MESSAGE("not decomposed: " << std::string(e.what()));  // the decomposition's limits, not the mesher's
         continue;
       }
@@ -411,11 +418,13 @@ TEST_CASE("mesh interior: random interior segments and isolated vertices, N = 1 
   CHECK(decomposed >= 2);
 }
 
-TEST_CASE("mesh interior: a Y junction of interior segments with a 10-degree sector terminates; below the bound only inside that sector") {
+TEST_CASE("mesh interior: a Y junction of interior segments with a 10-degree sector terminates; below the bound only "
+          "inside that sector") {
   madd::Pslg p;
   p.first_index = 0;
   const double a10 = 10.0 * std::numbers::pi / 180.0;
-  p.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 2}, {3.2, 2}, {2 + 1.2 * std::cos(a10), 2 + 1.2 * std::sin(a10)}, {1.2, 2.8}};
+  p.points = {{0, 0},    {4, 0}, {4, 4}, {0, 4}, {2, 2}, {3.2, 2}, {2 + 1.2 * std::cos(a10), 2 + 1.2 * std::sin(a10)},
+              {1.2, 2.8}};
   p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {4, 6, 2}, {4, 7, 2}};
   madd::validate(p);
   for (const double q : {28.0, 32.0}) {

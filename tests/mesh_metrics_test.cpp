@@ -24,7 +24,8 @@ std::vector<double> smallest_angles(const madd::Mesh& m) {
   for (const auto& t : m.triangles) {
     double s = 180;
     for (int i = 0; i < 3; ++i)
-      s = std::min(s, madd::degrees(madd::angle_at(m.points[t[i]], m.points[t[(i + 1) % 3]], m.points[t[(i + 2) % 3]])));
+      s = std::min(s,
+                   madd::degrees(madd::angle_at(m.points[t[i]], m.points[t[(i + 1) % 3]], m.points[t[(i + 2) % 3]])));
     out.push_back(s);
   }
   return out;
@@ -38,7 +39,7 @@ std::size_t member(const std::string& json, const std::string& key) {
   return json.find(start);
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("mesh_metrics") {
 
@@ -61,20 +62,23 @@ TEST_CASE("mesh_metrics: the counts, extremes and balance of the mesh's triangle
   CHECK(std::accumulate(m.smallest_angle_histogram.begin(), m.smallest_angle_histogram.end(), std::uint64_t{0}) ==
         m.triangles);
   const auto in_bin = [&](int b) {
-    return std::count_if(angles.begin(), angles.end(), [&](double a) { return std::min(5, static_cast<int>(a / 10)) == b; });
+    return std::count_if(angles.begin(), angles.end(),
+                         [&](double a) { return std::min(5, static_cast<int>(a / 10)) == b; });
   };
-  for (int b = 0; b < 6; ++b) CHECK(m.smallest_angle_histogram[static_cast<std::size_t>(b)] == static_cast<std::uint64_t>(in_bin(b)));
+  for (int b = 0; b < 6; ++b)
+    CHECK(m.smallest_angle_histogram[static_cast<std::size_t>(b)] == static_cast<std::uint64_t>(in_bin(b)));
   // verify_mesh accepts the mesh only when its shortfall counts exactly the triangles below the bound.
   CHECK(m.below_bound == mesh.shortfall.total());
   CHECK(m.shortfall == mesh.shortfall);
-  CHECK(m.share_below_bound() == doctest::Approx(static_cast<double>(m.below_bound) / static_cast<double>(m.triangles)));
+  CHECK(m.share_below_bound() ==
+        doctest::Approx(static_cast<double>(m.below_bound) / static_cast<double>(m.triangles)));
 
   std::vector<std::uint64_t> per_subdomain(m.subdomains, 0);
   for (const std::uint32_t k : mesh.triangle_subdomain) ++per_subdomain[k];
   CHECK(m.largest_subdomain_triangles == *std::max_element(per_subdomain.begin(), per_subdomain.end()));
   CHECK(m.max_over_mean_triangles() >= 1.0);
-  CHECK(m.max_over_mean_triangles() ==
-        doctest::Approx(static_cast<double>(m.largest_subdomain_triangles) * m.subdomains / static_cast<double>(m.triangles)));
+  CHECK(m.max_over_mean_triangles() == doctest::Approx(static_cast<double>(m.largest_subdomain_triangles) *
+                                                       m.subdomains / static_cast<double>(m.triangles)));
 }
 
 TEST_CASE("mesh_metrics of an empty mesh: no triangle, no ratio") {
@@ -95,11 +99,26 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
   const std::string json = madd::format_mesh_report_json(m, run);
   REQUIRE(json.front() == '{');
   CHECK(json.substr(json.size() - 3) == "\n}\n");
-  const char* keys[] = {"subdomains", "triangles", "vertices", "min_angle_bound_deg", "max_area_bound",
-                        "separator_angle_deg", "median_smallest_angle_deg", "below_bound", "share_below_bound",
-                        "below_bound_input_angle", "below_bound_separator", "below_bound_precision",
-                        "below_bound_limit", "smallest_angle_histogram_10deg", "max_over_mean_triangles", "threads",
-                        "thread_imbalance", "thread_seconds", "phase_seconds", "seconds"};
+  const char* keys[] = {"subdomains",
+                        "triangles",
+                        "vertices",
+                        "min_angle_bound_deg",
+                        "max_area_bound",
+                        "separator_angle_deg",
+                        "median_smallest_angle_deg",
+                        "below_bound",
+                        "share_below_bound",
+                        "below_bound_input_angle",
+                        "below_bound_separator",
+                        "below_bound_precision",
+                        "below_bound_limit",
+                        "smallest_angle_histogram_10deg",
+                        "max_over_mean_triangles",
+                        "threads",
+                        "thread_imbalance",
+                        "thread_seconds",
+                        "phase_seconds",
+                        "seconds"};
   std::size_t previous = 0;
   for (const char* key : keys) {
     CAPTURE(key);
@@ -118,10 +137,11 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
   CHECK(std::stod(json.substr(angle)) == m.smallest_angle_deg);
 
   m.median_smallest_angle_deg = std::numeric_limits<double>::quiet_NaN();
-  const std::string parts = madd::format_mesh_report_json(m, {{"ranks", 3.0}, {"mesh_seconds", std::vector<double>{1, 2, 3}}});
+  const std::string parts =
+      madd::format_mesh_report_json(m, {{"ranks", 3.0}, {"mesh_seconds", std::vector<double>{1, 2, 3}}});
   CHECK(member(parts, "median_smallest_angle_deg") == std::string::npos);
   CHECK(parts.find("\"mesh_seconds\": [1, 2, 3]\n}") != std::string::npos);
   CHECK(member(parts, "ranks") > member(parts, "max_over_mean_triangles"));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("mesh_metrics")

@@ -82,7 +82,8 @@ std::set<Edge> separator_edges(const Mesh& m) {
 std::map<Edge, int> edge_uses(const std::vector<std::array<std::uint32_t, 3>>& triangles) {
   std::map<Edge, int> uses;
   for (const auto& t : triangles)
-    for (int i = 0; i < 3; ++i) ++uses[undirected(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)])];
+    for (int i = 0; i < 3; ++i)
+      ++uses[undirected(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)])];
   return uses;
 }
 
@@ -107,8 +108,8 @@ TriangleMesh read_triangle_mesh(const std::string& node, const std::string& ele,
                                 bool with_global_ids, bool with_regions) {
   TriangleMesh m;
   const TriangleTable nodes = parse_triangle_table(node, 4, with_global_ids ? 5 : 4, first_index);
-  CHECK(nodes.header == std::vector<std::int64_t>{static_cast<std::int64_t>(nodes.rows.size()), 2,
-                                                  with_global_ids ? 1 : 0, 1});
+  CHECK(nodes.header ==
+        std::vector<std::int64_t>{static_cast<std::int64_t>(nodes.rows.size()), 2, with_global_ids ? 1 : 0, 1});
   for (const auto& row : nodes.rows) {
     m.points.push_back({real_of(row[0]), real_of(row[1])});
     m.coordinate_text.push_back(row[0] + " " + row[1]);
@@ -137,14 +138,15 @@ TEST_CASE("mesh .node and .ele: every triangle's vertices read back to the mesh'
     for (const unsigned first_index : {0u, 1u}) {
       CAPTURE(first_index);
       const TriangleMesh back =
-          read_triangle_mesh(format_mesh_node(*mesh, first_index), format_mesh_ele(*mesh, first_index), first_index, false,
-                             !mesh->decomposition.regions.empty());
+          read_triangle_mesh(format_mesh_node(*mesh, first_index), format_mesh_ele(*mesh, first_index), first_index,
+                             false, !mesh->decomposition.regions.empty());
       REQUIRE(back.points.size() == mesh->points.size());
       CHECK(back.points == mesh->points);  // %.17g reads back exactly
       CHECK(back.markers == mesh->point_markers);
       REQUIRE(back.triangles.size() == mesh->triangles.size());
       for (std::size_t t = 0; t < back.triangles.size(); ++t) {
-        for (std::size_t i = 0; i < 3; ++i) CHECK(back.points[back.triangles[t][i]] == mesh->points[mesh->triangles[t][i]]);
+        for (std::size_t i = 0; i < 3; ++i)
+          CHECK(back.points[back.triangles[t][i]] == mesh->points[mesh->triangles[t][i]]);
         CHECK(signed_area(back.points[back.triangles[t][0]], back.points[back.triangles[t][1]],
                           back.points[back.triangles[t][2]]) > 0);  // counter-clockwise, as Triangle writes
         CHECK(back.triangle_attribute[t] == mesh->triangle_subdomain[t]);
@@ -240,7 +242,9 @@ TEST_CASE("mesh .msh 4.1: nodes exact, triangles in order, physical groups cover
     for (const auto& [edge, marker] : boundary) markers.insert(marker);
     CHECK(m.physical_names.size() == mesh->subdomain_count() + markers.size());
     // Which physical groups each element is in, through its entity.
-    const auto physicals_of = [&](const Msh41Element& e) { return m.entities.at({e.entity_dim, e.entity_tag}).physical_tags; };
+    const auto physicals_of = [&](const Msh41Element& e) {
+      return m.entities.at({e.entity_dim, e.entity_tag}).physical_tags;
+    };
     std::vector<std::size_t> per_subdomain(mesh->subdomain_count(), 0);
     std::map<int, std::set<Edge>> lines_of_marker;
     std::set<std::pair<std::uint32_t, std::uint32_t>> directed;  // every triangle's directed edges
@@ -337,7 +341,8 @@ TEST_CASE("mesh .vtu: points exact, connectivity, offsets, types, subdomain and 
       const XmlArray& region = v.array("CellData", "region_attribute");
       CHECK(region.attributes.at("type") == "Float64");
       REQUIRE(region.values.size() == mesh->triangles.size());
-      for (std::size_t t = 0; t < mesh->triangles.size(); ++t) CHECK(real_of(region.values[t]) == mesh->triangle_attribute[t]);
+      for (std::size_t t = 0; t < mesh->triangles.size(); ++t)
+        CHECK(real_of(region.values[t]) == mesh->triangle_attribute[t]);
     } else {
       CHECK_THROWS(v.array("CellData", "region_attribute"));
     }
@@ -367,9 +372,9 @@ TEST_CASE("split mesh: the pieces' local-to-global maps give back the mesh, sepa
       std::vector<std::array<std::uint32_t, 3>> all;
       for (std::uint32_t k = 0; k < n; ++k) {
         const fs::path dir = tmp.path / "parts";
-        const TriangleMesh piece = read_triangle_mesh(read_text(dir / split_mesh_file_name("m", k, n, ".node")),
-                                                      read_text(dir / split_mesh_file_name("m", k, n, ".ele")),
-                                                      first_index, true, regions);
+        const TriangleMesh piece =
+            read_triangle_mesh(read_text(dir / split_mesh_file_name("m", k, n, ".node")),
+                               read_text(dir / split_mesh_file_name("m", k, n, ".ele")), first_index, true, regions);
         std::vector<std::uint32_t> to_global;
         for (std::size_t i = 0; i < piece.points.size(); ++i) {
           const std::uint32_t g = index_of(std::to_string(piece.point_attribute[i]), first_index);
@@ -514,6 +519,6 @@ TEST_CASE("gmsh reads the .msh back with the same groups (skipped without gmsh)"
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("mesh_output")
 
-} // namespace
+}  // namespace

@@ -48,8 +48,8 @@ struct TriangleTable {
   std::vector<std::vector<std::string>> rows;  // without the id
 };
 
-inline TriangleTable parse_triangle_table(const std::string& text, std::size_t header_words,
-                                          std::size_t row_words, std::int64_t first_index) {
+inline TriangleTable parse_triangle_table(const std::string& text, std::size_t header_words, std::size_t row_words,
+                                          std::int64_t first_index) {
   std::istringstream in(text);
   std::vector<std::vector<std::string>> lines;
   for (std::string line; std::getline(in, line);) {
@@ -62,7 +62,8 @@ inline TriangleTable parse_triangle_table(const std::string& text, std::size_t h
   if (t.header[0] < 0 || static_cast<std::size_t>(t.header[0]) + 1 != lines.size())
     throw std::runtime_error("table: the header's count is not the number of rows");
   for (std::size_t i = 1; i < lines.size(); ++i) {
-    if (lines[i].size() != row_words) throw std::runtime_error("table: row " + std::to_string(i) + " has a wrong width");
+    if (lines[i].size() != row_words)
+      throw std::runtime_error("table: row " + std::to_string(i) + " has a wrong width");
     if (integer_of(lines[i][0]) != static_cast<std::int64_t>(i - 1) + first_index)
       throw std::runtime_error("table: ids are not consecutive from first_index");
     t.rows.emplace_back(lines[i].begin() + 1, lines[i].end());
@@ -88,7 +89,7 @@ struct Msh41Element {
 
 struct Msh41 {
   std::map<std::pair<int, std::int64_t>, std::string> physical_names;  // (dim, tag) -> name
-  std::map<std::pair<int, std::int64_t>, Msh41Entity> entities;         // (dim, tag)
+  std::map<std::pair<int, std::int64_t>, Msh41Entity> entities;        // (dim, tag)
   std::map<std::int64_t, Point> nodes;
   std::map<std::int64_t, std::pair<int, std::int64_t>> node_entity;  // node tag -> (dim, tag)
   std::vector<Msh41Element> elements;
@@ -147,7 +148,8 @@ private:
   void element_data(Msh41& m) {
     if (integers(1)[0] != 1) fail("element data: one string tag expected");
     const std::string& quoted = lines_.at(at_++);
-    if (quoted.size() < 2 || quoted.front() != '"' || quoted.back() != '"') fail("element data: a quoted name expected");
+    if (quoted.size() < 2 || quoted.front() != '"' || quoted.back() != '"')
+      fail("element data: a quoted name expected");
     const std::string name = quoted.substr(1, quoted.size() - 2);
     if (integers(1)[0] != 1) fail("element data: one real tag expected");
     real_of(next().at(0));
@@ -276,7 +278,8 @@ struct Vtu {
   const XmlArray& array(const std::string& parent, const std::string& name) const {
     for (const XmlArray& a : arrays) {
       const auto it = a.attributes.find("Name");
-      if (a.parent == parent && (name.empty() ? it == a.attributes.end() : it != a.attributes.end() && it->second == name))
+      if (a.parent == parent &&
+          (name.empty() ? it == a.attributes.end() : it != a.attributes.end() && it->second == name))
         return a;
     }
     throw std::runtime_error("vtu: no array " + parent + "/" + name);
@@ -329,7 +332,8 @@ inline Vtu parse_vtu(const std::string& text) {
     if (empty_element) tag.pop_back();
     const auto space = tag.find(' ');
     const std::string name = tag.substr(0, space);
-    const auto attributes = space == std::string::npos ? std::map<std::string, std::string>{} : xml_attributes(tag.substr(space));
+    const auto attributes =
+        space == std::string::npos ? std::map<std::string, std::string>{} : xml_attributes(tag.substr(space));
     if (name == "VTKFile") {
       if (!open.empty() || attributes.at("type") != "UnstructuredGrid") throw std::runtime_error("vtu: root");
     } else if (name == "Piece") {
@@ -344,4 +348,4 @@ inline Vtu parse_vtu(const std::string& text) {
   return v;
 }
 
-} // namespace madd::test
+}  // namespace madd::test

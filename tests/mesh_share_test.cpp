@@ -163,7 +163,7 @@ void check_figures_combine(const madd::Mesh& whole, const std::vector<madd::Mesh
   CHECK(sum.smallest_angle_histogram == all.smallest_angle_histogram);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids included, and own their vertices once") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
@@ -200,7 +200,8 @@ TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 
   for (const std::uint32_t shares : {1u, 2u}) {
     CAPTURE(shares);
     int rounds = 0;
-    const std::vector<madd::MeshPart> parts = mesh_decomposition_in_shares(f.decomposition, f.domain, o, shares, rounds);
+    const std::vector<madd::MeshPart> parts =
+        mesh_decomposition_in_shares(f.decomposition, f.domain, o, shares, rounds);
     check_union_is(whole, parts);
     check_owners(parts);
     // The isolated vertices are in the part of the share meshing subdomain 1, under their own ids.
@@ -255,7 +256,8 @@ TEST_CASE("assign_shares: every share gets work, none more than the largest subd
   CHECK_THROWS_AS(madd::mesh_share({}, {}, {}, 2, 2, {}), madd::OptionError);
 }
 
-TEST_CASE("mesh part files: the .node carries each vertex's global id and owner, the .vtu its GlobalIds, the .pvtu every piece") {
+TEST_CASE("mesh part files: the .node carries each vertex's global id and owner, the .vtu its GlobalIds, the .pvtu "
+          "every piece") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
   const madd::MeshOptions o = madd::test::options_for(4, 30, madd::domain_area(domain) / 500);
   int rounds = 0;

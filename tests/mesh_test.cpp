@@ -81,13 +81,14 @@ void check_mesh(const Mesh& m, const madd::Pslg& domain, double max_area) {
   }
   // Angles: below the bound only as many triangles as the shortfall counts.
   std::size_t below = 0;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) below += smallest_angle_deg(m, t) < m.min_triangle_angle_deg - 1e-9;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    below += smallest_angle_deg(m, t) < m.min_triangle_angle_deg - 1e-9;
   CHECK(below == m.shortfall.total());
 }
 
 madd::Pslg pipe() { return madd::read_domain(MADD_DATA_DIR "/pipe.poly"); }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("mesh: the pipe at N = 16, q 30, a 0.002: conforming, every angle >= 30, every triangle within the bound") {
   const madd::Pslg domain = pipe();
@@ -112,7 +113,8 @@ TEST_CASE("mesh: the same mesh for 1, 2 and 3 threads") {
   check_mesh(one, domain, o.size.max_triangle_area);
 }
 
-TEST_CASE("mesh: each subdomain is constrained Delaunay (brute force: no vertex of the subdomain inside a circumcircle it sees)") {
+TEST_CASE("mesh: each subdomain is constrained Delaunay (brute force: no vertex of the subdomain inside a circumcircle "
+          "it sees)") {
   const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/l_shape.poly");
   madd::MeshOptions o = options_for(3, 25, madd::domain_area(domain) / 300);
   const Mesh m = madd::mesh(domain, o);
@@ -171,7 +173,8 @@ TEST_CASE("discretise: a separator's split points are shared by both its subdoma
   CHECK(madd::verify_decomposition(split, domain, 8).ok());
 }
 
-TEST_CASE("mesh: a 0.5-degree input angle terminates, and the triangles left below the bound are counted as input angles") {
+TEST_CASE(
+    "mesh: a 0.5-degree input angle terminates, and the triangles left below the bound are counted as input angles") {
   // A thin wedge: two long sides meeting at 0.5 degrees at the origin.
   madd::Pslg wedge;
   const double a = 0.5 * std::numbers::pi / 180;

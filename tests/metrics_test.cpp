@@ -30,7 +30,7 @@ std::string all_problems(const Verification& v) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("metrics") {
 
@@ -102,8 +102,8 @@ TEST_CASE("deciles follow Python's statistics.quantiles exclusive method") {
 
 TEST_CASE("verify_decomposition accepts every hand-made decomposition") {
   for (const Fixture& f : test::all_fixtures()) {
-    const Verification v = verify_decomposition(f.decomposition, f.domain,
-                                                 static_cast<std::uint32_t>(f.decomposition.subdomains.size()));
+    const Verification v =
+        verify_decomposition(f.decomposition, f.domain, static_cast<std::uint32_t>(f.decomposition.subdomains.size()));
     INFO(all_problems(v));
     CHECK(v.ok());
   }
@@ -141,11 +141,9 @@ TEST_CASE("verify_decomposition: a separator without its twin") {
 
 TEST_CASE("verify_decomposition: T-junction") {
   // Right half split again at y = 0.5; the left half does not know the new vertex.
-  const Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {0.5, 1}, {0.5, 0.5}, {1, 0.5}}, 4,
-                                       {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
-                                       {{{{0, 4, 5, 3}}, {0.25, 0.5}, {}},
-                                        {{{4, 1, 7, 6}}, {0.75, 0.25}, {}},
-                                        {{{6, 7, 2, 5}}, {0.75, 0.75}, {}}});
+  const Fixture f = test::make_fixture(
+      {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {0.5, 1}, {0.5, 0.5}, {1, 0.5}}, 4, {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+      {}, {{{{0, 4, 5, 3}}, {0.25, 0.5}, {}}, {{{4, 1, 7, 6}}, {0.75, 0.25}, {}}, {{{6, 7, 2, 5}}, {0.75, 0.75}, {}}});
   const Verification v = verify_decomposition(f.decomposition, f.domain, 3);
   INFO(all_problems(v));
   CHECK(mentions(v, "T-junction"));
@@ -153,9 +151,9 @@ TEST_CASE("verify_decomposition: T-junction") {
 
 TEST_CASE("verify_decomposition: an angle below the bound") {
   // Slanted separator from (0.3, 0) to (0.7, 1): angles of about 68.2 and 111.8 deg.
-  Fixture f = test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0}, {0.7, 1}}, 4,
-                                 {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
-                                 {{{{0, 4, 5, 3}}, {0.2, 0.5}, {}}, {{{4, 1, 2, 5}}, {0.8, 0.5}, {}}});
+  Fixture f =
+      test::make_fixture({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0}, {0.7, 1}}, 4, {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {},
+                         {{{{0, 4, 5, 3}}, {0.2, 0.5}, {}}, {{{4, 1, 2, 5}}, {0.8, 0.5}, {}}});
   f.decomposition.separator_angle_deg = 60;
   CHECK(verify_decomposition(f.decomposition, f.domain, 2).ok());
   f.decomposition.separator_angle_deg = 70;
@@ -204,7 +202,8 @@ TEST_CASE("verify_decomposition: a hole ring outside the outer ring, or inside a
   f = test::surrounded();
   Decomposition& e = f.decomposition;
   const auto first = static_cast<std::uint32_t>(e.points.size());
-  for (const Point p : {Point{1.25, 1.25}, Point{1.25, 1.75}, Point{1.75, 1.75}, Point{1.75, 1.25}}) e.points.push_back(p);
+  for (const Point p : {Point{1.25, 1.25}, Point{1.25, 1.75}, Point{1.75, 1.75}, Point{1.75, 1.25}})
+    e.points.push_back(p);
   ring = {first, first + 1, first + 2, first + 3};
   segs.clear();
   for (std::uint32_t k = 0; k < 4; ++k) {
@@ -246,12 +245,14 @@ Fixture triangle_far_away(Point shift) {
   const double o = 1e9;
   const Point a{o, o}, b{o + 1, o + 0.3}, c{o + 0.4, o + 1};
   const Point m = lerp(a, b, 0.6) + shift;
-  Fixture f = test::make_fixture({a, b, c, m}, 3, {{0, 1}, {1, 2}, {2, 0}}, {},
-                                 {{{{0, 3, 2}}, triangle_centroid(a, m, c), {}}, {{{3, 1, 2}}, triangle_centroid(m, b, c), {}}});
+  Fixture f = test::make_fixture(
+      {a, b, c, m}, 3, {{0, 1}, {1, 2}, {2, 0}}, {},
+      {{{{0, 3, 2}}, triangle_centroid(a, m, c), {}}, {{{3, 1, 2}}, triangle_centroid(m, b, c), {}}});
   Decomposition& d = f.decomposition;
   // make_fixture finds pieces by exact incidence, which m misses: a-m and m-b are pieces of side 0.
   for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
-    const std::uint32_t lo = std::min(d.segments[g].a, d.segments[g].b), hi = std::max(d.segments[g].a, d.segments[g].b);
+    const std::uint32_t lo = std::min(d.segments[g].a, d.segments[g].b),
+                        hi = std::max(d.segments[g].a, d.segments[g].b);
     if (hi == 3 && lo <= 1) {
       d.segment_origin[g] = 0;
       d.segments[g].marker = 1;
@@ -262,7 +263,8 @@ Fixture triangle_far_away(Point shift) {
   return f;
 }
 
-TEST_CASE("verify_decomposition: a vertex rounded off a sloping side far from the origin is accepted; farther off it is not") {
+TEST_CASE("verify_decomposition: a vertex rounded off a sloping side far from the origin is accepted; farther off it "
+          "is not") {
   const Fixture rounded = triangle_far_away({0, 0});
   REQUIRE(orient2d(rounded.domain.points[0], rounded.domain.points[1], rounded.decomposition.points[3]) != 0.0);
   const Verification v = verify_decomposition(rounded.decomposition, rounded.domain, 2);
@@ -299,7 +301,7 @@ TEST_CASE("verify_decomposition: wrong marker and malformed indices do not crash
   CHECK(mentions(verify_decomposition(f.decomposition, f.domain, 2), "malformed"));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("metrics")
 
 // The new-angle measure decides the side of 180 degrees exactly: near a
 // straight corner the rounded cross product can have the wrong sign, which
@@ -326,4 +328,4 @@ TEST_CASE("new angles: the side of 180 degrees follows orient2d where the rounde
   REQUIRE(wrong_sign > 0);  // the grid does hold such points, so the test is not vacuous
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("metrics")

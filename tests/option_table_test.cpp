@@ -32,13 +32,14 @@ std::string fingerprint(const CommandLine& l) {
   const madd::DecomposeOptions& d = l.mesh.decomposition;
   const madd::MeshSizeOptions& s = l.mesh.size;
   std::ostringstream out;
-  out << d.subdomains << ' ' << d.separator_angle_deg << ' ' << d.boundary_refinement << ' ' << d.min_split_quality << ' '
-      << d.threads << ' ' << d.seed << ' ' << d.smoothing_iterations << ' ' << d.repair_balance_above << ' '
-      << d.gradation << ' ' << d.adaptive_boundary_refinement << ' ' << d.interpolation << ' ' << bool(d.weight_function) << ' '
-      << bool(d.subdomain_area_function) << ' ' << d.subdomain_area_ratio << ' ' << d.time_limit_seconds << ' '
-      << d.max_memory_bytes << " | " << s.min_triangle_angle_deg << ' ' << s.max_triangle_area << ' ' << bool(s.triangle_area_function) << ' '
-      << l.mesh.balance_by_work << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report
-      << l.report_file << ' ' << l.quiet << l.verbose << l.help << l.subdomains_given;
+  out << d.subdomains << ' ' << d.separator_angle_deg << ' ' << d.boundary_refinement << ' ' << d.min_split_quality
+      << ' ' << d.threads << ' ' << d.seed << ' ' << d.smoothing_iterations << ' ' << d.repair_balance_above << ' '
+      << d.gradation << ' ' << d.adaptive_boundary_refinement << ' ' << d.interpolation << ' '
+      << bool(d.weight_function) << ' ' << bool(d.subdomain_area_function) << ' ' << d.subdomain_area_ratio << ' '
+      << d.time_limit_seconds << ' ' << d.max_memory_bytes << " | " << s.min_triangle_angle_deg << ' '
+      << s.max_triangle_area << ' ' << bool(s.triangle_area_function) << ' ' << l.mesh.balance_by_work
+      << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report << l.report_file << ' ' << l.quiet
+      << l.verbose << l.help << l.subdomains_given;
   return out.str();
 }
 
@@ -48,7 +49,7 @@ bool takes(const CommandOptions& command, const std::string& name) {
   return false;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("option table") {
 
@@ -58,7 +59,7 @@ TEST_CASE("every row once, with a setter, and taken by some command") {
     CAPTURE(row.name);
     CHECK(names.insert(row.name).second);
     CHECK(static_cast<bool>(row.set));
-    CHECK((row.arity == Arity::none) == (row.value == nullptr));  // a value has a name in the help
+    CHECK((row.arity == Arity::none) == (row.value == nullptr));       // a value has a name in the help
     CHECK((row.scope == Scope::front_end) == (row.field == nullptr));  // a library field says where it lives
     bool used = false;
     for (const CommandOptions& command : command_options()) used = used || takes(command, row.name);
@@ -153,4 +154,4 @@ TEST_CASE("a bad value names the flag as typed; the library's errors too, in the
   CHECK(parse("mesh", {"-n"}, line) == "option '-n' needs a value");
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("option table")

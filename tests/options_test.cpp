@@ -55,7 +55,7 @@ struct Case {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("options") {
 
@@ -88,10 +88,22 @@ TEST_CASE("check_options refuses every field out of its range, naming the field"
       {"subdomain_area_ratio", [](DecomposeOptions& o) { o.subdomain_area_ratio = 0; }},
       {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = -1; }},
       {"time_limit_seconds", [](DecomposeOptions& o) { o.time_limit_seconds = not_a_number; }},
-      {"weight_samples", [](DecomposeOptions& o) { o.weight_samples = {{{0.5, 0.5}, -1}}; }},
-      {"weight_samples", [](DecomposeOptions& o) { o.weight_samples = {{{not_a_number, 0.5}, 1}}; }},
-      {"subdomain_area_samples", [](DecomposeOptions& o) { o.subdomain_area_samples = {{{0.5, 0.5}, 0}}; }},
-      {"subdomain_area_samples", [](DecomposeOptions& o) { o.subdomain_area_samples = {{{0.5, 0.5}, not_a_number}}; }},
+      {"weight_samples",
+       [](DecomposeOptions& o) {
+         o.weight_samples = {{{0.5, 0.5}, -1}};
+       }},
+      {"weight_samples",
+       [](DecomposeOptions& o) {
+         o.weight_samples = {{{not_a_number, 0.5}, 1}};
+       }},
+      {"subdomain_area_samples",
+       [](DecomposeOptions& o) {
+         o.subdomain_area_samples = {{{0.5, 0.5}, 0}};
+       }},
+      {"subdomain_area_samples",
+       [](DecomposeOptions& o) {
+         o.subdomain_area_samples = {{{0.5, 0.5}, not_a_number}};
+       }},
   };
   for (const Case& c : bad) {
     CAPTURE(c.field);
@@ -120,7 +132,9 @@ TEST_CASE("values at the ends of each range are accepted") {
       [](DecomposeOptions& o) { o.max_split_retries = 0; },
       [](DecomposeOptions& o) { o.gradation = 0; },
       [](DecomposeOptions& o) { o.time_limit_seconds = 0; },
-      [](DecomposeOptions& o) { o.weight_samples = {{{0.5, 0.5}, 0}}; },
+      [](DecomposeOptions& o) {
+        o.weight_samples = {{{0.5, 0.5}, 0}};
+      },
       [](DecomposeOptions& o) { o.gradation = 2, o.interpolation = 0.5; },
   };
   for (const auto& set : good) {
@@ -257,4 +271,4 @@ TEST_CASE("every error carries its kind") {
   CHECK(located.requirement() == "must be > 0");
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("options")

@@ -67,8 +67,7 @@ void check_geo(const Decomposition& d) {
   std::set<std::pair<std::uint32_t, std::uint32_t>> lines;
   for (const auto& [a, b] : g.lines) lines.insert({std::min(a, b), std::max(a, b)});
   CHECK(lines.size() == d.segments.size());
-  for (std::size_t j = 0; j < d.segments.size(); ++j)
-    CHECK(g.lines[j] == std::pair{d.segments[j].a, d.segments[j].b});
+  for (std::size_t j = 0; j < d.segments.size(); ++j) CHECK(g.lines[j] == std::pair{d.segments[j].a, d.segments[j].b});
   // Loops are closed chains; separators are used by two loops, boundary pieces by one.
   std::vector<int> uses(d.segments.size(), 0);
   for (const auto& loop : g.loops) {
@@ -214,8 +213,8 @@ TEST_CASE("interior output: geo embeds interior segments and isolated points, in
   CHECK(g.embedded_lines.at(1) == std::vector<std::int64_t>{8, 9, 10, 11});  // the loop, in subdomain 0
   CHECK(g.embedded_lines.at(2) == std::vector<std::int64_t>{12});            // the dangling segment
   CHECK(g.embedded_points.at(2) == std::vector<std::int64_t>{11});           // the isolated point
-  CHECK(g.physical_curves.at("boundary_7").size() == 4);   // the loop's marker
-  CHECK(g.physical_curves.at("boundary_1").size() == 1);   // the dangling piece: input marker 0, so 1
+  CHECK(g.physical_curves.at("boundary_7").size() == 4);                     // the loop's marker
+  CHECK(g.physical_curves.at("boundary_1").size() == 1);                     // the dangling piece: input marker 0, so 1
   CHECK(format_geo(d).find("Physical Curve(\"boundary_7\", 7)") != std::string::npos);
   // The isolated point's size is its subdomain's shortest segment (the dangling one, 0.3).
   CHECK(g.points.size() == d.points.size());
@@ -364,6 +363,6 @@ TEST_CASE("gmsh meshes the .geo conformingly (skipped without gmsh)") {
   fs::remove_all(dir, ignored);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("output_formats")
 
-} // namespace
+}  // namespace

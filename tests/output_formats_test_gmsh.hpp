@@ -19,8 +19,8 @@
 namespace madd::test {
 
 struct MshElement {
-  int type = 0;                      // 1 line, 2 triangle, 15 point
-  std::vector<long> tags;            // physical, elementary, ...
+  int type = 0;            // 1 line, 2 triangle, 15 point
+  std::vector<long> tags;  // physical, elementary, ...
   std::vector<long> nodes;
 };
 
@@ -167,7 +167,8 @@ inline void check_gmsh_embedded(const Decomposition& d, const Msh& m) {
       std::sort(along.begin(), along.end());
       REQUIRE(along.size() >= 2);
       for (std::size_t i = 0; i + 1 < along.size(); ++i)
-        CHECK(edges.count({std::min(along[i].second, along[i + 1].second), std::max(along[i].second, along[i + 1].second)}) == 1);
+        CHECK(edges.count({std::min(along[i].second, along[i + 1].second),
+                           std::max(along[i].second, along[i + 1].second)}) == 1);
     }
     for (const std::uint32_t p : sub.interior_points) {
       bool found = false;
@@ -177,4 +178,4 @@ inline void check_gmsh_embedded(const Decomposition& d, const Msh& m) {
   }
 }
 
-} // namespace madd::test
+}  // namespace madd::test

@@ -59,14 +59,14 @@ inline std::string trim(const std::string& s) {
 
 // ---- gmsh .geo (the statements format_geo writes) ----
 struct GeoModel {
-  std::vector<Point> points;                                   // Point(i) at [i-1]
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;  // 0-based point indices
-  std::vector<std::vector<std::int64_t>> loops;                // signed 1-based Line ids
-  std::vector<std::vector<std::int64_t>> surfaces;             // Curve Loop ids
-  std::map<std::int64_t, std::string> physical_surfaces;       // tag -> name
+  std::vector<Point> points;                                           // Point(i) at [i-1]
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;          // 0-based point indices
+  std::vector<std::vector<std::int64_t>> loops;                        // signed 1-based Line ids
+  std::vector<std::vector<std::int64_t>> surfaces;                     // Curve Loop ids
+  std::map<std::int64_t, std::string> physical_surfaces;               // tag -> name
   std::map<std::string, std::multiset<std::int64_t>> physical_curves;  // name -> Line ids
-  std::map<std::int64_t, std::vector<std::int64_t>> embedded_lines;   // surface -> "Line{...} In Surface"
-  std::map<std::int64_t, std::vector<std::int64_t>> embedded_points;  // surface -> "Point{...} In Surface"
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_lines;    // surface -> "Line{...} In Surface"
+  std::map<std::int64_t, std::vector<std::int64_t>> embedded_points;   // surface -> "Point{...} In Surface"
 };
 
 inline std::vector<std::string> split_commas(const std::string& s) {
@@ -80,7 +80,8 @@ inline std::vector<std::string> split_commas(const std::string& s) {
 inline std::vector<std::int64_t> brace_ids(const std::string& s) {
   if (s.size() < 2 || s.front() != '{' || s.back() != '}') throw std::runtime_error("bad list: " + s);
   std::vector<std::int64_t> ids;
-  for (const std::string& v : split_commas(s.substr(1, s.size() - 2))) ids.push_back(static_cast<std::int64_t>(to_number(v)));
+  for (const std::string& v : split_commas(s.substr(1, s.size() - 2)))
+    ids.push_back(static_cast<std::int64_t>(to_number(v)));
   return ids;
 }
 
@@ -275,10 +276,10 @@ inline Json parse_json(const std::string& text) { return JsonParser(text).docume
 // Cells in POLYDATA's order: vertices, lines, polygons; the cell data of all.
 struct VtkPolyData {
   std::vector<Point> points;
-  std::vector<std::uint32_t> vertices;                       // VERTICES (one point each)
+  std::vector<std::uint32_t> vertices;                         // VERTICES (one point each)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> lines;  // LINES (two points each)
-  std::vector<std::vector<std::uint32_t>> cells;             // POLYGONS
-  std::vector<long> subdomain;                               // per cell, vertices first
+  std::vector<std::vector<std::uint32_t>> cells;               // POLYGONS
+  std::vector<long> subdomain;                                 // per cell, vertices first
   std::vector<double> area, weight;
   std::vector<long> kind, marker;
   std::vector<double> region_attribute, region_max_area;  // only with the input's regions
@@ -372,7 +373,8 @@ inline VtkPolyData parse_vtk(const std::string& text) {
     for (std::size_t c = 0; c < cells; ++c) {
       double x = 0;
       long i = 0;
-      if (!(real ? static_cast<bool>(in >> x) : static_cast<bool>(in >> i))) throw std::runtime_error("VTK: short " + name);
+      if (!(real ? static_cast<bool>(in >> x) : static_cast<bool>(in >> i)))
+        throw std::runtime_error("VTK: short " + name);
       if (name == "area") v.area.push_back(x);
       else if (name == "weight") v.weight.push_back(x);
       else if (name == "region_attribute") v.region_attribute.push_back(x);
@@ -385,6 +387,6 @@ inline VtkPolyData parse_vtk(const std::string& text) {
   return v;
 }
 
-} // namespace madd::test
+}  // namespace madd::test
 
 #include "output_formats_test_gmsh.hpp"

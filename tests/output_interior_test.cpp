@@ -53,8 +53,8 @@ bool strictly_inside(const Decomposition& d, std::uint32_t k, Point p) {
 bool on_any_segment(const Decomposition& d, Point p) {
   for (const Segment& s : d.segments) {
     const Point a = d.points[s.a], b = d.points[s.b];
-    if (orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
-        std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+    if (orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+        p.y <= std::max(a.y, b.y))
       return true;
   }
   return false;
@@ -67,7 +67,8 @@ bool inside_loop(const Decomposition& d, Point p) {
 }
 
 Point centroid(const Triangulation& tri, std::uint32_t t) {
-  const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
+  const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]],
+              c = tri.points[tri.triangles[t][2]];
   return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
 }
 
@@ -76,7 +77,8 @@ Point centroid(const Triangulation& tri, std::uint32_t t) {
 // the file has too, so a centroid of the file's triangles is never on one.
 double attribute_at(const Triangulation& tri, Point p) {
   for (std::uint32_t t = 0; t < tri.triangle_count(); ++t) {
-    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
+    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]],
+                c = tri.points[tri.triangles[t][2]];
     if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) return tri.attributes[t];
   }
   FAIL("no triangle holds (" << p.x << ", " << p.y << ")");
@@ -102,7 +104,8 @@ Triangulation with_regions(const Pslg& p) {
 // and the area bound the input gives at the same place.
 void check_regions_as_input(const Pslg& file, const Pslg& input) {
   const Triangulation got = with_regions(file), want = with_regions(input);
-  const Triangulation got_area = with_regions(areas_as_attributes(file)), want_area = with_regions(areas_as_attributes(input));
+  const Triangulation got_area = with_regions(areas_as_attributes(file)),
+                      want_area = with_regions(areas_as_attributes(input));
   REQUIRE(got.triangle_count() > 0);
   for (std::uint32_t t = 0; t < got.triangle_count(); ++t) {
     const Point c = centroid(got, t);
@@ -114,7 +117,7 @@ void check_regions_as_input(const Pslg& file, const Pslg& input) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("output") {
 
@@ -138,7 +141,7 @@ TEST_CASE("interior output: a face per part of a subdomain, each with the input 
   }
   CHECK(in_loop == 1);
   // A region point strictly inside the face it covers is the face's point.
-  CHECK(faces[0].point != f.domain.regions[1].at);   // B is not in the left half
+  CHECK(faces[0].point != f.domain.regions[1].at);  // B is not in the left half
   CHECK((faces[1].point == f.domain.regions[0].at || faces[0].point == f.domain.regions[0].at));
   CHECK(faces[2].point == f.domain.regions[1].at);
 
@@ -226,7 +229,8 @@ TEST_CASE("interior output 2: each file has its interior segments, isolated poin
   write_split(d, (tmp.path / "parts").string(), "sq");
   for (std::uint32_t k = 0; k < 2; ++k) {
     const std::string text = format_subdomain_poly(d, k);
-    CHECK(test::read_text(tmp.path / "parts" / split_file_name("sq", k, 2)) == text);  // faces computed once or per file
+    CHECK(test::read_text(tmp.path / "parts" / split_file_name("sq", k, 2)) ==
+          text);  // faces computed once or per file
     const PolyFile back = parse_poly(text);
     validate_pslg(back.pslg);
     const Subdomain& sub = d.subdomains[k];
@@ -242,7 +246,8 @@ TEST_CASE("interior output 2: each file has its interior segments, isolated poin
     for (const auto& ring : sub.ring_segments)
       for (const std::uint32_t j : ring) used.insert(j);
     used.insert(sub.interior_segments.begin(), sub.interior_segments.end());
-    for (const std::uint32_t j : used) want[key(d.points[d.segments[j].a], d.points[d.segments[j].b])] = d.segments[j].marker;
+    for (const std::uint32_t j : used)
+      want[key(d.points[d.segments[j].a], d.points[d.segments[j].b])] = d.segments[j].marker;
     for (const Segment& s : back.pslg.segments) got[key(back.pslg.points[s.a], back.pslg.points[s.b])] = s.marker;
     CHECK(got == want);
     CHECK(back.pslg.segments.size() == used.size());
@@ -277,7 +282,7 @@ TEST_CASE("interior output 4: SVG draws interior segments dashed and isolated po
   CHECK(count_of(path, "M") == 2);  // the loop, then the dangling segment
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("output")
 
 // ---- round trips: decompose, write, read back with the library's reader ----
 namespace {
@@ -371,7 +376,7 @@ void check_round_trip(const Pslg& domain, std::uint32_t n) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("output") {
 
@@ -396,7 +401,7 @@ TEST_CASE("interior output round trip: data/estuary.poly (every kind of interior
   check_round_trip(read_domain(std::string(MADD_DATA_DIR) + "/estuary.poly"), 6);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("output")
 
 #ifdef MADD_CLI_PATH
 namespace {
@@ -418,11 +423,12 @@ Run run_madd(const std::filesystem::path& dir, const std::string& args) {
   return {code, test::read_text(dir / "stdout.txt") + test::read_text(dir / "stderr.txt")};
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("output") {
 
-TEST_CASE("interior output through the CLI: every output of a face.poly kind of domain, and madd check on the .poly files") {
+TEST_CASE(
+    "interior output through the CLI: every output of a face.poly kind of domain, and madd check on the .poly files") {
   test::TempDir tmp("output-interior-cli");
   {
     std::ofstream out(tmp.path / "face.poly");
@@ -431,7 +437,8 @@ TEST_CASE("interior output through the CLI: every output of a face.poly kind of 
   const Run run = run_madd(tmp.path, "decompose face.poly -n 4 -o all.poly --split parts --subdomains-file face.sub "
                                      "--svg face.svg --geo face.geo --vtk face.vtk --geojson face.json -q");
   REQUIRE_MESSAGE(run.code == 0, run.text);
-  for (const char* file : {"all.poly", "parts/face-0.poly", "parts/face-1.poly", "parts/face-2.poly", "parts/face-3.poly"}) {
+  for (const char* file :
+       {"all.poly", "parts/face-0.poly", "parts/face-1.poly", "parts/face-2.poly", "parts/face-3.poly"}) {
     const Run check = run_madd(tmp.path, std::string("check ") + file);
     CHECK_MESSAGE(check.code == 0, check.text);
     CHECK_MESSAGE(check.text.find(std::string(file) + ": valid domain") != std::string::npos, check.text);
@@ -440,5 +447,5 @@ TEST_CASE("interior output through the CLI: every output of a face.poly kind of 
   CHECK_MESSAGE(again.code == 0, again.text);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("output")
 #endif

@@ -107,7 +107,7 @@ Decomposition parse_subdomain_file(const std::string& text) {
   return d;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("output") {
 
@@ -240,7 +240,7 @@ void check_subdomain_file_round_trip(const Decomposition& d) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("output 3: the subdomain file parses back to the same decomposition") {
   for (const test::Fixture& f : test::all_fixtures()) check_subdomain_file_round_trip(f.decomposition);
@@ -303,8 +303,7 @@ TEST_CASE("output 5: the report is one JSON object with every figure") {
   for (const char* key : {"subdomains", "angle_min", "angle_p10", "angle_median", "angle_p90", "boundary_angle_median",
                           "separator_length", "separator_length_norm", "mean_separator_per_subdomain",
                           "max_sep_len_over_area_norm", "max_area_over_mean", "min_area_over_mean",
-                          "max_weight_over_mean", "min_weight_over_mean", "shortest_new_segment_norm", "times"})
-  {
+                          "max_weight_over_mean", "min_weight_over_mean", "shortest_new_segment_norm", "times"}) {
     std::string quoted = "\"";
     quoted += key;
     quoted += "\": ";
@@ -315,4 +314,4 @@ TEST_CASE("output 5: the report is one JSON object with every figure") {
   CHECK(json.find("nan") == std::string::npos);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("output")

@@ -54,7 +54,7 @@ madd::ParseError parse_error_of(std::string_view text) {
 
 const char* const square = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n";
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("poly_io") {
 
@@ -117,9 +117,8 @@ TEST_CASE("every data/bad file fails with the expected kind and line, as a domai
 }
 
 TEST_CASE("Triangle's lenient layout: comments, blank lines, CRLF, defaults, 0-based ids") {
-  const std::string text =
-      "# a comment\n\n  4 2 # dimension only\r\n0 0 0\r\n1 1 0 # trailing comment\n2 1 1\n3 0 1\n"
-      "\n4\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n";
+  const std::string text = "# a comment\n\n  4 2 # dimension only\r\n0 0 0\r\n1 1 0 # trailing comment\n2 1 1\n3 0 1\n"
+                           "\n4\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n";
   const madd::PolyFile f = madd::parse_poly(text, "x.poly");
   CHECK(f.pslg.first_index == 0);
   CHECK(f.pslg.points.size() == 4);
@@ -165,7 +164,7 @@ TEST_CASE("parse errors carry line and column") {
   CHECK(e.line() == 1);
   e = parse_error_of(std::string(square) + "1\n1 0.5 0.5 1 -1\nextra\n");
   CHECK(e.line() == 14);
-  e = parse_error_of(std::string(square) + "1\n1 0.5 0.5\n"); // a region needs x, y and an attribute
+  e = parse_error_of(std::string(square) + "1\n1 0.5 0.5\n");  // a region needs x, y and an attribute
   CHECK(e.line() == 13);
 }
 
@@ -272,4 +271,4 @@ TEST_CASE("write_file_atomically writes through a rename and reports failures") 
   CHECK_THROWS_AS(madd::read_poly_file((dir / "none.poly").string()), madd::Error);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("poly_io")

@@ -20,7 +20,7 @@ __extension__ typedef unsigned __int128 u128;
 // ---- A minimal signed big integer: sign + little-endian 32-bit limbs. ----
 struct Big {
   bool neg = false;
-  std::vector<std::uint32_t> mag; // no leading zero limbs; empty means 0
+  std::vector<std::uint32_t> mag;  // no leading zero limbs; empty means 0
 };
 
 inline void trim(Big& a) {
@@ -168,8 +168,7 @@ inline int exact_incircle(Point a, Point b, Point c, Point d) {
   const Big alift = adx * adx + ady * ady;
   const Big blift = bdx * bdx + bdy * bdy;
   const Big clift = cdx * cdx + cdy * cdy;
-  return sign(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
-              clift * (adx * bdy - bdx * ady));
+  return sign(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady));
 }
 
-} // namespace madd::test_ref
+}  // namespace madd::test_ref

@@ -34,14 +34,11 @@ int int_orient(const std::int64_t* p) {
 int int_incircle(const std::int64_t* p) {
   const i128 adx = p[0] - p[6], ady = p[1] - p[7], bdx = p[2] - p[6], bdy = p[3] - p[7];
   const i128 cdx = p[4] - p[6], cdy = p[5] - p[7];
-  return sgn((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-             (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+  return sgn((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
              (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady));
 }
 
-double naive_orient(Point a, Point b, Point c) {
-  return (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
-}
+double naive_orient(Point a, Point b, Point c) { return (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x); }
 
 double naive_incircle(Point a, Point b, Point c, Point d) {
   const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
@@ -74,7 +71,7 @@ Point near_circle(Point c, double r, double t, int i, int j) {
   return {ulps(c.x + r * std::cos(t), i), ulps(c.y + r * std::sin(t), j)};
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("predicates") {
 
@@ -130,14 +127,14 @@ TEST_CASE("orient2d exactly collinear integer points give zero") {
 
 TEST_CASE("orient2d random integers match __int128") {
   std::mt19937_64 rng(99);
-  for (const std::int64_t range : {std::int64_t{3}, std::int64_t{1} << 20, std::int64_t{1} << 52,
-                                   std::int64_t{1} << 60}) {
+  for (const std::int64_t range :
+       {std::int64_t{3}, std::int64_t{1} << 20, std::int64_t{1} << 52, std::int64_t{1} << 60}) {
     std::uniform_int_distribution<std::int64_t> coord(-range, range);
     for (int n = 0; n < 20000; ++n) {
       std::int64_t p[6];
       for (auto& v : p) {
         v = coord(rng);
-        v = static_cast<std::int64_t>(static_cast<double>(v)); // keep it representable
+        v = static_cast<std::int64_t>(static_cast<double>(v));  // keep it representable
       }
       const Point a{double(p[0]), double(p[1])}, b{double(p[2]), double(p[3])}, c{double(p[4]), double(p[5])};
       REQUIRE(sgn(orient2d(a, b, c)) == int_orient(p));
@@ -159,7 +156,7 @@ TEST_CASE("orient2d huge and tiny coordinates") {
   }
   const Point h{1e150, -1e150};
   CHECK(orient2d(h, {-1e150, 1e150}, {0.0, 0.0}) == 0.0);
-  CHECK(orient2d(h, {-1e150, 1e150}, {0.0, 1e-150}) == -2.0); // exact: -2e300 - 2 + 2e300
+  CHECK(orient2d(h, {-1e150, 1e150}, {0.0, 1e-150}) == -2.0);  // exact: -2e300 - 2 + 2e300
   CHECK(orient2d({ulps(1e150, 1), 1e150}, {-1e150, -1e150}, {0.0, 0.0}) < 0.0);
 }
 
@@ -210,7 +207,7 @@ TEST_CASE("incircle near-cocircular ulp perturbations match exact arithmetic") {
       }
     }
   }
-  CHECK(naive_wrong > 100); // the inputs really are hard for plain floating point
+  CHECK(naive_wrong > 100);  // the inputs really are hard for plain floating point
 }
 
 TEST_CASE("incircle exactly cocircular integer points give zero") {
@@ -342,4 +339,4 @@ TEST_CASE("predicates are thread-safe: no shared state between calls") {
   for (int m : mismatches) CHECK(m == 0);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("predicates")

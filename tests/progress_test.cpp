@@ -71,4 +71,4 @@ TEST_CASE("progress: with a required area, target is the maximum and done the co
   CHECK(done.back() == plain.subdomains.size());
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("decompose")

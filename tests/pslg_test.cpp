@@ -47,15 +47,14 @@ double triangles_area(const madd::Triangulation& tri) {
   return a;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("pslg") {
 
 TEST_CASE("validate_pslg accepts what a domain may not hold: interior, dangling and touching segments, lone vertices") {
   // A T-junction at (1, 0.5) on the right side, a dangling segment into the
   // interior, an isolated vertex, an open polyline outside.
-  const madd::Pslg p = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}, {2, 0}, {3, 1}},
-                                   {{4, 5, 0}, {7, 8, 0}});
+  const madd::Pslg p = square_with({{1, 0.5}, {0.5, 0.5}, {0.25, 0.75}, {2, 0}, {3, 1}}, {{4, 5, 0}, {7, 8, 0}});
   CHECK(!pslg_error(p));
   // As a domain, all but the polyline outside are interior constraints.
   try {
@@ -93,7 +92,8 @@ TEST_CASE("validate_pslg refuses crossings and overlaps unless asked, naming bot
   CHECK(e->ids() == std::vector<std::int64_t>{5, 1});
 }
 
-TEST_CASE("validate_pslg still refuses duplicates, zero length, holes on segments or with nothing to stop them, bad ranges") {
+TEST_CASE(
+    "validate_pslg still refuses duplicates, zero length, holes on segments or with nothing to stop them, bad ranges") {
   CHECK(pslg_error(square_with({{1, 1}}, {}))->problem() == InputProblem::duplicate_vertex);
   CHECK(pslg_error(square_with({}, {{2, 2, 0}}))->problem() == InputProblem::zero_length_segment);
   madd::Pslg on = square_with({}, {});
@@ -119,7 +119,9 @@ TEST_CASE("every domain is a PSLG: the bundled domains pass validate_pslg, their
     madd::validate_pslg(f.pslg, f.source);
     const madd::PslgSummary s = madd::summarize_pslg(f.pslg);
     CHECK(s.boundary_segments == f.pslg.segments.size());
-    CHECK(s.interior_segments + s.outside_segments + s.isolated_vertices + s.dangling_ends + s.vertices_inside_segments == 0);
+    CHECK(s.interior_segments + s.outside_segments + s.isolated_vertices + s.dangling_ends +
+              s.vertices_inside_segments ==
+          0);
     CHECK(s.parts == 1);
     CHECK(s.area == doctest::Approx(madd::domain_area(f.pslg)).epsilon(1e-12));
   }
@@ -131,10 +133,10 @@ TEST_CASE("summarize_pslg counts each kind of constraint of data/pslg/estuary.po
   const madd::PolyFile f = madd::read_poly_file(std::string(MADD_DATA_DIR) + "/pslg/estuary.poly");
   madd::validate_pslg(f.pslg, f.source);
   const madd::PslgSummary s = madd::summarize_pslg(f.pslg);
-  CHECK(s.boundary_segments == 6 + 4);           // the shore and the hole
-  CHECK(s.interior_segments == 3 + 2 + 3 + 1);   // loop, lane, levee with spur, groyne
+  CHECK(s.boundary_segments == 6 + 4);          // the shore and the hole
+  CHECK(s.interior_segments == 3 + 2 + 3 + 1);  // loop, lane, levee with spur, groyne
   CHECK(s.outside_segments == 0);
-  CHECK(s.isolated_vertices == 4);               // three survey points in the water, one in the hole
+  CHECK(s.isolated_vertices == 4);  // three survey points in the water, one in the hole
   CHECK(s.isolated_inside == 3);
   CHECK(s.vertices_inside_segments == 2);        // the groyne's end on the levee, a point on the lane
   CHECK(s.dangling_ends == 5);                   // lane end, levee ends, spur end, groyne start
@@ -202,4 +204,4 @@ TEST_CASE("decompose() takes interior segments and isolated vertices, and keeps 
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("pslg")

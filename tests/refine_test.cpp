@@ -33,7 +33,7 @@ std::size_t points_inside_segment(const FaceDomain& fd, std::uint32_t segment) {
   return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("refine") {
 
@@ -62,4 +62,4 @@ TEST_CASE("adaptive refine level: a heavy edge gets min(weight / mean, L) times 
   }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("refine")

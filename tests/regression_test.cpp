@@ -16,7 +16,7 @@ std::string corpus(const char* target, const char* name) {
   return std::string(MADD_SOURCE_DIR) + "/fuzz/corpus/" + target + "/" + name;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("regression") {
 
@@ -48,4 +48,4 @@ TEST_CASE("cdt find_exit hang: segment insertion during a split terminates") {
   madd::test::checked_decomposition(madd::read_domain(corpus("fuzz_decompose", "cdt_find_exit_hang")), 5, 45.0);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("regression")

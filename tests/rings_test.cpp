@@ -125,7 +125,7 @@ std::vector<Point> half_grid(int r) {
 
 const Ring unit_square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
-} // namespace
+}  // namespace
 
 TEST_CASE("rings: the unit square either way round, with points inside, outside, on edges and on vertices") {
   for (const bool ccw : {true, false}) {
@@ -140,7 +140,8 @@ TEST_CASE("rings: the unit square either way round, with points inside, outside,
     for (const Point p : {Point{0.5, 0}, Point{1, 0.5}, Point{0.5, 1}, Point{0, 0.5}})
       CHECK(locate_in_ring(view, p) == RingLocation::on_ring);
     // On an edge's line but beyond its ends, at a vertex's height, far away.
-    for (const Point p : {Point{2, 0}, Point{-1, 0}, Point{1, 2}, Point{0, -3}, Point{-1, 1}, Point{2, 1}, Point{5, 5}}) {
+    for (const Point p :
+         {Point{2, 0}, Point{-1, 0}, Point{1, 2}, Point{0, -3}, Point{-1, 1}, Point{2, 1}, Point{5, 5}}) {
       CHECK(locate_in_ring(view, p) == RingLocation::outside);
       CHECK(winding_number(view, p) == 0);
     }
@@ -155,8 +156,8 @@ TEST_CASE("rings: the unit square either way round, with points inside, outside,
 
 TEST_CASE("rings: an index cycle and the same ring as points agree") {
   // The square's corners scattered through a larger point array, plus a hole.
-  const std::vector<Point> points{{9, 9}, {1, 1}, {0, 0}, {7, 7}, {0, 1}, {1, 0}, {0.25, 0.25}, {0.25, 0.75},
-                                  {0.75, 0.75}, {0.75, 0.25}};
+  const std::vector<Point> points{{9, 9}, {1, 1},       {0, 0},       {7, 7},       {0, 1},
+                                  {1, 0}, {0.25, 0.25}, {0.25, 0.75}, {0.75, 0.75}, {0.75, 0.25}};
   const std::vector<std::uint32_t> cycle{2, 5, 1, 4};
   const std::vector<std::uint32_t> hole{6, 7, 8, 9};  // clockwise
   const RingView indexed(points, cycle);
@@ -277,12 +278,14 @@ TEST_CASE("rings: signs are exact for points a few ulps from an edge and nearly 
     const int sides[3] = {exact_orient(a, b, p) * turn, exact_orient(b, c, p) * turn, exact_orient(c, a, p) * turn};
     const bool outside = sides[0] < 0 || sides[1] < 0 || sides[2] < 0;
     const bool on_edge = !outside && (sides[0] == 0 || sides[1] == 0 || sides[2] == 0);
-    const RingLocation expected = outside ? RingLocation::outside : on_edge ? RingLocation::on_ring : RingLocation::inside;
+    const RingLocation expected = outside   ? RingLocation::outside
+                                  : on_edge ? RingLocation::on_ring
+                                            : RingLocation::inside;
     ++counts[static_cast<int>(expected)];
     for (const Ring& ring : {triangle, reversed(triangle)}) CHECK(locate_in_ring(RingView(ring), p) == expected);
     // A nearly collinear triangle a, p, b: its orientation is the exact sign.
     const int flat = exact_orient(a, p, b);
-    const Orientation want = flat > 0 ? Orientation::counter_clockwise
+    const Orientation want = flat > 0   ? Orientation::counter_clockwise
                              : flat < 0 ? Orientation::clockwise
                                         : Orientation::degenerate;
     CHECK(ring_orientation(RingView(Ring{a, p, b})) == want);

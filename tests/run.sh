@@ -28,6 +28,9 @@ need=""
 command -v cmake >/dev/null 2>&1 || need="$need cmake"
 command -v g++ >/dev/null 2>&1 || need="$need g++"
 [ -f /usr/include/doctest/doctest.h ] || need="$need doctest-dev"
+# clang-format checks the code's style (tests/check_format.sh); only the
+# configure step's test list depends on it.
+command -v clang-format >/dev/null 2>&1 || need="$need clang-format"
 if [ -n "$need" ]; then
   apt-get update -qq && apt-get install -y -qq $need
 fi

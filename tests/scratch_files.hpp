@@ -42,4 +42,4 @@ inline std::string read_text(const std::filesystem::path& p) {
   return s.str();
 }
 
-} // namespace madd::test
+}  // namespace madd::test

@@ -91,7 +91,7 @@ void check_script_error(const std::string& text, std::size_t line, const std::st
   });
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("script") {
 
@@ -200,7 +200,8 @@ TEST_CASE("a value out of its range is a bad option, located and named as the sc
   // A combination is checked at `dec`, with the script's names.
   check_script_option_error("set p=0.5\ndec 4", 2, 5, "interpolation", "p (interpolation) only applies");
   check_script_option_error("set a=2\ndec 4", 2, 5, "gradation", "a (gradation) grades by the domain's vertex weights");
-  check_script_option_error("setAreaFunction 0\ndec 8", 2, 5, "subdomain_area_function", "setAreaFunction must be finite and > 0");
+  check_script_option_error("setAreaFunction 0\ndec 8", 2, 5, "subdomain_area_function",
+                            "setAreaFunction must be finite and > 0");
 }
 
 TEST_CASE("read starts a fresh domain: background weights and areas do not carry over") {
@@ -384,4 +385,4 @@ TEST_CASE("a decomposition that fails verification is never written") {
   CHECK_FALSE(fs::exists(out));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("script")

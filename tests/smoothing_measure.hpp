@@ -11,12 +11,12 @@
 namespace madd::test {
 
 struct SmoothingFigures {
-  double shortest_norm = 0.0;   // shortest new segment / sqrt(mean area)
-  std::uint32_t short_count = 0;  // new segments shorter than 5% of sqrt(mean area)
+  double shortest_norm = 0.0;          // shortest new segment / sqrt(mean area)
+  std::uint32_t short_count = 0;       // new segments shorter than 5% of sqrt(mean area)
   std::uint32_t short_separators = 0;  // of which separators
-  std::uint32_t ends = 0;       // separator ends: vertices with a separator and degree >= 3
-  double on_existing = 0.0;     // share of ends at an input vertex or where >= 2 separators
-                                // meet the same point from both sides (degree >= 4)
+  std::uint32_t ends = 0;              // separator ends: vertices with a separator and degree >= 3
+  double on_existing = 0.0;            // share of ends at an input vertex or where >= 2 separators
+                                       // meet the same point from both sides (degree >= 4)
   double median_angle = 0.0;
   double min_angle = 0.0;
 };
@@ -58,4 +58,4 @@ inline SmoothingFigures smoothing_figures(const Decomposition& d, std::size_t in
   return f;
 }
 
-} // namespace madd::test
+}  // namespace madd::test

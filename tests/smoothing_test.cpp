@@ -25,7 +25,7 @@ madd::test::SmoothingFigures run(const madd::Pslg& domain, std::uint32_t n, int 
   return f;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("smoothing") {
 
@@ -63,4 +63,4 @@ TEST_CASE("smoothing is deterministic across thread counts") {
   CHECK(one == madd::decompose(domain, o));
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("smoothing")

@@ -83,9 +83,8 @@ EndRef on_segment(std::uint32_t segment, std::uint32_t local, Point p) {
 std::uint32_t segment_through(const Subdivision& sub, Point p) {
   for (std::uint32_t s = 0; s < sub.segments.size(); ++s) {
     const Point a = sub.points[sub.segments[s].a], b = sub.points[sub.segments[s].b];
-    if (std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) < 1e-12 &&
-        std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-        p.y <= std::max(a.y, b.y) && !(p == a) && !(p == b))
+    if (std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) < 1e-12 && std::min(a.x, b.x) <= p.x &&
+        p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y) && !(p == a) && !(p == b))
       return s;
   }
   return madd::no_index;
@@ -137,7 +136,7 @@ Subdivision two_ends_on_one_separator(const std::vector<Point>& right, double sn
   return sub;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("subdivision") {
 
@@ -179,8 +178,8 @@ TEST_CASE("merging the two sides of a split gives back the domain; compact drops
   const double area = sub.face_area(0);
   const std::uint32_t added = split(sub, 0);
   REQUIRE(sub.faces.size() == 2);
-  const std::size_t separators_before = static_cast<std::size_t>(
-      std::count(sub.origin.begin(), sub.origin.end(), madd::no_index));
+  const std::size_t separators_before =
+      static_cast<std::size_t>(std::count(sub.origin.begin(), sub.origin.end(), madd::no_index));
   REQUIRE(separators_before > 0);
   REQUIRE(sub.merge(0, added));
   CHECK(sub.faces.size() == 1);
@@ -267,4 +266,4 @@ TEST_CASE("faces that share no separator are not merged, and nothing changes") {
   CHECK(sub.faces[a].rings == rings);
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("subdivision")

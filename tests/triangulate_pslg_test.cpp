@@ -80,7 +80,8 @@ Scene random_scene(unsigned seed) {
           const double a = phase + 2 * std::numbers::pi * k / n;
           poly.push_back({cx + 0.5 + r * std::cos(a), cy + 0.5 + r * std::sin(a)});
           p.points.push_back(poly.back());
-          p.segments.push_back({base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>((k + 1) % n), 0});
+          p.segments.push_back(
+              {base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>((k + 1) % n), 0});
         }
         for (int k = static_cast<int>(rng() % 3); k > 0; --k)
           p.points.push_back({cx + 0.5 + 0.1 * (u(rng) - 0.5), cy + 0.5 + 0.1 * (u(rng) - 0.5)});  // inside it
@@ -98,7 +99,7 @@ Scene random_scene(unsigned seed) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("triangulate_pslg") {
 
@@ -122,7 +123,8 @@ TEST_CASE("random scenes: -c covers the hull (2n - 2 - h triangles), -p keeps ex
       std::size_t inside = 0;
       for (const Point& q : p.points) inside += inside_convex(poly, q);
       expected += poly.size() + 2 * inside - 2;
-      for (std::size_t k = 0; k < poly.size(); ++k) polygon_area += 0.5 * madd::cross(poly[k], poly[(k + 1) % poly.size()]);
+      for (std::size_t k = 0; k < poly.size(); ++k)
+        polygon_area += 0.5 * madd::cross(poly[k], poly[(k + 1) % poly.size()]);
     }
     CHECK(kept.triangle_count() == expected);
     CHECK(area_of(kept) == doctest::Approx(polygon_area));
@@ -132,7 +134,8 @@ TEST_CASE("random scenes: -c covers the hull (2n - 2 - h triangles), -p keeps ex
     for (const auto& t : triangle_set(kept)) {
       CHECK(hull_triangles.count(t) == 1);
       const Point c = (1.0 / 3.0) * (p.points[t[0]] + p.points[t[1]] + p.points[t[2]]);
-      CHECK(std::any_of(scene.polygons.begin(), scene.polygons.end(), [&](const auto& poly) { return inside_convex(poly, c); }));
+      CHECK(std::any_of(scene.polygons.begin(), scene.polygons.end(),
+                        [&](const auto& poly) { return inside_convex(poly, c); }));
     }
     // A hole point outside every polygon removes, with -c, what -p removes.
     madd::Pslg holed = p;
@@ -150,10 +153,9 @@ TEST_CASE("isolated vertices, a vertex on a segment, T-, Y-junctions and danglin
   // segment ending exactly inside the polyline's first piece (a T-junction),
   // a point exactly on the bottom side, and lone points.
   madd::Pslg p;
-  p.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.25, 0.5}, {0.5, 0.5}, {0.75, 0.75}, {0.5, 0.25},
-              {0.2, 0.1}, {0.375, 0.5}, {0.375, 0.9}, {0.5, 0}, {0.9, 0.2}, {0.1, 0.8}};
-  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {5, 6, 2},
-                {5, 7, 3}, {0, 8, 4}, {10, 9, 5}};
+  p.points = {{0, 0},      {1, 0},     {1, 1},       {0, 1},       {0.25, 0.5}, {0.5, 0.5}, {0.75, 0.75},
+              {0.5, 0.25}, {0.2, 0.1}, {0.375, 0.5}, {0.375, 0.9}, {0.5, 0},    {0.9, 0.2}, {0.1, 0.8}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {5, 6, 2}, {5, 7, 3}, {0, 8, 4}, {10, 9, 5}};
   madd::validate_pslg(p);
   CHECK_NOTHROW(madd::validate(p));  // a domain with interior constraints, as decompose takes
   for (const madd::TriangulateOptions& o : {madd::TriangulateOptions{}, hull_option}) {
@@ -278,11 +280,12 @@ TEST_CASE("regional attributes follow the triangles up to the segments; a later 
   odd.regions = {{{5, 1}, std::nan(""), -1.0}};
   const madd::Triangulation nan_region = madd::triangulate(odd, o);
   check_verified(nan_region, odd, o);
-  CHECK(std::count_if(nan_region.attributes.begin(), nan_region.attributes.end(), [](double a) { return std::isnan(a); }) == 39);
+  CHECK(std::count_if(nan_region.attributes.begin(), nan_region.attributes.end(),
+                      [](double a) { return std::isnan(a); }) == 39);
   // verify_triangulation catches an attribute that changes across an unconstrained edge.
   madd::Triangulation broken = tri;
   broken.attributes[0] += 1;
   CHECK(!madd::verify_triangulation(broken, &p, o).ok());
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("triangulate_pslg")

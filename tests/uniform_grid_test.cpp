@@ -82,7 +82,7 @@ double nearest_feature_by_scan(const Segments& s, Point p, std::uint32_t a, std:
   return best;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("uniform grid") {
 
@@ -96,9 +96,11 @@ TEST_CASE("uniform grid: the row index and the cell index list the same entries,
     const auto whole = by_row.row_range(row, 0, by_row.cols() - 1);
     // Sorted by column, then item: a cell's items increase.
     for (std::size_t k = 1; k < whole.size(); ++k)
-      CHECK((whole[k - 1].col < whole[k].col || (whole[k - 1].col == whole[k].col && whole[k - 1].item < whole[k].item)));
+      CHECK(
+          (whole[k - 1].col < whole[k].col || (whole[k - 1].col == whole[k].col && whole[k - 1].item < whole[k].item)));
     for (int q = 0; q < 20; ++q) {
-      auto c0 = static_cast<std::uint32_t>(rng() % by_row.cols()), c1 = static_cast<std::uint32_t>(rng() % by_row.cols());
+      auto c0 = static_cast<std::uint32_t>(rng() % by_row.cols()),
+           c1 = static_cast<std::uint32_t>(rng() % by_row.cols());
       if (q % 5 == 0) c1 = c0;
       const auto x = by_row.row_range(row, c0, c1), y = by_cell.row_range(row, c0, c1);
       REQUIRE(x.size() == y.size());
@@ -130,7 +132,8 @@ TEST_CASE("uniform grid: the ring search reaches every item unless told to stop,
   const UniformGrid grid = segment_grid(s, UniformGrid::Index::by_row);
   for (const Point p : {Point{5, 2}, Point{0, 0}, Point{-30, 50}, Point{10.2, 1}}) {
     std::set<std::uint32_t> seen;
-    grid.rings(p, [&](std::uint32_t i) { seen.insert(i); }, [](double) { return false; });
+    grid.rings(
+        p, [&](std::uint32_t i) { seen.insert(i); }, [](double) { return false; });
     CHECK(seen.size() == s.segments.size());
     // The bound handed to done() never exceeds the distance to an item not
     // yet visited: checked on the segments' ends.
@@ -140,13 +143,15 @@ TEST_CASE("uniform grid: the ring search reaches every item unless told to stop,
         [&](double lower) {
           for (std::uint32_t i = 0; i < s.segments.size(); ++i)
             if (visited.count(i) == 0)
-              for (const std::uint32_t v : {s.segments[i].a, s.segments[i].b}) CHECK(madd::distance(p, s.points[v]) >= lower);
+              for (const std::uint32_t v : {s.segments[i].a, s.segments[i].b})
+                CHECK(madd::distance(p, s.points[v]) >= lower);
           return false;
         });
   }
   CHECK(UniformGrid().cols() == 0);
   int visits = 0;
-  UniformGrid().rings({0, 0}, [&](std::uint32_t) { ++visits; }, [](double) { return false; });
+  UniformGrid().rings(
+      {0, 0}, [&](std::uint32_t) { ++visits; }, [](double) { return false; });
   CHECK(visits == 0);
 }
 
@@ -155,7 +160,8 @@ TEST_CASE("uniform grid: the local feature size is the scan's, bit for bit") {
     Segments s = random_segments(seed, seed == 5 ? 500 : 40);
     // Isolated vertices, as discretise adds them: segments of length 0.
     s.points.push_back({5.0, 2.0});
-    s.segments.push_back({static_cast<std::uint32_t>(s.points.size() - 1), static_cast<std::uint32_t>(s.points.size() - 1), 0});
+    s.segments.push_back(
+        {static_cast<std::uint32_t>(s.points.size() - 1), static_cast<std::uint32_t>(s.points.size() - 1), 0});
     const madd::detail::FeatureDistance features(s.points, s.segments);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -190,4 +196,4 @@ TEST_CASE("uniform grid: SegmentGrid lists each segment in the cells of its ends
     }
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("uniform grid")

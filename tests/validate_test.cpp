@@ -77,7 +77,7 @@ bool conflict(const madd::Pslg& p, const madd::Segment& s, const madd::Segment& 
   return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("validate") {
 
@@ -117,7 +117,7 @@ TEST_CASE("a hole touching the outer boundary at a vertex is accepted") {
   p.points.push_back({2, 1});
   p.points.push_back({3, 2});
   p.points.push_back({2, 3});
-  p.segments.push_back({0, 4, 0}); // the hole ring starts and ends at corner (0, 0)
+  p.segments.push_back({0, 4, 0});  // the hole ring starts and ends at corner (0, 0)
   p.segments.push_back({4, 5, 0});
   p.segments.push_back({5, 6, 0});
   p.segments.push_back({6, 0, 0});
@@ -156,7 +156,7 @@ TEST_CASE("crossing detection agrees with the O(n^2) exact check on random segme
   int clean_sets = 0;
   for (unsigned seed = 1; seed <= 60; ++seed) {
     std::mt19937 rng(seed);
-    const int grid = seed % 3 == 0 ? 6 : 40; // small grids: many collinear and touching cases
+    const int grid = seed % 3 == 0 ? 6 : 40;  // small grids: many collinear and touching cases
     const int n = 5 + static_cast<int>(seed) * 4;
     madd::Pslg p;
     std::vector<std::uint32_t> id(grid * grid, madd::no_index);
@@ -171,7 +171,7 @@ TEST_CASE("crossing detection agrees with the O(n^2) exact check on random segme
     for (int k = 0; k < n; ++k) {
       const int a = static_cast<int>(rng() % (grid * grid));
       int b = static_cast<int>(rng() % (grid * grid));
-      if (seed % 4 == 1) b = std::min(grid * grid - 1, a + 1 + grid * static_cast<int>(rng() % 2)); // short
+      if (seed % 4 == 1) b = std::min(grid * grid - 1, a + 1 + grid * static_cast<int>(rng() % 2));  // short
       if (b == a) b = (a + 1) % (grid * grid);
       p.segments.push_back({vertex(a), vertex(b), 0});
     }
@@ -195,7 +195,7 @@ TEST_CASE("crossing detection agrees with the O(n^2) exact check on random segme
       if (p.segments.size() <= 90) CHECK(j == expected->first);
     }
   }
-  CHECK(clean_sets > 0); // both outcomes are exercised
+  CHECK(clean_sets > 0);  // both outcomes are exercised
 }
 
 TEST_CASE("a file where every segment crosses every other fails without quadratic work") {
@@ -251,7 +251,7 @@ TEST_CASE("each failure class is reported with ids in the file's base") {
     p.holes.push_back({5, 5});
     const auto e2 = error_of(p);
     REQUIRE(e2);
-    CHECK(e2->problem() == InputProblem::interior_segment); // the island lies inside removed regions
+    CHECK(e2->problem() == InputProblem::interior_segment);  // the island lies inside removed regions
   }
   SUBCASE("hole point in the domain instead of in the hole ring") {
     madd::Pslg p;
@@ -360,4 +360,4 @@ TEST_CASE("allow_point_set: a points-only file is accepted, duplicates and bad c
   CHECK(range->ids() == std::vector<std::int64_t>{4});
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("validate")

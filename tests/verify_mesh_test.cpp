@@ -130,7 +130,8 @@ std::vector<double> smallest_angles(const Mesh& m) {
   for (const auto& c : m.triangles) {
     double least = 180.0;
     for (int k = 0; k < 3; ++k)
-      least = std::min(least, madd::degrees(madd::angle_at(m.points[c[k]], m.points[c[(k + 1) % 3]], m.points[c[(k + 2) % 3]])));
+      least = std::min(
+          least, madd::degrees(madd::angle_at(m.points[c[k]], m.points[c[(k + 1) % 3]], m.points[c[(k + 2) % 3]])));
     out.push_back(least);
   }
   return out;
@@ -181,8 +182,8 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) 
   for (std::uint32_t s = 0; s < strips; ++s) {
     madd::Subdomain sub;
     sub.rings = {{bottom[s], bottom[s + 1], top[s + 1], top[s]}};
-    sub.ring_segments = {{bottom_piece[s], s + 1 == strips ? right : separator[s + 1], top_piece[s],
-                          s == 0 ? left : separator[s]}};
+    sub.ring_segments = {
+        {bottom_piece[s], s + 1 == strips ? right : separator[s + 1], top_piece[s], s == 0 ? left : separator[s]}};
     sub.area = K * static_cast<double>(k / strips);
     sub.interior_point = {static_cast<double>(s * (k / strips)) + 0.5, 0.5};
     d.subdomains.push_back(sub);
@@ -257,13 +258,13 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) 
   return g;
 }
 
-} // namespace
+}  // namespace
 
 TEST_SUITE("verify_mesh") {
 
 TEST_CASE("verify_mesh: valid meshes of the bundled domains pass") {
   const std::vector<std::pair<std::string, std::vector<std::uint32_t>>> cases = {
-      {"pipe.poly", {1, 2, 8, 64}}, {"key.poly", {1, 5, 32}}, {"l_shape.poly", {1, 3, 16}},
+      {"pipe.poly", {1, 2, 8, 64}}, {"key.poly", {1, 5, 32}},     {"l_shape.poly", {1, 3, 16}},
       {"spiral.poly", {2, 12}},     {"archipelago.poly", {1, 7}}, {"thin_annulus.poly", {4}}};
   for (const auto& c : cases) {
     const std::string& name = c.first;  // not a structured binding: clang 14 cannot CAPTURE one
@@ -284,7 +285,8 @@ TEST_CASE("verify_mesh: a synthetic grid mesh passes at its exact bounds") {
   const GridMesh g = grid_mesh(40, 4);
   MeshSizeOptions size;
   size.max_triangle_area = 0.5;  // every triangle's area exactly
-  const madd::Verification v = madd::verify_mesh(g.mesh, g.domain, size);  // min_triangle_angle_deg 45: every smallest angle exactly
+  const madd::Verification v =
+      madd::verify_mesh(g.mesh, g.domain, size);  // min_triangle_angle_deg 45: every smallest angle exactly
   show(v);
   CHECK(v.ok());
   size.max_triangle_area = 0.4999;
@@ -408,7 +410,8 @@ TEST_CASE("verify_mesh: a hanging vertex") {
   // An inner edge whose midpoint is exactly on it (else the split would not be a T-junction).
   for (const InnerEdge& e : inner_edges(f.mesh)) {
     Mesh m = f.mesh;
-    const std::uint32_t v = m.triangles[e.u][(e.j + 1) % 3], w = m.triangles[e.u][(e.j + 2) % 3], y = m.triangles[e.u][e.j];
+    const std::uint32_t v = m.triangles[e.u][(e.j + 1) % 3], w = m.triangles[e.u][(e.j + 2) % 3],
+                        y = m.triangles[e.u][e.j];
     const Point mid = madd::midpoint(m.points[v], m.points[w]);
     if (madd::orient2d(m.points[v], m.points[w], mid) != 0.0 || mid == m.points[v] || mid == m.points[w]) continue;
     // Split triangle u (w -> v... its edge v -> w, apex y) at mid; triangle t keeps the whole edge.
@@ -563,11 +566,12 @@ TEST_CASE("verify_mesh: the angle bound against the shortfall count") {
   Mesh m = pipe8().mesh;
   const std::vector<double> angles = smallest_angles(m);
   m.min_triangle_angle_deg = 25.0;
-  const auto below = static_cast<std::size_t>(
-      std::count_if(angles.begin(), angles.end(), [](double a) { return a < 25.0 - 1e-9; }));
+  const auto below =
+      static_cast<std::size_t>(std::count_if(angles.begin(), angles.end(), [](double a) { return a < 25.0 - 1e-9; }));
   REQUIRE(below > 0);
   const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
-  CHECK(mentions(v, std::to_string(below) + " triangles have a smallest angle below the bound 25 deg, but the shortfall counts 0"));
+  CHECK(mentions(v, std::to_string(below) +
+                        " triangles have a smallest angle below the bound 25 deg, but the shortfall counts 0"));
   const auto worst = std::min_element(angles.begin(), angles.end()) - angles.begin();
   CHECK(mentions(v, "of triangle " + std::to_string(worst) + " "));
   m.shortfall.input_angle = below - 1;
@@ -616,7 +620,8 @@ TEST_CASE("area_bound_at: the sample grid agrees with a scan") {
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 40; ++j) sets[1].push_back({{i * 0.5, j * 0.5}, static_cast<double>(i * 40 + j + 1)});
   for (int k = 0; k < 2000; ++k) sets[2].push_back({{unit(rng) * 1e6, 1e9 + unit(rng) * 1e-3}, unit(rng)});
-  for (int k = 0; k < 300; ++k) sets[3].push_back({{std::floor(unit(rng) * 5.0), std::floor(unit(rng) * 5.0)}, k + 1.0});
+  for (int k = 0; k < 300; ++k)
+    sets[3].push_back({{std::floor(unit(rng) * 5.0), std::floor(unit(rng) * 5.0)}, k + 1.0});
   sets[4].push_back({{3, 4}, 1.0});
   sets[0].push_back({{std::numeric_limits<double>::infinity(), 0.0}, 0.1});  // never nearest
   for (const auto& samples : sets) {
@@ -784,7 +789,8 @@ TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
   SUBCASE("an isolated vertex that is no mesh vertex of its subdomain") {
     Mesh m = good;
     m.decomposition.subdomains[0].interior_points.push_back(15);  // a vertex of subdomain 1's triangles only
-    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "isolated input vertex 15 (3, 1.1000000000000001) is no vertex of subdomain 0"));
+    CHECK(mentions(madd::verify_mesh(m, domain, im.size),
+                   "isolated input vertex 15 (3, 1.1000000000000001) is no vertex of subdomain 0"));
   }
   SUBCASE("a wrong region attribute") {
     Mesh m = good;
@@ -825,4 +831,4 @@ TEST_CASE("verify_mesh: time on a large synthetic mesh") {
   MESSAGE("verify_mesh: " << g.mesh.triangles.size() << " triangles in " << seconds << " s");
 }
 
-} // TEST_SUITE
+}  // TEST_SUITE("verify_mesh")

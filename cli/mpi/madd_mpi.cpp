@@ -44,12 +44,11 @@ namespace {
 using cli::ExitCode;
 using cli::seconds_since;
 
-constexpr const char* help_intro =
-    "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
-    "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
-    "the subdomains (balanced by expected triangles) on its own threads with no\n"
-    "communication, and writes its part with global ids. The union of the parts is\n"
-    "the mesh `madd mesh` makes with the same options, for any P.\n\n";
+constexpr const char* help_intro = "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
+                                   "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
+                                   "the subdomains (balanced by expected triangles) on its own threads with no\n"
+                                   "communication, and writes its part with global ids. The union of the parts is\n"
+                                   "the mesh `madd mesh` makes with the same options, for any P.\n\n";
 
 constexpr const char* help_outputs =
     "outputs, for every rank R:\n"
@@ -110,7 +109,6 @@ void on_interrupt(int signal_number) {
   if (interrupt_output_writes() || writing != 0) return;  // let the write unwind and remove its staging
   ::_exit(128 + signal_number);
 }
-
 
 using cli::Failure;
 
@@ -189,7 +187,7 @@ struct Figures {
 
 // This process's peak resident memory.
 double peak_megabytes() {
-  rusage usage {};
+  rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
 }
@@ -221,9 +219,9 @@ Figures gather_figures(const World& world, const MeshPart& part, const MeshOptio
                        double decompose_s, double format_s) {
   Figures f;
   f.mesh = combine_figures(part, options.size);
-  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
-                           format_s,
-                           peak_megabytes()};
+  const double times[4] = {
+      decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
+      format_s, peak_megabytes()};
   std::vector<double> all(4 * static_cast<std::size_t>(world.size));
   MPI_Gather(times, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   for (int r = 0; r < world.size; ++r) {
@@ -257,13 +255,11 @@ std::string list(const std::vector<double>& values) {
 
 // The mesh report of `madd mesh`, with every rank's figures as the run's.
 std::string report_json(const World& world, const Figures& f, double seconds) {
-  const std::vector<RunFigure> run = {{"ranks", static_cast<double>(world.size)},
-                                      {"rank_imbalance", imbalance(f.mesh_seconds)},
-                                      {"decompose_seconds", f.decompose_seconds},
-                                      {"mesh_seconds", f.mesh_seconds},
-                                      {"format_seconds", f.format_seconds},
-                                      {"peak_resident_megabytes", f.peak_megabytes},
-                                      {"seconds_before_writing", seconds}};
+  const std::vector<RunFigure> run = {
+      {"ranks", static_cast<double>(world.size)}, {"rank_imbalance", imbalance(f.mesh_seconds)},
+      {"decompose_seconds", f.decompose_seconds}, {"mesh_seconds", f.mesh_seconds},
+      {"format_seconds", f.format_seconds},       {"peak_resident_megabytes", f.peak_megabytes},
+      {"seconds_before_writing", seconds}};
   return format_mesh_report_json(f.mesh, run);
 }
 
@@ -320,21 +316,21 @@ int run(const World& world, const cli::MeshArgs& args) {
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
-    options = cli::with_background_files(args.line);
-    domain = read_domain(args.input);
-    decomposition = decompose_for_mesh(domain, options).decomposition;
-  }));
+                           options = cli::with_background_files(args.line);
+                           domain = read_domain(args.input);
+                           decomposition = decompose_for_mesh(domain, options).decomposition;
+                         }));
   if (code != cli::exit_ok) return code;
   const double decompose_s = seconds_since(start);
   // Mesh this rank's share.
   MeshReport report;
   MeshPart part;
   abort_on(world, attempt([&] {
-    MeshPartRun run = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
-                                 static_cast<std::uint32_t>(world.size), mpi_exchange());
-    part = std::move(run.part);
-    report = std::move(run.report);
-  }));
+             MeshPartRun run = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
+                                          static_cast<std::uint32_t>(world.size), mpi_exchange());
+             part = std::move(run.part);
+             report = std::move(run.report);
+           }));
   // Format this rank's files (the report too, on rank 0), gather the
   // figures, then write every part or none.
   const auto format_start = std::chrono::steady_clock::now();
@@ -376,8 +372,8 @@ int main_on(const World& world, int argc, char** argv) {
   return run(world, args);
 }
 
-} // namespace
-} // namespace madd::mpi
+}  // namespace
+}  // namespace madd::mpi
 
 int main(int argc, char** argv) {
   // Threads mesh inside a rank; only the main thread calls MPI.

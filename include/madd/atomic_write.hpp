@@ -64,4 +64,4 @@ private:
   std::vector<std::string> targets_;
 };
 
-} // namespace madd
+}  // namespace madd

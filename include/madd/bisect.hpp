@@ -34,7 +34,7 @@
 namespace madd {
 
 struct BisectOptions {
-  double target_fraction = 0.5;  // desired share of total vertex weight on side 0
+  double target_fraction = 0.5;     // desired share of total vertex weight on side 0
   double balance_tolerance = 0.03;  // a side may weigh up to (1 + this) x its target (0.03 = 3%)
   std::uint64_t seed = 1;
   bool sorted_heavy_edge = false;  // visit vertices by heaviest edge instead of random order
@@ -50,9 +50,9 @@ struct BisectOptions {
 void check_options(const BisectOptions& options);
 
 struct Bisection {
-  std::vector<std::uint8_t> side;  // 0 or 1 per vertex
-  double cut = 0.0;                // total weight of edges between the sides
-  double weight[2] = {0.0, 0.0};   // vertex weight on each side
+  std::vector<std::uint8_t> side;    // 0 or 1 per vertex
+  double cut = 0.0;                  // total weight of edges between the sides
+  double weight[2] = {0.0, 0.0};     // vertex weight on each side
   bool connected[2] = {true, true};  // each side induces a connected subgraph
   friend bool operator==(const Bisection&, const Bisection&) = default;
 };
@@ -72,7 +72,7 @@ Verification verify_bisection(const Graph& graph, const Bisection& bisection);
 struct PartitionOptions {
   double balance_tolerance = 0.03;  // per bisection level
   std::uint64_t seed = 1;
-  bool connected = false;   // --contig
+  bool connected = false;                                     // --contig
   int refinement_passes = BisectOptions{}.refinement_passes;  // per level of every bisection (--niter)
   friend bool operator==(const PartitionOptions&, const PartitionOptions&) = default;
 };
@@ -90,4 +90,4 @@ struct Partition {
 // K-way partition by recursive bisection (the k > 2 mode of `madd partition`).
 Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions& options = {});
 
-} // namespace madd
+}  // namespace madd

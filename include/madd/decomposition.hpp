@@ -32,7 +32,7 @@ struct DecomposeOptions {
   // other boundary samplings before it is taken, and smoothing never lowers a
   // split below it (docs/algorithm.md, step 6).
   double min_split_quality = 0.75;
-  unsigned threads = 0;               // 0 = hardware concurrency
+  unsigned threads = 0;  // 0 = hardware concurrency
   std::uint64_t seed = 1;
   // How many more times a split below min_split_quality is retried, each
   // time at half the boundary spacing, before the best one found is taken.
@@ -56,8 +56,8 @@ struct DecomposeOptions {
   // (vertex attribute 1; used when gradation > 0 and neither of the others is set).
   // With a weight function or weight samples, gradation 0 counts as 1;
   // negative or NaN function values count as 0. See docs/grading.md.
-  double gradation = 0.0;           // a
-  double interpolation = 0.0;       // p: weight of new separator points = p * lerp of endpoint weights
+  double gradation = 0.0;      // a
+  double interpolation = 0.0;  // p: weight of new separator points = p * lerp of endpoint weights
   std::function<double(double x, double y)> weight_function;          // case 3, evaluated on a grid per subdomain
   std::function<double(double x, double y)> subdomain_area_function;  // case 3: required area at (x, y)
   std::vector<ValuedPoint> weight_samples;          // case 2: a subdomain's weight = sum of those inside it
@@ -123,12 +123,12 @@ struct Subdomain {
   std::vector<std::vector<std::uint32_t>> rings;
   std::vector<std::vector<std::uint32_t>> ring_segments;
   double area = 0.0;
-  double weight = 0.0;              // density weight (equals area when not grading)
+  double weight = 0.0;  // density weight (equals area when not grading)
   // With a required area (has_required_area): the smallest required area
   // inside the subdomain, +infinity where nothing constrains it; 0 otherwise.
   double required_area = 0.0;
-  Point interior_point;             // strictly inside the subdomain
-  std::vector<Point> hole_points;   // one strictly inside each hole ring
+  Point interior_point;            // strictly inside the subdomain
+  std::vector<Point> hole_points;  // one strictly inside each hole ring
   // Interior constraints inside the subdomain (docs/formats.md, "Interior
   // segments"): pieces of input segments with this subdomain on both sides,
   // as indices into Decomposition::segments (in no ring, of no other
@@ -143,12 +143,12 @@ struct Subdomain {
 // A conforming planar subdivision of the domain: every vertex and segment,
 // shared by the subdomains on both sides. No T-junctions.
 struct Decomposition {
-  std::vector<Point> points;        // the input's points first, same indices, then new ones
-  std::vector<Segment> segments;    // marker 0 = separator; boundary pieces keep the input
-                                    // marker, or 1 where it was 0 or absent
+  std::vector<Point> points;                  // the input's points first, same indices, then new ones
+  std::vector<Segment> segments;              // marker 0 = separator; boundary pieces keep the input
+                                              // marker, or 1 where it was 0 or absent
   std::vector<std::uint32_t> segment_origin;  // input segment a piece comes from, no_index for separators
-  std::vector<Point> holes;         // the input's hole points
-  std::vector<Region> regions;      // the input's regions (attribute, area constraint), unchanged
+  std::vector<Point> holes;                   // the input's hole points
+  std::vector<Region> regions;                // the input's regions (attribute, area constraint), unchanged
   std::vector<Subdomain> subdomains;
   double separator_angle_deg = 60.0;  // the Phi0 it was built with
   double subdomain_area_ratio = 0.0;  // with a required area: the ratio it was split to; 0 otherwise
@@ -160,8 +160,6 @@ struct Decomposition {
 // Per segment of `decomposition`: the subdomain it is an interior segment of
 // (Subdomain::interior_segments), or no_index for separators and boundary pieces.
 std::vector<std::uint32_t> interior_segment_owners(const Decomposition& decomposition);
-
-
 
 // Decomposes a validated domain into options.subdomains connected subdomains
 // (Algorithm 4). Every new angle is >= options.separator_angle_deg. Deterministic:
@@ -209,7 +207,6 @@ DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& o
 // within rings_area's rounding bound of the exact ones, every new angle
 // >= decomposition.separator_angle_deg - 1e-9 deg, interior and hole points strictly
 // inside. Never throws on a malformed decomposition: it reports problems.
-Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain,
-                                  std::uint32_t expected_count);
+Verification verify_decomposition(const Decomposition& decomposition, const Pslg& domain, std::uint32_t expected_count);
 
-} // namespace madd
+}  // namespace madd

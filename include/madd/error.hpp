@@ -160,4 +160,4 @@ struct Verification {
   friend bool operator==(const Verification&, const Verification&) = default;
 };
 
-} // namespace madd
+}  // namespace madd

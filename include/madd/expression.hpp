@@ -12,7 +12,7 @@ namespace madd {
 
 namespace detail {
 struct ExprProgram;  // the compiled program (src/script/expression_program.hpp)
-} // namespace detail
+}  // namespace detail
 
 // Deepest nesting of parentheses, function calls, unary signs and '^' that
 // parse_expression accepts; deeper input is a ParseError, never a stack overflow.
@@ -57,4 +57,4 @@ private:
 // max_expression_depth. Uses no recursion deeper than that bound.
 Expression parse_expression(std::string_view text, const std::string& name = "<expression>");
 
-} // namespace madd
+}  // namespace madd

@@ -61,4 +61,4 @@ inline Point circumcentre(Point a, Point b, Point c) noexcept {
 inline constexpr double degrees(double radians) noexcept { return radians * 180.0 / std::numbers::pi; }
 inline constexpr double radians(double degrees) noexcept { return degrees * std::numbers::pi / 180.0; }
 
-} // namespace madd
+}  // namespace madd

@@ -30,4 +30,4 @@ struct WeightedEdge {
 // and self-loops dropped. Precondition: every endpoint < vertex_weights.size().
 Graph make_graph(std::vector<double> vertex_weights, const std::vector<WeightedEdge>& edges);
 
-} // namespace madd
+}  // namespace madd

@@ -32,4 +32,4 @@ struct ResolvedPslg {
 // more than 2^20 pairs intersect, or the pieces do not settle.
 ResolvedPslg resolve_intersections(const Pslg& pslg);
 
-} // namespace madd
+}  // namespace madd

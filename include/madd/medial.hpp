@@ -38,16 +38,16 @@ struct MedialEdge {
 };
 
 struct MedialGraph {
-  std::vector<Point> points;                 // triangulation points, then junction circumcentres
-  std::vector<std::uint32_t> centre;         // per triangle: its circumcentre in points, or no_index
-  std::vector<std::uint32_t> first_vertex;   // per triangle: its G_D vertex (junction: three,
-                                             // first + i being the sub-triangle next to edge i)
+  std::vector<Point> points;                   // triangulation points, then junction circumcentres
+  std::vector<std::uint32_t> centre;           // per triangle: its circumcentre in points, or no_index
+  std::vector<std::uint32_t> first_vertex;     // per triangle: its G_D vertex (junction: three,
+                                               // first + i being the sub-triangle next to edge i)
   std::vector<std::uint32_t> vertex_triangle;  // per G_D vertex: its triangle
-  std::vector<std::uint8_t> vertex_sub;      // per G_D vertex: sub-triangle 0-2, or 3 for a whole triangle
-  Graph gd;                                  // G_D: vertex weight = area, edge weight = (smoothed) length
-  std::vector<MedialEdge> edges;             // G_D's edges, each once
-  std::vector<std::uint32_t> coarse;         // per G_D vertex: its G'_D vertex
-  Graph contracted;                          // G'_D: only acceptable partial separators remain as edges
+  std::vector<std::uint8_t> vertex_sub;        // per G_D vertex: sub-triangle 0-2, or 3 for a whole triangle
+  Graph gd;                                    // G_D: vertex weight = area, edge weight = (smoothed) length
+  std::vector<MedialEdge> edges;               // G_D's edges, each once
+  std::vector<std::uint32_t> coarse;           // per G_D vertex: its G'_D vertex
+  Graph contracted;                            // G'_D: only acceptable partial separators remain as edges
   // G'_D edge k joins contracted_ends[k] (u < v) and stands for the G_D edges
   // separators[separator_offsets[k] .. separator_offsets[k+1]).
   std::vector<std::array<std::uint32_t, 2>> contracted_ends;
@@ -67,4 +67,4 @@ MedialGraph build_medial_graph(const Triangulation& tri, const MedialOptions& op
 // The corners of G_D vertex v (a triangle, or a sub-triangle around a circumcentre), counter-clockwise.
 std::array<Point, 3> vertex_triangle_corners(const MedialGraph& graph, const Triangulation& tri, std::uint32_t v);
 
-} // namespace madd
+}  // namespace madd

@@ -27,8 +27,9 @@ namespace madd {
 // sample (each when set), and the max_area of the input region it lies in
 // (Region::max_area > 0; Triangle's -a with regional constraints).
 struct MeshSizeOptions {
-  double min_triangle_angle_deg = 30.0;  // -q: every triangle's smallest angle at least this, away from small input angles
-  double max_triangle_area = 0.0;       // -a: 0 = no bound
+  double min_triangle_angle_deg =
+      30.0;                        // -q: every triangle's smallest angle at least this, away from small input angles
+  double max_triangle_area = 0.0;  // -a: 0 = no bound
   // --size-fn: the largest allowed triangle area at (x, y); values <= 0 or
   // NaN are ignored there (no bound).
   std::function<double(double x, double y)> triangle_area_function;
@@ -136,10 +137,10 @@ struct Mesh {
 // Timings and work figures of one run (not part of the result: they vary
 // from run to run).
 struct MeshReport {
-  std::vector<PhaseTime> phases;          // "decompose", "discretise", "refine", "merge", "verify"
-  std::vector<double> thread_seconds;     // busy time of each meshing thread
-  std::vector<double> subdomain_seconds;  // time to mesh each subdomain
-  std::vector<double> expected_triangles; // the work estimate of each subdomain (docs/mesh.md, "Balance by work")
+  std::vector<PhaseTime> phases;           // "decompose", "discretise", "refine", "merge", "verify"
+  std::vector<double> thread_seconds;      // busy time of each meshing thread
+  std::vector<double> subdomain_seconds;   // time to mesh each subdomain
+  std::vector<double> expected_triangles;  // the work estimate of each subdomain (docs/mesh.md, "Balance by work")
   friend bool operator==(const MeshReport&, const MeshReport&) = default;
 };
 
@@ -195,4 +196,4 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 // number must match). Never throws on a malformed mesh: it reports problems.
 Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size);
 
-} // namespace madd
+}  // namespace madd

@@ -28,8 +28,8 @@ struct MeshMetrics {
   std::uint64_t triangles = 0;
   std::uint64_t vertices = 0;
   double min_angle_bound_deg = 0.0;  // the bound the mesh was refined to (Mesh::min_triangle_angle_deg)
-  double max_area_bound = 0.0;       // the largest triangle area asked for (MeshSizeOptions::max_triangle_area; 0 = none)
-  double smallest_angle_deg = 180.0;      // the smallest angle of any triangle (180 without triangles)
+  double max_area_bound = 0.0;  // the largest triangle area asked for (MeshSizeOptions::max_triangle_area; 0 = none)
+  double smallest_angle_deg = 180.0;       // the smallest angle of any triangle (180 without triangles)
   double median_smallest_angle_deg = 0.0;  // the upper median over the triangles; NaN: not known
   // Triangles in 10-degree bins of their angle: [0, 10), ..., [40, 50), and [50, 60] last.
   std::array<std::uint64_t, 6> smallest_angle_histogram{};
@@ -67,4 +67,4 @@ struct RunFigure {
 // "thread_seconds" and "phase_seconds".
 std::vector<RunFigure> run_figures(const MeshReport& report);
 
-} // namespace madd
+}  // namespace madd

@@ -85,11 +85,11 @@ std::string format_mesh_report_json(const MeshMetrics& metrics, const std::vecto
 
 // Which files add_mesh writes.
 struct MeshFormats {
-  bool triangle = true;  // PREFIX.node, PREFIX.ele
-  bool neigh = false;    // PREFIX.neigh (Triangle's -n)
-  bool edge = false;     // PREFIX.edge (Triangle's -e)
-  bool msh = false;      // PREFIX.msh
-  bool vtu = false;      // PREFIX.vtu
+  bool triangle = true;      // PREFIX.node, PREFIX.ele
+  bool neigh = false;        // PREFIX.neigh (Triangle's -n)
+  bool edge = false;         // PREFIX.edge (Triangle's -e)
+  bool msh = false;          // PREFIX.msh
+  bool vtu = false;          // PREFIX.vtu
   unsigned first_index = 1;  // of the Triangle files: 0 or 1
   friend bool operator==(const MeshFormats&, const MeshFormats&) = default;
 };
@@ -109,4 +109,4 @@ void add_split_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& dir
                     unsigned first_index = 1);
 void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index = 1);
 
-} // namespace madd
+}  // namespace madd

@@ -40,8 +40,8 @@ std::string part_file_name(std::string_view stem, std::uint32_t share, std::uint
 
 // Which files add_mesh_part writes.
 struct MeshPartFormats {
-  bool triangle = true;  // PREFIX-R.node, PREFIX-R.ele
-  bool vtu = false;      // PREFIX-R.vtu, and PREFIX.pvtu from share 0
+  bool triangle = true;      // PREFIX-R.node, PREFIX-R.ele
+  bool vtu = false;          // PREFIX-R.vtu, and PREFIX.pvtu from share 0
   unsigned first_index = 1;  // of the Triangle files: 0 or 1
   friend bool operator==(const MeshPartFormats&, const MeshPartFormats&) = default;
 };
@@ -52,4 +52,4 @@ struct MeshPartFormats {
 void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
                    const MeshPartFormats& formats = {});
 
-} // namespace madd
+}  // namespace madd

@@ -63,8 +63,8 @@ struct LocalMesh {
   // The share's mesh edges on pieces of the discretised decomposition
   // (MeshSegment::piece indexes MeshPart::decomposition.segments).
   std::vector<MeshSegment> segments;
-  MeshShortfall shortfall;                // of the share's triangles
-  double min_triangle_angle_deg = 30.0;   // the bound it was refined to
+  MeshShortfall shortfall;               // of the share's triangles
+  double min_triangle_angle_deg = 30.0;  // the bound it was refined to
   friend bool operator==(const LocalMesh&, const LocalMesh&) = default;
 };
 
@@ -106,4 +106,4 @@ struct MeshPartRun {
 MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                        std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange);
 
-} // namespace madd
+}  // namespace madd

@@ -19,4 +19,4 @@ Graph parse_metis(std::string_view text, const std::string& path = "<memory>");
 // when the file cannot be read.
 Graph read_metis_file(const std::string& path);
 
-} // namespace madd
+}  // namespace madd

@@ -20,9 +20,9 @@ struct Metrics {
   std::uint32_t points = 0;
   std::uint32_t segments = 0;
   std::uint32_t separator_segments = 0;
-  double domain_area = 0.0;            // sum of the subdomains' ring areas
+  double domain_area = 0.0;  // sum of the subdomains' ring areas
   double mean_area = 0.0;
-  double min_angle_bound_deg = 0.0;    // the Phi0 the decomposition was built with
+  double min_angle_bound_deg = 0.0;  // the Phi0 the decomposition was built with
 
   // C1: interior angles at subdomain corners where at least one edge is a separator.
   std::uint32_t new_angles = 0;
@@ -37,9 +37,9 @@ struct Metrics {
 
   // C2: separator size.
   double separator_length = 0.0;
-  double separator_length_norm = 0.0;          // / sqrt(domain area)
-  double mean_separator_per_subdomain = 0.0;   // each subdomain's separator boundary, averaged
-  double max_separator_over_area_norm = 0.0;   // max_s sep_len(s)/area(s) * sqrt(mean area)
+  double separator_length_norm = 0.0;         // / sqrt(domain area)
+  double mean_separator_per_subdomain = 0.0;  // each subdomain's separator boundary, averaged
+  double max_separator_over_area_norm = 0.0;  // max_s sep_len(s)/area(s) * sqrt(mean area)
 
   // C3: balance.
   double max_area_over_mean = 0.0;
@@ -68,4 +68,4 @@ struct Metrics {
 // Precondition: the rings are well formed (verify_decomposition passes).
 Metrics metrics(const Decomposition& decomposition, std::vector<PhaseTime> times = {});
 
-} // namespace madd
+}  // namespace madd

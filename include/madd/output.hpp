@@ -66,10 +66,11 @@ void check_options(const SvgOptions& options);
 
 // Output 4: an SVG picture: one <path> per subdomain (fill-rule evenodd, so
 // holes stay empty), the original boundary thick, separators thin, interior
-// segments dashed and isolated points as dots, y pointing up as in the input. Size is linear in the decomposition (compact numbers).
+// segments dashed and isolated points as dots, y pointing up as in the input. Size is linear in the decomposition
+// (compact numbers).
 std::string format_svg(const Decomposition& decomposition, const SvgOptions& options = {});
 
 // Output 5: every figure of `m` as one JSON object (NaN figures as null).
 std::string format_report_json(const Metrics& m);
 
-} // namespace madd
+}  // namespace madd

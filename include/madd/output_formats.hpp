@@ -53,4 +53,4 @@ std::string format_vtk(const Decomposition& decomposition);
 // exactly (std::to_chars), not longitude and latitude.
 std::string format_geojson(const Decomposition& decomposition);
 
-} // namespace madd
+}  // namespace madd

@@ -49,4 +49,4 @@ std::vector<ValuedPoint> read_background_samples(const std::string& path, Sample
 // back to the same double, so that parse_poly of the output gives back an equal Pslg.
 std::string format_poly(const Pslg& pslg, std::string_view header_comment = {});
 
-} // namespace madd
+}  // namespace madd

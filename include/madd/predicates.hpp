@@ -20,4 +20,4 @@ double orient2d(Point a, Point b, Point c) noexcept;
 // counter-clockwise order), negative if outside, zero if on it.
 double incircle(Point a, Point b, Point c, Point d) noexcept;
 
-} // namespace madd
+}  // namespace madd

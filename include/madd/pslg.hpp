@@ -18,7 +18,7 @@ namespace madd {
 inline constexpr std::uint32_t no_index = std::numeric_limits<std::uint32_t>::max();
 
 struct Segment {
-  std::uint32_t a = 0; // 0-based index into Pslg::points
+  std::uint32_t a = 0;  // 0-based index into Pslg::points
   std::uint32_t b = 0;
   int marker = 0;
   friend bool operator==(const Segment&, const Segment&) = default;
@@ -42,7 +42,7 @@ struct Pslg {
   bool has_segment_markers = false;
   std::vector<Point> holes;
   std::vector<Region> regions;
-  std::uint32_t first_index = 1;   // 0 or 1, as in the file that was read
+  std::uint32_t first_index = 1;  // 0 or 1, as in the file that was read
 
   // Attribute k of point i. Precondition: k < attributes_per_point.
   double attribute(std::size_t i, std::size_t k) const { return attributes[i * attributes_per_point + k]; }
@@ -53,7 +53,7 @@ struct Pslg {
 // Empty vectors mean "unknown" (a Pslg built in memory).
 struct SourceMap {
   std::string path;
-  std::string point_path; // file of point_lines when not `path` (a companion .node); empty = `path`
+  std::string point_path;  // file of point_lines when not `path` (a companion .node); empty = `path`
   std::vector<std::uint32_t> point_lines;
   std::vector<std::uint32_t> segment_lines;
   std::vector<std::uint32_t> hole_lines;
@@ -105,17 +105,17 @@ void validate_pslg(const Pslg& pslg, const SourceMap& source = {}, const Validat
 // triangulate() keeps without the convex hull option (Triangle's -p): the
 // bounded faces of the segments, less those holding a hole point.
 struct PslgSummary {
-  std::size_t isolated_vertices = 0;       // on no segment
-  std::size_t isolated_inside = 0;         // ... of which inside the kept region
+  std::size_t isolated_vertices = 0;         // on no segment
+  std::size_t isolated_inside = 0;           // ... of which inside the kept region
   std::size_t vertices_inside_segments = 0;  // lying inside a segment, which is split there
-  std::size_t dangling_ends = 0;           // vertices ending exactly one segment (piece)
+  std::size_t dangling_ends = 0;             // vertices ending exactly one segment (piece)
   // Each segment is one of: interior (the kept region on both sides of some
   // piece of it), boundary (else on one side of some piece), outside (else).
   std::size_t interior_segments = 0;
   std::size_t boundary_segments = 0;
   std::size_t outside_segments = 0;
-  std::size_t parts = 0;                   // connected faces of the kept region
-  double area = 0.0;                       // of the kept region
+  std::size_t parts = 0;  // connected faces of the kept region
+  double area = 0.0;      // of the kept region
   friend bool operator==(const PslgSummary&, const PslgSummary&) = default;
 };
 
@@ -126,4 +126,4 @@ PslgSummary summarize_pslg(const Pslg& pslg);
 // region flooded as Triangle would). Precondition: validate() passed.
 double domain_area(const Pslg& pslg);
 
-} // namespace madd
+}  // namespace madd

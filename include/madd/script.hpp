@@ -29,8 +29,8 @@ struct ScriptContext {
   // Empty = silent.
   std::function<void(const std::string&)> log;
 
-  DecomposeOptions options;                // changed by set, read_weights, setWeightFunction...
-  std::optional<Pslg> domain;     // set by `read` (or preloaded by the caller)
+  DecomposeOptions options;              // changed by set, read_weights, setWeightFunction...
+  std::optional<Pslg> domain;            // set by `read` (or preloaded by the caller)
   std::string domain_name = "<domain>";  // the file it came from, for messages
   // The result of the last `dec`; reset by `read`. `verified` caches its
   // verify_decomposition check, which every write command needs first.
@@ -61,4 +61,4 @@ struct ScriptResult {
 // an InternalError (a bug) is thrown and nothing is written.
 ScriptResult run_script(std::string_view text, const std::string& name, ScriptContext& context);
 
-} // namespace madd
+}  // namespace madd

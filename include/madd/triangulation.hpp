@@ -73,4 +73,4 @@ Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options = 
 Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg = nullptr,
                                   const TriangulateOptions& options = {});
 
-} // namespace madd
+}  // namespace madd

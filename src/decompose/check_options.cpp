@@ -22,11 +22,9 @@ void check_ranges(const DecomposeOptions& o) {
     refuse("separator_angle_deg", "must lie strictly between 0 and 90 degrees");
   if (!finite_above(o.boundary_refinement, 0.0)) refuse("boundary_refinement", "must be a finite number > 0");
   // i is the share of its target each side must reach (Sec. 4.3): 0 accepts anything, above 1 nothing.
-  if (!(o.min_split_quality > 0.0 && o.min_split_quality <= 1.0))
-    refuse("min_split_quality", "must lie in (0, 1]");
+  if (!(o.min_split_quality > 0.0 && o.min_split_quality <= 1.0)) refuse("min_split_quality", "must lie in (0, 1]");
   if (o.threads > max_threads) refuse("threads", "must be at most " + std::to_string(max_threads) + " (0 = all cores)");
-  if (o.max_split_retries < 0 || o.max_split_retries > 64)
-    refuse("max_split_retries", "must lie in [0, 64]");
+  if (o.max_split_retries < 0 || o.max_split_retries > 64) refuse("max_split_retries", "must lie in [0, 64]");
   if (!(o.adaptive_boundary_refinement >= 1.0 && o.adaptive_boundary_refinement <= 64.0))
     refuse("adaptive_boundary_refinement", "must lie in [1, 64] (1 = every edge refined alike)");
   if (!(o.repair_balance_above == 0.0 || (o.repair_balance_above >= 1.0 && o.repair_balance_above <= 1e6)))
@@ -36,7 +34,8 @@ void check_ranges(const DecomposeOptions& o) {
   if (!finite_at_least(o.gradation, 0.0)) refuse("gradation", "must be a finite number >= 0");
   if (!finite_at_least(o.interpolation, 0.0)) refuse("interpolation", "must be a finite number >= 0");
   if (!finite_above(o.subdomain_area_ratio, 0.0)) refuse("subdomain_area_ratio", "must be a finite number > 0");
-  if (!finite_at_least(o.time_limit_seconds, 0.0)) refuse("time_limit_seconds", "must be a finite number >= 0 (0 = none)");
+  if (!finite_at_least(o.time_limit_seconds, 0.0))
+    refuse("time_limit_seconds", "must be a finite number >= 0 (0 = none)");
 }
 
 void check_background(const std::vector<ValuedPoint>& points, bool areas) {
@@ -56,14 +55,15 @@ void check_sources(const DecomposeOptions& o) {
   if (o.weight_function && !o.weight_samples.empty())
     refuse("weight_samples", "cannot be combined with weight_function: give one source of density weights");
   if (o.subdomain_area_function && !o.subdomain_area_samples.empty())
-    refuse("subdomain_area_samples", "cannot be combined with subdomain_area_function: give one source of required areas");
+    refuse("subdomain_area_samples",
+           "cannot be combined with subdomain_area_function: give one source of required areas");
   const bool weights_from_boundary = !o.weight_function && o.weight_samples.empty() && o.gradation > 0.0;
   if (o.interpolation > 0.0 && !weights_from_boundary)
     refuse("interpolation", "only applies to boundary weights (gradation > 0 without weight_function or "
                             "weight_samples); it would be ignored");
 }
 
-} // namespace
+}  // namespace
 
 void check_option_ranges(const DecomposeOptions& options) {
   check_ranges(options);
@@ -97,7 +97,7 @@ std::uint32_t expected_subdomain_count(const Decomposition& decomposition, std::
   return requested;
 }
 
-} // namespace madd
+}  // namespace madd
 
 namespace madd {
 
@@ -111,4 +111,4 @@ std::vector<std::uint32_t> interior_segment_owners(const Decomposition& decompos
   return owner;
 }
 
-} // namespace madd
+}  // namespace madd

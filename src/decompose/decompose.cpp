@@ -25,7 +25,7 @@ namespace detail {
 // New-angle check of the committed geometry (C1), independent of the split logic.
 void check_new_angles(const Subdivision& sub, double separator_angle_deg);
 
-} // namespace detail
+}  // namespace detail
 
 namespace {
 
@@ -101,7 +101,7 @@ detail::SplitOptions split_options_of(const DecomposeOptions& options) {
   return split_options;
 }
 
-} // namespace
+}  // namespace
 
 Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
   return decompose_with_report(domain, options).decomposition;
@@ -136,24 +136,23 @@ DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& o
     guard.check(sub.faces.size());
     // Every split of the round reads this snapshot while `sub` takes the commits.
     const Subdivision snapshot = sub;
-    detail::run_round(snapshot, tasks, split_options, thread_count(options, tasks.size()), guard,
-                      [&](std::size_t i, const detail::SplitResult& r) {
-                        detail::Stopwatch clock;
-                        split_times += r.times;
-                        grading.before_commit(snapshot, r);
-                        const std::uint32_t f = tasks[i].face;
-                        const std::uint32_t plan = tasks[i].plan;
-                        const std::uint32_t k0 = detail::side0_plan(plan, r.weight[0], r.weight[1]);
-                        const std::uint32_t g = sub.commit(f, r);
-                        sub.faces[f].plan = k0;
-                        sub.faces[g].plan = plan - k0;
-                        grading.after_commit(sub, f, g);
-                        insert_seconds += clock.lap();
-                        report_progress(options, sub);
-                      },
-                      [&](std::size_t i, const DecompositionError& error) {
-                        stuck.mark(sub, tasks[i].face, error);
-                      });
+    detail::run_round(
+        snapshot, tasks, split_options, thread_count(options, tasks.size()), guard,
+        [&](std::size_t i, const detail::SplitResult& r) {
+          detail::Stopwatch clock;
+          split_times += r.times;
+          grading.before_commit(snapshot, r);
+          const std::uint32_t f = tasks[i].face;
+          const std::uint32_t plan = tasks[i].plan;
+          const std::uint32_t k0 = detail::side0_plan(plan, r.weight[0], r.weight[1]);
+          const std::uint32_t g = sub.commit(f, r);
+          sub.faces[f].plan = k0;
+          sub.faces[g].plan = plan - k0;
+          grading.after_commit(sub, f, g);
+          insert_seconds += clock.lap();
+          report_progress(options, sub);
+        },
+        [&](std::size_t i, const DecompositionError& error) { stuck.mark(sub, tasks[i].face, error); });
     grading.end_round(sub);
   }
   double rebalance_seconds = 0.0;
@@ -186,4 +185,4 @@ DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& o
   return run;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -49,9 +49,10 @@ double checked_required_area(const std::function<double(double, double)>& subdom
   if (std::isfinite(v) && v > 0.0) return v;
   char where[96];
   std::snprintf(where, sizeof where, "(%.9g, %.9g) it is %.9g", q.x, q.y, v);
-  throw OptionError("subdomain_area_function", std::string("must be finite and > 0 everywhere in the domain; at ") + where);
+  throw OptionError("subdomain_area_function",
+                    std::string("must be finite and > 0 everywhere in the domain; at ") + where);
 }
-} // namespace
+}  // namespace
 
 FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const DecomposeOptions& options) {
   Box box;
@@ -63,7 +64,8 @@ FaceSamples function_samples(const Subdivision& sub, std::uint32_t face, const D
     // A density cannot be negative: negative and NaN values count as 0.
     const double f = options.weight_function ? options.weight_function(q.x, q.y) : 0.0;
     if (options.weight_function) out.weights.push_back({q, f > 0.0 ? f * cell_area : 0.0});
-    if (options.subdomain_area_function) out.areas.push_back({q, checked_required_area(options.subdomain_area_function, q)});
+    if (options.subdomain_area_function)
+      out.areas.push_back({q, checked_required_area(options.subdomain_area_function, q)});
   };
   // Cell centres, so that the weight is a midpoint-rule integral of f over the face.
   for (int i = 0; i < grid_cells; ++i) {
@@ -138,7 +140,7 @@ double base_weight(const Subdivision& sub, const EndRef& e, const std::vector<do
   return 0.0;
 }
 
-} // namespace
+}  // namespace
 
 void collect_end_weights(const Subdivision& snapshot, const SplitResult& result,
                          const std::vector<double>& point_weights, double p, EndWeights& out) {
@@ -177,4 +179,4 @@ void assign_new_weights(const std::vector<Point>& points, EndWeights ends, std::
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

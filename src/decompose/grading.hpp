@@ -19,7 +19,7 @@ struct GradingMode {
   bool area_driven = false;  // subdomain_area_function or subdomain_area_samples set
   double r = 1.0;            // density weight = r * area + a * weight
   double a = 0.0;
-  double p = 0.0;            // interpolation factor of new separator points (case 1)
+  double p = 0.0;  // interpolation factor of new separator points (case 1)
   bool graded() const { return weights != WeightSource::none; }
 };
 
@@ -109,4 +109,4 @@ private:
   std::vector<std::vector<std::uint32_t>> weights_inside_, areas_inside_;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -154,4 +154,4 @@ void GradingState::reassign(const Subdivision& sub) {
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -28,9 +28,8 @@ std::vector<std::uint32_t> neighbours_by_area(const Subdivision& sub, std::uint3
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
-  std::sort(out.begin(), out.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return area[x] != area[y] ? area[x] < area[y] : x < y;
-  });
+  std::sort(out.begin(), out.end(),
+            [&](std::uint32_t x, std::uint32_t y) { return area[x] != area[y] ? area[x] < area[y] : x < y; });
   return out;
 }
 
@@ -53,8 +52,8 @@ double weight_of(const Subdivision& sub, std::uint32_t face, const FaceMeasure& 
 
 struct Repair {
   Subdivision sub;
-  double largest = 0.0;         // the largest of the new subdomains
-  double added_length = 0.0;    // separator length inside the union, after minus before
+  double largest = 0.0;       // the largest of the new subdomains
+  double added_length = 0.0;  // separator length inside the union, after minus before
 };
 
 // Total length of the separators between two faces of `faces`.
@@ -151,7 +150,7 @@ std::vector<std::vector<std::uint32_t>> candidate_unions(const Subdivision& sub,
   return unions;
 }
 
-} // namespace
+}  // namespace
 
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, const ResourceGuard& guard,
                         const RebalanceOptions& options, const FaceMeasure& measure) {
@@ -207,4 +206,4 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
   return repairs;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

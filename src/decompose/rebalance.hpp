@@ -46,4 +46,4 @@ struct FaceMeasure {
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, const ResourceGuard& guard,
                         const RebalanceOptions& options = {}, const FaceMeasure& measure = {});
 
-} // namespace madd::detail
+}  // namespace madd::detail

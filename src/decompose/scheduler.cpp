@@ -18,13 +18,12 @@ class Round {
 public:
   Round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
         const ResourceGuard& guard)
-      : snapshot_(snapshot), tasks_(tasks), options_(options), guard_(guard),
-        faces_(snapshot.faces.size()), results_(tasks.size()), errors_(tasks.size()), done_(tasks.size(), 0) {}
+      : snapshot_(snapshot), tasks_(tasks), options_(options), guard_(guard), faces_(snapshot.faces.size()),
+        results_(tasks.size()), errors_(tasks.size()), done_(tasks.size(), 0) {}
 
   // Computes tasks until none is left or the round is stopped.
   void work() {
-    while (!stop_.load(std::memory_order_relaxed) && compute_next()) {
-    }
+    while (!stop_.load(std::memory_order_relaxed) && compute_next()) {}
   }
 
   // Commits every task in order; computes tasks while waiting for the next one.
@@ -103,7 +102,7 @@ private:
   std::atomic<bool> stop_{false};
 };
 
-} // namespace
+}  // namespace
 
 void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
                unsigned threads, const ResourceGuard& guard, const CommitFn& commit, const FailFn& failed) {
@@ -113,4 +112,4 @@ void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, co
   round.commit_all(commit, failed);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -34,4 +34,4 @@ using FailFn = std::function<void(std::size_t task, const DecompositionError& er
 void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
                unsigned threads, const ResourceGuard& guard, const CommitFn& commit, const FailFn& failed);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -60,4 +60,4 @@ void StuckFaces::replan(Subdivision& sub, const GradingState& grading, std::uint
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

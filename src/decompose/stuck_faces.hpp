@@ -42,4 +42,4 @@ private:
   double last_area_ = 0.0, separator_angle_deg_ = 0.0;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -22,10 +22,12 @@ void check_input(const Graph& g, const BisectOptions& o) {
   const std::size_t n = g.vertex_count();
   if (!g.offsets.empty() && g.offsets.front() != 0) reject(InputProblem::other, "graph offsets must start at 0");
   if (g.vertex_weights.size() != n) reject(InputProblem::other, "graph needs one vertex weight per vertex");
-  if (g.edge_weights.size() != g.adjacency.size() || (n == 0 ? !g.adjacency.empty() : g.offsets[n] != g.adjacency.size()))
+  if (g.edge_weights.size() != g.adjacency.size() ||
+      (n == 0 ? !g.adjacency.empty() : g.offsets[n] != g.adjacency.size()))
     reject(InputProblem::other, "graph adjacency and edge weights disagree with the offsets");
   for (std::size_t v = 0; v < n; ++v) {
-    if (g.offsets[v] > g.offsets[v + 1]) reject(InputProblem::other, "graph offsets decrease", {static_cast<std::int64_t>(v)});
+    if (g.offsets[v] > g.offsets[v + 1])
+      reject(InputProblem::other, "graph offsets decrease", {static_cast<std::int64_t>(v)});
     if (!(std::isfinite(g.vertex_weights[v]) && g.vertex_weights[v] >= 0.0))
       reject(InputProblem::bad_weight, "vertex weight must be finite and non-negative", {static_cast<std::int64_t>(v)});
   }
@@ -39,7 +41,7 @@ void check_input(const Graph& g, const BisectOptions& o) {
     if (a >= n || b >= n) reject(InputProblem::other, "keep_together vertex out of range", {a, b});
 }
 
-} // namespace
+}  // namespace
 
 void check_options(const BisectOptions& o) {
   if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
@@ -87,7 +89,7 @@ std::vector<std::uint8_t> bisect_work_graph(const Graph& g, const BisectOptions&
   return side;
 }
 
-} // namespace
+}  // namespace
 
 Bisection bisect(const Graph& graph, const BisectOptions& options) {
   check_input(graph, options);
@@ -184,4 +186,4 @@ Verification verify_bisection(const Graph& graph, const Bisection& bisection) {
   return check;
 }
 
-} // namespace madd
+}  // namespace madd

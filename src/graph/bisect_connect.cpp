@@ -126,7 +126,7 @@ void Rebalancer::run(const Balance& b) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void repair_connectivity(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance) {
   const auto n = static_cast<std::uint32_t>(graph.vertex_count());
@@ -151,9 +151,8 @@ void repair_connectivity(const Graph& graph, std::vector<std::uint8_t>& side, co
     side[queue.back()] = has[0] ? 1 : 0;
   }
   // Each round removes at least one component, so this terminates.
-  while (flip_strays(graph, side)) {
-  }
+  while (flip_strays(graph, side)) {}
   Rebalancer(graph, side).run(balance);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

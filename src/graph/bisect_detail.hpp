@@ -38,4 +38,4 @@ void repair_connectivity(const Graph& graph, std::vector<std::uint8_t>& side, co
 // The balance constraint for a graph of total weight `total`.
 Balance make_balance(double total, double target_fraction, double balance_tolerance, double slack = 0.0);
 
-} // namespace madd::detail
+}  // namespace madd::detail

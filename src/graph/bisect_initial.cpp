@@ -59,7 +59,7 @@ std::vector<std::uint8_t> grow_from(const Graph& g, std::uint32_t seed, const st
   return side;
 }
 
-} // namespace
+}  // namespace
 
 void refine_level(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
                   bool connect) {
@@ -129,4 +129,4 @@ std::vector<std::uint8_t> multilevel_bisect(const Graph& graph, const BisectOpti
   return side;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -42,7 +42,7 @@ std::vector<std::uint32_t> local_shuffle(std::uint32_t n, SplitMix64& rng) {
   return order;
 }
 
-} // namespace
+}  // namespace
 
 Graph contract_matching(const Graph& graph, const Matching& m) {
   const auto n = static_cast<std::uint32_t>(graph.vertex_count());
@@ -114,4 +114,4 @@ Hierarchy coarsen(const Graph& graph, SplitMix64& rng, const CoarsenOptions& opt
   return h;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -11,9 +11,9 @@
 namespace madd::detail {
 
 struct CoarsenOptions {
-  std::uint32_t coarsen_to = 100;    // stop at about this many vertices
-  double min_shrink = 0.10;          // stop when a level shrinks by less than this
-  bool sorted_heavy_edge = false;    // visit by heaviest incident edge, not at random
+  std::uint32_t coarsen_to = 100;  // stop at about this many vertices
+  double min_shrink = 0.10;        // stop when a level shrinks by less than this
+  bool sorted_heavy_edge = false;  // visit by heaviest incident edge, not at random
 };
 
 // Level i + 1 is graphs[i]; maps[i][v] is the vertex of level i + 1 that
@@ -43,4 +43,4 @@ Matching heavy_edge_matching(const Graph& graph, SplitMix64& rng, bool sorted, d
 // Coarsens `graph` until it has about options.coarsen_to vertices or stalls.
 Hierarchy coarsen(const Graph& graph, SplitMix64& rng, const CoarsenOptions& options);
 
-} // namespace madd::detail
+}  // namespace madd::detail

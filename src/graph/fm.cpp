@@ -74,7 +74,8 @@ namespace {
 class Refiner {
 public:
   Refiner(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, bool keep_connected)
-      : g_(&graph), side_(&side), bal_(&balance), keep_connected_(keep_connected), guard_(keep_connected ? graph.vertex_count() : 0) {
+      : g_(&graph), side_(&side), bal_(&balance), keep_connected_(keep_connected),
+        guard_(keep_connected ? graph.vertex_count() : 0) {
     const auto n = static_cast<std::uint32_t>(graph.vertex_count());
     internal_.assign(n, 0.0);
     external_.assign(n, 0.0);
@@ -252,7 +253,7 @@ bool Refiner::pass() {
   return best_len > 0;
 }
 
-} // namespace
+}  // namespace
 
 void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
                bool keep_connected) {
@@ -263,4 +264,4 @@ void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balanc
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -55,4 +55,4 @@ struct Balance {
 void fm_refine(const Graph& graph, std::vector<std::uint8_t>& side, const Balance& balance, int passes,
                bool keep_connected = false);
 
-} // namespace madd::detail
+}  // namespace madd::detail

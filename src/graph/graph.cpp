@@ -144,8 +144,7 @@ Graph induced_subgraph(const Graph& graph, std::span<const std::uint32_t> vertic
   return sub;
 }
 
-bool RemovalGuard::removable(const Graph& g, std::span<const std::uint8_t> side, std::uint32_t v,
-                             std::size_t budget) {
+bool RemovalGuard::removable(const Graph& g, std::span<const std::uint8_t> side, std::uint32_t v, std::size_t budget) {
   const std::uint8_t s = side[v];
   if (clock_ > 0xfffffff0u) {  // wrap-around: restart the stamps
     std::fill(stamp_.begin(), stamp_.end(), 0u);
@@ -195,5 +194,5 @@ std::vector<std::uint32_t> random_permutation(std::uint32_t n, SplitMix64& rng) 
   return perm;
 }
 
-} // namespace detail
-} // namespace madd
+}  // namespace detail
+}  // namespace madd

@@ -93,4 +93,4 @@ private:
 // A random permutation of 0..n-1 (Fisher-Yates with SplitMix64).
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, SplitMix64& rng);
 
-} // namespace madd::detail
+}  // namespace madd::detail

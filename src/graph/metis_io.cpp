@@ -66,8 +66,8 @@ public:
     if (ec == std::errc::result_out_of_range || (ec == std::errc() && ptr == end && value > (1ull << 53)))
       fail(line_no_, t.column, std::string(what) + " '" + std::string(t.text) + "' is too large");
     if (ec != std::errc() || ptr != end)
-      fail(line_no_, t.column, std::string("expected ") + what + " (a non-negative integer), found '" +
-                                   std::string(t.text) + "'");
+      fail(line_no_, t.column,
+           std::string("expected ") + what + " (a non-negative integer), found '" + std::string(t.text) + "'");
     return value;
   }
   std::string_view line() const noexcept { return line_; }
@@ -114,11 +114,13 @@ Header read_header(Reader& r) {
   // A lying header must not make us allocate: every vertex needs a line
   // (at least one byte) and every edge two list entries of two bytes each.
   if (n > r.remaining() + 1 || n >= detail::no_vertex)
-    r.fail(h.line, t[0].column, "header declares " + std::to_string(n) + " vertices but only " +
-                                    std::to_string(r.remaining()) + " bytes follow");
+    r.fail(h.line, t[0].column,
+           "header declares " + std::to_string(n) + " vertices but only " + std::to_string(r.remaining()) +
+               " bytes follow");
   if (h.m > (r.remaining() + 1) / 4 || 2 * h.m >= detail::no_vertex)
-    r.fail(h.line, h.m_column, "header declares " + std::to_string(h.m) + " edges but only " +
-                                   std::to_string(r.remaining()) + " bytes follow");
+    r.fail(h.line, h.m_column,
+           "header declares " + std::to_string(h.m) + " edges but only " + std::to_string(r.remaining()) +
+               " bytes follow");
   h.n = static_cast<std::uint32_t>(n);
   return h;
 }
@@ -132,8 +134,8 @@ std::size_t entry_column(std::string_view text, std::size_t start, const Header&
 }
 
 struct VertexLines {
-  std::vector<std::uint32_t> line;   // line number of each vertex
-  std::vector<std::size_t> start;    // byte offset of each vertex's line
+  std::vector<std::uint32_t> line;  // line number of each vertex
+  std::vector<std::size_t> start;   // byte offset of each vertex's line
 };
 
 VertexLines read_vertices(Reader& r, const Header& h, Graph& g) {
@@ -148,7 +150,8 @@ VertexLines read_vertices(Reader& r, const Header& h, Graph& g) {
   std::vector<Token> t;
   for (std::uint32_t v = 0; v < h.n; ++v) {
     if (!r.next_line(false))
-      r.fail(r.line_no() + 1, 1, "file ends after " + std::to_string(v) + " of " + std::to_string(h.n) + " vertex lines");
+      r.fail(r.line_no() + 1, 1,
+             "file ends after " + std::to_string(v) + " of " + std::to_string(h.n) + " vertex lines");
     where.line.push_back(static_cast<std::uint32_t>(r.line_no()));
     where.start.push_back(r.line_start());
     Reader::split_into(r.line(), t);
@@ -163,7 +166,8 @@ VertexLines read_vertices(Reader& r, const Header& h, Graph& g) {
       const Token& id = t[i++];
       const std::uint64_t u = r.number(id, "neighbour id");
       if (u < 1 || u > h.n)
-        r.fail(r.line_no(), id.column, "neighbour id " + std::to_string(u) + " is out of range 1.." + std::to_string(h.n));
+        r.fail(r.line_no(), id.column,
+               "neighbour id " + std::to_string(u) + " is out of range 1.." + std::to_string(h.n));
       if (u == v + 1) r.fail(r.line_no(), id.column, "self-loop: vertex " + std::to_string(u) + " lists itself");
       if (listed[u - 1] == v) r.fail(r.line_no(), id.column, "vertex " + std::to_string(u) + " is listed twice");
       listed[u - 1] = v;
@@ -176,7 +180,8 @@ VertexLines read_vertices(Reader& r, const Header& h, Graph& g) {
         w = static_cast<double>(value);
       }
       if (g.adjacency.size() == 2 * h.m)
-        r.fail(r.line_no(), id.column, "more adjacency entries than the header's " + std::to_string(h.m) + " edges allow");
+        r.fail(r.line_no(), id.column,
+               "more adjacency entries than the header's " + std::to_string(h.m) + " edges allow");
       g.adjacency.push_back(static_cast<std::uint32_t>(u - 1));
       g.edge_weights.push_back(w);
     }
@@ -214,18 +219,19 @@ void check_symmetric(const Reader& r, const Header& h, const Graph& g, const Ver
       const std::size_t col = entry_column(r.text(), where.start[u], h, i - g.offsets[u]);
       const std::string uv = std::to_string(u + 1), vv = std::to_string(v + 1);
       if (mark[u] != v)
-        r.fail(where.line[u], col, "asymmetric edge: vertex " + uv + " lists " + vv + " but vertex " + vv +
-                                       " (line " + std::to_string(where.line[v]) + ") does not list " + uv);
+        r.fail(where.line[u], col,
+               "asymmetric edge: vertex " + uv + " lists " + vv + " but vertex " + vv + " (line " +
+                   std::to_string(where.line[v]) + ") does not list " + uv);
       if (weight[u] != g.edge_weights[i])
-        r.fail(where.line[u], col, "asymmetric edge weight: " + uv + "-" + vv + " has weight " +
-                                       std::to_string(static_cast<long long>(g.edge_weights[i])) + " here but " +
-                                       std::to_string(static_cast<long long>(weight[u])) + " on line " +
-                                       std::to_string(where.line[v]));
+        r.fail(where.line[u], col,
+               "asymmetric edge weight: " + uv + "-" + vv + " has weight " +
+                   std::to_string(static_cast<long long>(g.edge_weights[i])) + " here but " +
+                   std::to_string(static_cast<long long>(weight[u])) + " on line " + std::to_string(where.line[v]));
     }
   }
 }
 
-} // namespace
+}  // namespace
 
 Graph parse_metis(std::string_view text, const std::string& path) {
   Reader r(text, path);
@@ -235,9 +241,9 @@ Graph parse_metis(std::string_view text, const std::string& path) {
   while (r.next_line(true))
     r.fail(r.line_no(), 1, "unexpected data after the " + std::to_string(h.n) + " vertex lines");
   if (g.adjacency.size() != 2 * h.m)
-    r.fail(h.line, h.m_column, "header declares " + std::to_string(h.m) + " edges but the lists hold " +
-                                   std::to_string(g.adjacency.size()) + " entries (expected " +
-                                   std::to_string(2 * h.m) + ")");
+    r.fail(h.line, h.m_column,
+           "header declares " + std::to_string(h.m) + " edges but the lists hold " +
+               std::to_string(g.adjacency.size()) + " entries (expected " + std::to_string(2 * h.m) + ")");
   check_symmetric(r, h, g, where);
   return g;
 }
@@ -252,4 +258,4 @@ Graph read_metis_file(const std::string& path) {
   return parse_metis(text, path);
 }
 
-} // namespace madd
+}  // namespace madd

@@ -13,7 +13,7 @@ struct Task {
   std::uint32_t first_part = 0;
   std::uint32_t parts = 1;
 };
-} // namespace
+}  // namespace
 
 void check_options(const PartitionOptions& options) {
   if (!(std::isfinite(options.balance_tolerance) && options.balance_tolerance >= 0.0))
@@ -73,4 +73,4 @@ Partition partition(const Graph& graph, std::uint32_t k, const PartitionOptions&
   return result;
 }
 
-} // namespace madd
+}  // namespace madd

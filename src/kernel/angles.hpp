@@ -30,4 +30,4 @@ inline double ccw_angle_deg(Point o, Point from, Point to) noexcept {
 // supported coordinate range guarantees (docs/hostile.md).
 inline constexpr double angle_rounding_bound_deg = 1e-12;
 
-} // namespace madd::detail
+}  // namespace madd::detail

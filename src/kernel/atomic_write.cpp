@@ -32,7 +32,7 @@ struct InFlight {
 void throw_if_interrupted(const std::string& path) {
   if (interrupt_requested.load()) throw OutputError(path + ": interrupted; the file was not written");
 }
-} // namespace
+}  // namespace
 
 bool interrupt_output_writes() noexcept {
   interrupt_requested.store(true);
@@ -64,7 +64,7 @@ std::string temporary_name(const std::string& path, std::size_t serial) {
   return path + ".tmp." + std::to_string(static_cast<long long>(::getpid())) + "." + std::to_string(serial);
 }
 
-} // namespace
+}  // namespace
 
 void write_file_atomically(const std::string& path, std::string_view contents) {
   const InFlight in_flight;
@@ -87,7 +87,8 @@ fs::path staging_directory(const fs::path& dir) {
   if (parent.empty()) parent = ".";
   const std::string base = dir.filename().string();
   for (int attempt = 0;; ++attempt) {
-    fs::path candidate = parent / ("." + base + ".madd-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
+    fs::path candidate =
+        parent / ("." + base + ".madd-tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt));
     if (!fs::exists(candidate)) return candidate;
   }
 }
@@ -146,7 +147,7 @@ void publish_directory(const Staged& s) {
   fs::remove_all(s.staged);
 }
 
-} // namespace
+}  // namespace
 
 void OutputSet::claim(const std::string& path) {
   const std::string normal = directory_path(path).string();
@@ -204,7 +205,8 @@ void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
   const bool everyone = all_staged ? all_staged(failure.empty()) : failure.empty();
   if (!failure.empty() || !everyone) {
     remove_staged(staged);
-    throw OutputError(failure.empty() ? "another process could not write its outputs (no output was written)" : failure);
+    throw OutputError(failure.empty() ? "another process could not write its outputs (no output was written)"
+                                      : failure);
   }
   // Everything is staged: move it into place.
   std::vector<std::string> published;
@@ -234,4 +236,4 @@ void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
   targets_.clear();
 }
 
-} // namespace madd
+}  // namespace madd

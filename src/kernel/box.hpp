@@ -28,4 +28,4 @@ Box bounding_box(const Points& points) noexcept {
   return box;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -10,8 +10,8 @@ namespace madd::detail {
 // p lies on the closed segment ab (its ends included). A degenerate segment
 // (a == b) contains only a.
 inline bool on_segment(Point a, Point b, Point p) noexcept {
-  const bool in_box = std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-                      p.y <= std::max(a.y, b.y);
+  const bool in_box =
+      std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
   return in_box && orient2d(a, b, p) == 0.0;
 }
 
@@ -30,4 +30,4 @@ inline bool in_closed_triangle(Point a, Point b, Point c, Point q) noexcept {
   return s * orient2d(a, b, q) >= 0.0 && s * orient2d(b, c, q) >= 0.0 && s * orient2d(c, a, q) >= 0.0;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -156,4 +156,4 @@ double rounded_up(double value, std::size_t roundings) noexcept {
   return value * (1.0 + 2.0 * static_cast<double>(roundings + 2) * kEpsilon);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

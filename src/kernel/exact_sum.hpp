@@ -20,8 +20,8 @@ namespace madd::detail {
 class ExactSum {
 public:
   void add(double v);
-  void add_product(double a, double b);               // + a * b, exactly
-  void add_cross(Point p, Point q);                    // + p.x * q.y - p.y * q.x, exactly
+  void add_product(double a, double b);  // + a * b, exactly
+  void add_cross(Point p, Point q);      // + p.x * q.y - p.y * q.x, exactly
   void add(const ExactSum& other);
   void subtract(const ExactSum& other);
 
@@ -63,4 +63,4 @@ ExactSum dot_of_differences_exact(Point p, Point a, Point w, Point v);
 // roundings eps <= 1/2; two more roundings cover the multiplication here.
 double rounded_up(double value, std::size_t roundings) noexcept;
 
-} // namespace madd::detail
+}  // namespace madd::detail

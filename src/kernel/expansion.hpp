@@ -118,8 +118,8 @@ inline Expansion<4> two_two_diff(Pair a, Pair b) noexcept {
 // merge the components by magnitude and carry a running Two-Sum. Inputs must be
 // strongly nonoverlapping, which every routine here produces. h needs room for
 // elen + flen components; returns its length.
-inline std::size_t expansion_sum(std::size_t elen, const double* e, std::size_t flen,
-                                 const double* f, double* h) noexcept {
+inline std::size_t expansion_sum(std::size_t elen, const double* e, std::size_t flen, const double* f,
+                                 double* h) noexcept {
   // Starting the running sum at 0 makes the first Two-Sum exact with a zero
   // tail, so every write below lands at an index < elen + flen.
   double q = 0.0;
@@ -156,7 +156,7 @@ inline std::size_t expansion_scale(std::size_t elen, const double* e, double b, 
   if (elen == 0) return 0;
   std::size_t len = 0;
   const Pair p0 = two_product(e[0], b);
-  h[len] = p0.lo; // every write is at an index < 2 * elen
+  h[len] = p0.lo;  // every write is at an index < 2 * elen
   len += p0.lo != 0.0;
   double q = p0.hi;
   for (std::size_t i = 1; i < elen; ++i) {
@@ -225,4 +225,4 @@ inline Expansion<2> exact_diff(double a, double b) noexcept {
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -33,4 +33,4 @@ inline void append_int(std::string& out, std::int64_t v) {
   out.append(buffer, result.ptr);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -122,8 +122,8 @@ double incircle_adapt(Point a, Point b, Point c, Point d, double permanent) noex
   const Expansion<4> bc = two_two_diff(two_product(bdx, cdy), two_product(cdx, bdy));
   const Expansion<4> ca = two_two_diff(two_product(cdx, ady), two_product(adx, cdy));
   const Expansion<4> ab = two_two_diff(two_product(adx, bdy), two_product(bdx, ady));
-  const auto fin = detail::sum(detail::sum(lifted_term(bc, adx, ady), lifted_term(ca, bdx, bdy)),
-                               lifted_term(ab, cdx, cdy));
+  const auto fin =
+      detail::sum(detail::sum(lifted_term(bc, adx, ady), lifted_term(ca, bdx, bdy)), lifted_term(ab, cdx, cdy));
   double det = fin.estimate();
   if (std::abs(det) >= kIccErrBoundB * permanent) return det;
 
@@ -147,7 +147,7 @@ double incircle_adapt(Point a, Point b, Point c, Point d, double permanent) noex
   return incircle_exact(a, b, c, d);
 }
 
-} // namespace
+}  // namespace
 
 double orient2d(Point a, Point b, Point c) noexcept {
   const double detleft = (a.x - c.x) * (b.y - c.y);
@@ -193,4 +193,4 @@ double incircle(Point a, Point b, Point c, Point d) noexcept {
   return incircle_adapt(a, b, c, d, permanent);
 }
 
-} // namespace madd
+}  // namespace madd

@@ -24,10 +24,8 @@ std::size_t resident_bytes() noexcept {
 }
 
 ResourceGuard::ResourceGuard(const Limits& limits)
-    : start_(std::chrono::steady_clock::now()),
-      time_limit_(limits.time_limit_seconds),
-      memory_limit_(limits.max_memory_bytes),
-      subdomains_(limits.subdomains) {
+    : start_(std::chrono::steady_clock::now()), time_limit_(limits.time_limit_seconds),
+      memory_limit_(limits.max_memory_bytes), subdomains_(limits.subdomains) {
   if (!(time_limit_ >= 0.0)) {
     throw InvalidInputError(InputProblem::other, "the time limit must be >= 0 seconds (0 = none)");
   }
@@ -47,13 +45,13 @@ void ResourceGuard::check(std::size_t done) const {
   if (memory_limit_ > 0) {
     const std::size_t rss = resident_bytes();
     if (rss > memory_limit_) {
-      std::snprintf(buffer, sizeof buffer,
-                    "memory limit of %.1f MB reached: %.1f MB resident (%zu of %u subdomains done); nothing was returned",
-                    static_cast<double>(memory_limit_) / 1048576.0, static_cast<double>(rss) / 1048576.0, done,
-                    subdomains_);
+      std::snprintf(
+          buffer, sizeof buffer,
+          "memory limit of %.1f MB reached: %.1f MB resident (%zu of %u subdomains done); nothing was returned",
+          static_cast<double>(memory_limit_) / 1048576.0, static_cast<double>(rss) / 1048576.0, done, subdomains_);
       throw LimitError(buffer);
     }
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -35,4 +35,4 @@ private:
   std::uint32_t subdomains_;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

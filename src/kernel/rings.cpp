@@ -17,13 +17,13 @@ namespace {
 // decides on which side of the edge p lies, and an edge through p is not
 // crossed (see winding_number for what that means).
 int crossing(Point a, Point b, Point p) noexcept {
-  if (a.y <= p.y) return b.y > p.y && orient2d(a, b, p) > 0.0 ? 1 : 0;   // upward, p on its left
-  return b.y <= p.y && orient2d(a, b, p) < 0.0 ? -1 : 0;                  // downward, p on its right
+  if (a.y <= p.y) return b.y > p.y && orient2d(a, b, p) > 0.0 ? 1 : 0;  // upward, p on its left
+  return b.y <= p.y && orient2d(a, b, p) < 0.0 ? -1 : 0;                // downward, p on its right
 }
 
 bool lower_then_lefter(Point a, Point b) noexcept { return a.y < b.y || (a.y == b.y && a.x < b.x); }
 
-} // namespace
+}  // namespace
 
 double ring_signed_area(RingView ring) noexcept {
   if (ring.size() < 3) return 0.0;
@@ -112,4 +112,4 @@ RingLocation locate_in_ring(RingView ring, Point p) noexcept {
   return winding != 0 ? RingLocation::inside : RingLocation::outside;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

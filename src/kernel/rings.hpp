@@ -76,4 +76,4 @@ enum class RingLocation : std::int8_t { outside, on_ring, inside };
 // winding number is nonzero, outside when it is zero.
 RingLocation locate_in_ring(RingView ring, Point p) noexcept;
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -44,4 +44,4 @@ SegmentGrid::SegmentGrid(const std::vector<Point>& points, const std::vector<Seg
   });
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

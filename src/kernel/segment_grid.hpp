@@ -29,4 +29,4 @@ private:
   double xmin_ = 0.0, xmax_ = 0.0, ymin_ = 0.0, ymax_ = 0.0;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

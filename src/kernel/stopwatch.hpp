@@ -18,4 +18,4 @@ private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -11,4 +11,4 @@ UniformGrid::UniformGrid(Point origin, double w, double h, std::uint32_t cols, s
   slack_ = 64.0 * 0x1p-53 * scale + 1e-9 * std::max(w_, h_);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

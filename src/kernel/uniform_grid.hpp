@@ -172,8 +172,8 @@ void UniformGrid::rings(Point p, Visit&& visit, Done&& done) const {
   if (cols_ == 0 || rows_ == 0) return;
   const std::int64_t cx = col_of(p.x), cy = row_of(p.y), cols = cols_, rows = rows_;
   const auto cells = [&](std::int64_t row, std::int64_t c0, std::int64_t c1) {
-    for (const Entry& e : row_range(static_cast<std::uint32_t>(row), static_cast<std::uint32_t>(c0),
-                                    static_cast<std::uint32_t>(c1)))
+    for (const Entry& e :
+         row_range(static_cast<std::uint32_t>(row), static_cast<std::uint32_t>(c0), static_cast<std::uint32_t>(c1)))
       visit(e.item);
   };
   for (std::int64_t r = 0;; ++r) {
@@ -189,7 +189,7 @@ void UniformGrid::rings(Point p, Visit&& visit, Done&& done) const {
     // Every unvisited cell lies beyond one of the four sides of the visited
     // block that still has cells behind it; the nearest such side bounds
     // the distance of every item not yet seen.
-    const bool left = c0 > 0, right = c1 < cols - 1, below = r0 > 0, above = r1 < rows - 1;
+    const bool left = c0 > 0, right = c1<cols - 1, below = r0> 0, above = r1 < rows - 1;
     if (!left && !right && !below && !above) return;
     double lower = std::numeric_limits<double>::infinity();
     if (left) lower = std::min(lower, p.x - (x0_ + static_cast<double>(c0) * w_));
@@ -200,4 +200,4 @@ void UniformGrid::rings(Point p, Visit&& visit, Done&& done) const {
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

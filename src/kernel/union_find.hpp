@@ -15,4 +15,4 @@ inline std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t
   return v;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

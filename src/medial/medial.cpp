@@ -49,7 +49,7 @@ double end_angle(const Triangulation& tri, std::span<const BoundaryLinks> links,
   return link_angle(tri.points, links, at, towards);
 }
 
-} // namespace
+}  // namespace
 
 double link_angle(std::span<const Point> points, std::span<const BoundaryLinks> links, std::uint32_t at,
                   Point towards) {
@@ -70,7 +70,6 @@ int link_side(std::span<const Point> points, std::span<const BoundaryLinks> link
   if (!l.two_sided || l.tip || l.prev == no_index || l.next == no_index) return 0;
   return boundary_angle(points[at], points[l.prev], points[l.next], towards) >= 0.0 ? 0 : 1;
 }
-
 
 JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<const BoundaryLinks> links,
                            double separator_angle_deg) {
@@ -123,7 +122,6 @@ JunctionTest test_junction(const Triangulation& tri, std::uint32_t t, std::span<
   }
   return out;
 }
-
 
 namespace {
 
@@ -201,7 +199,8 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
   }
   if (options.smooth) {
     for (std::size_t k = 0; k < g.edges.size(); ++k) {
-      if (g.edges[k].acceptable) lengths[k] *= angle_coefficient(g.edges[k].smallest_angle_deg, options.separator_angle_deg);
+      if (g.edges[k].acceptable)
+        lengths[k] *= angle_coefficient(g.edges[k].smallest_angle_deg, options.separator_angle_deg);
     }
   }
   return lengths;
@@ -255,7 +254,7 @@ void contract(MedialGraph& g, const std::vector<double>& weights, const std::vec
   g.contracted = make_graph(std::move(coarse_weights), coarse_edges);
 }
 
-} // namespace
+}  // namespace
 
 MedialGraph build_medial_graph(const Triangulation& tri, std::span<const BoundaryLinks> links,
                                const MedialOptions& options) {
@@ -297,11 +296,11 @@ std::vector<BoundaryLinks> boundary_links(const Triangulation& tri) {
   return links;
 }
 
-} // namespace detail
+}  // namespace detail
 
 MedialGraph build_medial_graph(const Triangulation& tri, const MedialOptions& options) {
   const std::vector<detail::BoundaryLinks> links = detail::boundary_links(tri);
   return detail::build_medial_graph(tri, links, options);
 }
 
-} // namespace madd
+}  // namespace madd

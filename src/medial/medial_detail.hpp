@@ -57,8 +57,8 @@ int link_side(std::span<const Point> points, std::span<const BoundaryLinks> link
 // Per-triangle result of the junction test (Sec. 3, properties 1-3).
 struct JunctionTest {
   bool junction = false;
-  Point centre;                       // circumcentre
-  std::array<bool, 3> spoke_ok{};     // spoke centre -> vertex i is a candidate partial separator
+  Point centre;                         // circumcentre
+  std::array<bool, 3> spoke_ok{};       // spoke centre -> vertex i is a candidate partial separator
   std::array<double, 3> spoke_angle{};  // smallest angle (degrees) spoke i makes (boundary, other spokes)
 };
 
@@ -82,4 +82,4 @@ void set_vertex_weights(MedialGraph& graph, std::vector<double> weights);
 // outer edges (madd/medial.hpp).
 std::vector<BoundaryLinks> boundary_links(const Triangulation& tri);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -32,7 +32,8 @@ namespace {
 // The target length at p on segment j, before grading from the ends;
 // `regional` is the smallest area bound of the regions on j's sides
 // (+infinity for none), one more size bound.
-double local_target(Point p, const Segment& s, const AreaBound& size, const FeatureDistance& features, double regional) {
+double local_target(Point p, const Segment& s, const AreaBound& size, const FeatureDistance& features,
+                    double regional) {
   double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
     const double area = size.area_at(p);
@@ -84,13 +85,15 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
       density[i] = h > 0 && std::isfinite(h) ? length / h : 0.0;
     }
     pieces = 0;
-    for (std::size_t i = 0; i < samples; ++i) pieces += 0.5 * (density[i] + density[i + 1]) / static_cast<double>(samples);
+    for (std::size_t i = 0; i < samples; ++i)
+      pieces += 0.5 * (density[i] + density[i + 1]) / static_cast<double>(samples);
     // Resample where the pieces come out finer than the samples.
     const double wanted = std::min(4.0 * pieces, static_cast<double>(max_pieces_per_segment));
     if (pass == 1 || wanted <= static_cast<double>(samples)) break;
     samples = static_cast<std::size_t>(wanted);
   }
-  const auto n = static_cast<std::size_t>(std::clamp(std::ceil(pieces - 1e-9), 1.0, static_cast<double>(max_pieces_per_segment)));
+  const auto n =
+      static_cast<std::size_t>(std::clamp(std::ceil(pieces - 1e-9), 1.0, static_cast<double>(max_pieces_per_segment)));
   std::vector<double> out;
   if (n == 1) return out;
   // Invert the cumulative integral piecewise linearly.
@@ -115,8 +118,8 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
   return out;
 }
 
-} // namespace
-} // namespace detail
+}  // namespace
+}  // namespace detail
 
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size) {
   return detail::discretise(decomposition, size, true);
@@ -153,8 +156,9 @@ Decomposition detail::discretise(const Decomposition& decomposition, const MeshS
     const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
     std::uint32_t from = lo;
     const bool only_separators = !boundary_by_features && !decomposition.is_separator(j);
-    for (const double t : detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features,
-                                                   at_vertex, !only_separators, regional[j])) {
+    for (const double t :
+         detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features, at_vertex,
+                                  !only_separators, regional[j])) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
@@ -171,7 +175,8 @@ Decomposition detail::discretise(const Decomposition& decomposition, const MeshS
   // list stays sorted).
   for (Subdomain& sub : out.subdomains) {
     std::vector<std::uint32_t> interior;
-    for (const std::uint32_t j : sub.interior_segments) interior.insert(interior.end(), pieces[j].begin(), pieces[j].end());
+    for (const std::uint32_t j : sub.interior_segments)
+      interior.insert(interior.end(), pieces[j].begin(), pieces[j].end());
     std::sort(interior.begin(), interior.end());
     sub.interior_segments = std::move(interior);
     for (std::size_t r = 0; r < sub.rings.size(); ++r) {
@@ -235,4 +240,4 @@ std::vector<std::uint32_t> detail::split_separator_pieces(Decomposition& d, cons
   return changed;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -27,4 +27,4 @@ inline constexpr int max_separator_rounds = 10;
 // that use it. Returns the subdomains that changed, sorted.
 std::vector<std::uint32_t> split_separator_pieces(Decomposition& d, const std::vector<std::uint32_t>& pieces);
 
-} // namespace madd::detail
+}  // namespace madd::detail

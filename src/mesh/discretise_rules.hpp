@@ -25,4 +25,4 @@ inline constexpr double grading = 0.5;
 // magnitude below the segment's length is refused as a limit elsewhere).
 inline constexpr std::size_t max_pieces_per_segment = std::size_t{1} << 24;
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -18,7 +18,7 @@ double point_segment_distance(Point p, Point a, Point b) {
   return distance(p, lerp(a, b, t));
 }
 
-} // namespace
+}  // namespace
 
 FeatureDistance::FeatureDistance(const std::vector<Point>& points, const std::vector<Segment>& segments)
     : points_(points), segments_(segments) {
@@ -37,16 +37,18 @@ FeatureDistance::FeatureDistance(const std::vector<Point>& points, const std::ve
   // Cells about the mean segment length, at most about 4 per segment.
   const double extent = std::max(x1 - x0, y1 - y0);
   const double n = static_cast<double>(segments.size());
-  const double cell = std::max({total / n, extent / std::sqrt(4 * n), extent * 1e-9, std::numeric_limits<double>::min()});
+  const double cell =
+      std::max({total / n, extent / std::sqrt(4 * n), extent * 1e-9, std::numeric_limits<double>::min()});
   const auto cols = static_cast<std::uint32_t>((x1 - x0) / cell) + 1;
   const auto rows = static_cast<std::uint32_t>((y1 - y0) / cell) + 1;
   grid_ = UniformGrid({x0, y0}, cell, cell, cols, rows);
   // A segment is listed in the cells it passes through and a little beyond
   // (a superset is harmless, a miss is not).
   const double tol = 1e-3 * cell + 1e-12 * std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
-  grid_.fill(static_cast<std::uint32_t>(segments.size()), UniformGrid::Index::by_cell, [&](std::uint32_t j, auto&& add) {
-    grid_.segment_cells(points[segments[j].a], points[segments[j].b], tol, tol, add);
-  });
+  grid_.fill(static_cast<std::uint32_t>(segments.size()), UniformGrid::Index::by_cell,
+             [&](std::uint32_t j, auto&& add) {
+               grid_.segment_cells(points[segments[j].a], points[segments[j].b], tol, tol, add);
+             });
 }
 
 double FeatureDistance::to_nonincident(Point p, std::uint32_t ja, std::uint32_t jb) const {
@@ -70,4 +72,4 @@ double FeatureDistance::to_nonincident(Point p, std::uint32_t ja, std::uint32_t 
   return best;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

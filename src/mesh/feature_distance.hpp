@@ -28,4 +28,4 @@ private:
   UniformGrid grid_;  // square cells of about the mean segment length; items are segments
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

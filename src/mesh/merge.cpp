@@ -54,7 +54,8 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k) {
 namespace {
 
 // Global ids of one subdomain mesh's points.
-std::vector<std::uint32_t> global_ids(const LocalDomain& local, const SubdomainMesh& piece, std::uint32_t first_steiner) {
+std::vector<std::uint32_t> global_ids(const LocalDomain& local, const SubdomainMesh& piece,
+                                      std::uint32_t first_steiner) {
   std::vector<std::uint32_t> ids(piece.points.size());
   for (std::size_t v = 0; v < ids.size(); ++v) {
     ids[v] = v < local.to_global.size() ? local.to_global[v]
@@ -116,7 +117,7 @@ void link_across_separators(Mesh& m) {
   }
 }
 
-} // namespace
+}  // namespace
 
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
            const std::vector<bool>* kept) {
@@ -168,9 +169,9 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
     }
     if (!d.regions.empty()) {
       if (p.triangle_attribute.size() == p.triangles.size())
-        m.triangle_attribute.insert(m.triangle_attribute.end(), p.triangle_attribute.begin(), p.triangle_attribute.end());
-      else
-        m.triangle_attribute.resize(m.triangles.size(), 0.0);  // a subdomain in no region
+        m.triangle_attribute.insert(m.triangle_attribute.end(), p.triangle_attribute.begin(),
+                                    p.triangle_attribute.end());
+      else m.triangle_attribute.resize(m.triangles.size(), 0.0);  // a subdomain in no region
     }
     m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
     std::vector<MeshSegment> mine;
@@ -195,4 +196,4 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   return m;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -17,9 +17,9 @@ namespace madd::detail {
 // refinement and the merge need to map them back.
 struct LocalDomain {
   Pslg pslg;
-  std::vector<bool> splittable;         // per local segment: a boundary or interior piece (never a separator)
-  std::vector<std::uint32_t> to_global; // per local point: its point of the decomposition
-  std::vector<std::uint32_t> piece;     // per local segment: its segment of the decomposition
+  std::vector<bool> splittable;          // per local segment: a boundary or interior piece (never a separator)
+  std::vector<std::uint32_t> to_global;  // per local point: its point of the decomposition
+  std::vector<std::uint32_t> piece;      // per local segment: its segment of the decomposition
 };
 LocalDomain local_domain(const Decomposition& d, std::uint32_t k);
 
@@ -32,4 +32,4 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k);
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
            const std::vector<bool>* kept = nullptr);
 
-} // namespace madd::detail
+}  // namespace madd::detail

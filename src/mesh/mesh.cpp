@@ -29,8 +29,10 @@ namespace madd {
 void check_options(const MeshOptions& options) {
   const MeshSizeOptions& s = options.size;
   if (!(s.min_triangle_angle_deg >= 0 && s.min_triangle_angle_deg < 60))
-    throw OptionError("min_triangle_angle_deg", "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
-  if (!(s.max_triangle_area >= 0) || !std::isfinite(s.max_triangle_area)) throw OptionError("max_triangle_area", "must be finite and >= 0");
+    throw OptionError("min_triangle_angle_deg",
+                      "must lie in [0, 60) degrees (refinement terminates in practice up to about 34)");
+  if (!(s.max_triangle_area >= 0) || !std::isfinite(s.max_triangle_area))
+    throw OptionError("max_triangle_area", "must be finite and >= 0");
   for (const ValuedPoint& v : s.triangle_area_samples) {
     if (!(v.value > 0) || !std::isfinite(v.value) || !std::isfinite(v.at.x) || !std::isfinite(v.at.y))
       throw OptionError("triangle_area_samples", "every sample must have finite coordinates and a finite area > 0");
@@ -118,7 +120,7 @@ std::vector<std::uint32_t> blocking_separators(const Decomposition& d, const std
   return out;
 }
 
-} // namespace
+}  // namespace
 
 namespace detail {
 
@@ -149,7 +151,7 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
   }
 }
 
-} // namespace detail
+}  // namespace detail
 
 MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options) {
   check_options(options);
@@ -195,4 +197,4 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
 
 Mesh mesh(const Pslg& domain, const MeshOptions& options) { return mesh_with_report(domain, options).mesh; }
 
-} // namespace madd
+}  // namespace madd

@@ -26,9 +26,8 @@ std::vector<std::uint32_t> assign_shares(const std::vector<double>& expected_tri
   const auto n = static_cast<std::uint32_t>(expected_triangles.size());
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return expected_triangles[a] > expected_triangles[b];
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return expected_triangles[a] > expected_triangles[b]; });
   std::vector<double> load(std::max(shares, 1u), 0.0);
   std::vector<std::uint32_t> owner(n, 0);
   for (const std::uint32_t k : order) {
@@ -123,8 +122,8 @@ void verify_subdomain(const Decomposition& d, std::uint32_t k, const std::vector
   detail::throw_failed_check(named);
 }
 
-std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& counts, std::size_t first,
-                                          std::size_t n, std::uint64_t& total) {
+std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& counts, std::size_t first, std::size_t n,
+                                          std::uint64_t& total) {
   std::vector<std::uint64_t> out(n);
   total = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -198,7 +197,7 @@ std::vector<std::uint32_t> decomposition_point_owner(const Decomposition& d, con
   return out;
 }
 
-} // namespace
+}  // namespace
 
 MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                        std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange) {
@@ -210,7 +209,8 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   MeshPart& part = run.part;
   detail::Stopwatch clock;
   const auto n = static_cast<std::uint32_t>(decomposition.subdomains.size());
-  const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
+  const detail::ResourceGuard guard(
+      {options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
   Decomposition d = detail::discretise(decomposition, options.size, false);
   report.phases.push_back({"discretise", clock.lap()});
   const detail::AreaBound field(options.size);
@@ -275,4 +275,4 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   return run;
 }
 
-} // namespace madd
+}  // namespace madd

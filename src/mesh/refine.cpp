@@ -46,9 +46,9 @@ constexpr double sharp_corner_deg = 60.0;
 enum class Reason : std::uint8_t { none, input_angle, separator, precision, limit };
 
 struct TriangleShape {
-  double l2[3];      // squared length of edge i (opposite corner i)
-  double area;       // signed, floating point (the sign is known from orient2d)
-  int shortest;      // index of the shortest edge
+  double l2[3];  // squared length of edge i (opposite corner i)
+  double area;   // signed, floating point (the sign is known from orient2d)
+  int shortest;  // index of the shortest edge
 };
 
 TriangleShape shape_of(Point a, Point b, Point c) {
@@ -97,9 +97,10 @@ private:
   RefinementMesh& m_;
   const RefineSettings& settings_;
   const std::vector<double>& label_area_;
-  double beta_ = 1.0;  // circumradius / shortest edge bound: 1 / (2 sin theta)
+  double beta_ = 1.0;                // circumradius / shortest edge bound: 1 / (2 sin theta)
   std::vector<std::uint8_t> sharp_;  // per input vertex: two pieces meet there below 60 degrees
-  std::vector<std::uint8_t> sharp_arm_;  // per segment end (2 s at a, 2 s + 1 at b): it bounds a sector below 60 degrees
+  std::vector<std::uint8_t>
+      sharp_arm_;  // per segment end (2 s at a, 2 s + 1 at b): it bounds a sector below 60 degrees
   // Per input vertex: the unit of the shells boundary subsegments are split
   // in around it (0: none; see find_sharp_corners).
   std::vector<double> shell_unit_;
@@ -107,12 +108,12 @@ private:
   std::vector<std::uint32_t> triangle_queue_;
   std::vector<std::uint32_t> generation_;  // per slot, bumped when the slot holds a new triangle
   std::vector<std::uint32_t> queued_generation_;
-  std::vector<Reason> reason_;  // per slot: why the triangle there was left bad
-  std::vector<std::uint32_t> blocker_;  // per slot: with Reason::separator, the separator segment in the way
+  std::vector<Reason> reason_;               // per slot: why the triangle there was left bad
+  std::vector<std::uint32_t> blocker_;       // per slot: with Reason::separator, the separator segment in the way
   std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
   std::size_t steiner_ = 0;
   bool out_of_budget_ = false;
-  std::size_t next_check_ = 8192;  // steiner_ at the next resource check
+  std::size_t next_check_ = 8192;          // steiner_ at the next resource check
   std::vector<std::uint32_t> encroached_;  // scratch of try_triangle
 };
 
@@ -165,7 +166,8 @@ void Refiner::find_sharp_corners() {
   sharp_.assign(n, 0);
   shell_unit_.assign(n, 0.0);
   std::vector<std::uint32_t> pieces(n, 0), splittable(n, 0);
-  std::vector<double> fixed_length(n, std::numeric_limits<double>::infinity());  // the shortest separator piece at the vertex
+  std::vector<double> fixed_length(
+      n, std::numeric_limits<double>::infinity());  // the shortest separator piece at the vertex
   for (std::size_t s = 0; s < m_.segment_count(); ++s) {
     const RefinementSegment& seg = m_.segment(static_cast<std::uint32_t>(s));
     for (const std::uint32_t v : {seg.a, seg.b}) {
@@ -302,11 +304,11 @@ double Refiner::split_parameter(std::uint32_t h) const {
   const std::uint32_t sid = m_.segment_of(h);
   const RefinementSegment& s = m_.segment(sid);
   const std::uint32_t o = m_.origin(h), d = m_.dest(h);
-  const auto parameter_of = [&](std::uint32_t v) {
-    return v == s.a ? 0.0 : v == s.b ? 1.0 : m_.vertex_parameter(v);
-  };
+  const auto parameter_of = [&](std::uint32_t v) { return v == s.a ? 0.0 : v == s.b ? 1.0 : m_.vertex_parameter(v); };
   const double to = parameter_of(o), td = parameter_of(d);
-  const auto unit_at = [&](std::uint32_t v) { return (v == s.a || v == s.b) && v < shell_unit_.size() ? shell_unit_[v] : 0.0; };
+  const auto unit_at = [&](std::uint32_t v) {
+    return (v == s.a || v == s.b) && v < shell_unit_.size() ? shell_unit_[v] : 0.0;
+  };
   const bool corner_o = unit_at(o) > 0, corner_d = unit_at(d) > 0;
   if (corner_o == corner_d) return 0.5 * (to + td);
   const double full = distance(m_.point(s.a), m_.point(s.b));
@@ -488,13 +490,19 @@ MeshShortfall Refiner::shortfall(std::vector<std::uint32_t>& blocking) const {
         settings_.min_triangle_angle_deg - mesh_angle_slack_deg)
       continue;
     switch (t < reason_.size() ? reason_[t] : Reason::none) {
-      case Reason::input_angle: ++f.input_angle; break;
-      case Reason::separator:
-        ++f.separator;
-        if (blocker_[t] != no_index) blocking.push_back(blocker_[t]);
-        break;
-      case Reason::limit: ++f.limit; break;
-      default: ++f.precision; break;
+    case Reason::input_angle:
+      ++f.input_angle;
+      break;
+    case Reason::separator:
+      ++f.separator;
+      if (blocker_[t] != no_index) blocking.push_back(blocker_[t]);
+      break;
+    case Reason::limit:
+      ++f.limit;
+      break;
+    default:
+      ++f.precision;
+      break;
     }
   }
   std::sort(blocking.begin(), blocking.end());
@@ -508,7 +516,7 @@ std::vector<RefinementSegment> refinement_segments(const Pslg& pslg, const std::
   return out;
 }
 
-} // namespace
+}  // namespace
 
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings) {
   // Refinement grows the triangulator's own mesh. The labels are 1 + the
@@ -540,7 +548,8 @@ SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splitt
     if (!m.alive(t)) continue;
     index[t] = static_cast<std::uint32_t>(out.triangles.size());
     out.triangles.push_back({m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)});
-    if (!pslg.regions.empty()) out.triangle_attribute.push_back(m.label(t) == 0 ? 0.0 : pslg.regions[m.label(t) - 1].attribute);
+    if (!pslg.regions.empty())
+      out.triangle_attribute.push_back(m.label(t) == 0 ? 0.0 : pslg.regions[m.label(t) - 1].attribute);
   }
   out.neighbours.resize(out.triangles.size());
   for (std::uint32_t t = 0; t < m.slot_count(); ++t) {
@@ -553,4 +562,4 @@ SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splitt
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -56,4 +56,4 @@ struct SubdomainMesh {
 // max_triangle_area when > 0). Deterministic.
 SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splittable, const RefineSettings& settings);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -120,4 +120,4 @@ std::uint32_t RefinementMesh::split(std::uint32_t h, double parameter) {
   return v;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -55,7 +55,9 @@ public:
   std::uint32_t slot_count() const noexcept { return mesh_.slot_count(); }
   bool alive(std::uint32_t t) const noexcept { return mesh_.alive(t); }
   std::uint32_t label(std::uint32_t t) const noexcept { return label_[t]; }
-  std::uint32_t corner(std::uint32_t t, int i) const noexcept { return mesh_.tv[3 * t + static_cast<std::uint32_t>(i)]; }
+  std::uint32_t corner(std::uint32_t t, int i) const noexcept {
+    return mesh_.tv[3 * t + static_cast<std::uint32_t>(i)];
+  }
   std::uint32_t origin(std::uint32_t h) const noexcept { return mesh_.origin(h); }
   std::uint32_t dest(std::uint32_t h) const noexcept { return mesh_.dest(h); }
   std::uint32_t twin(std::uint32_t h) const noexcept { return mesh_.tn[h]; }
@@ -123,4 +125,4 @@ private:
   std::vector<std::uint32_t> fresh_;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -35,4 +35,4 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 // Throws InternalError with the first of v's problems (v failed).
 [[noreturn]] void throw_failed_check(const Verification& v);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -94,11 +94,11 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
   }
   const auto side = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(queries.size())), 1.0, 256.0));
   UniformGrid grid({x0, y0}, std::max(x1 - x0, 1e-300) / side, std::max(y1 - y0, 1e-300) / side, side, side);
-  grid.fill(static_cast<std::uint32_t>(queries.size()), UniformGrid::Index::by_cell, [&](std::uint32_t q, auto&& add) {
-    add(grid.col_of(queries[q].x), grid.row_of(queries[q].y));
-  });
+  grid.fill(static_cast<std::uint32_t>(queries.size()), UniformGrid::Index::by_cell,
+            [&](std::uint32_t q, auto&& add) { add(grid.col_of(queries[q].x), grid.row_of(queries[q].y)); });
   for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
-    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
+    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]],
+                c = tri.points[tri.triangles[t][2]];
     const Point lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
     const Point hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y})};
     if (hi.x < x0 || lo.x > x1 || hi.y < y0 || lo.y > y1) continue;
@@ -114,7 +114,7 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
   return out;
 }
 
-} // namespace
+}  // namespace
 
 RegionView region_view(const Decomposition& d) {
   RegionView out;
@@ -162,4 +162,4 @@ RegionView region_view(const Decomposition& d) {
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -36,4 +36,4 @@ struct RegionView {
 // points in one face the later wins). Deterministic.
 RegionView region_view(const Decomposition& d);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -98,7 +98,7 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound
   return t;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<double> expected_triangles(const Decomposition& d, const AreaBound& size) {
   std::vector<double> out;
@@ -189,7 +189,7 @@ void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::
   }
 }
 
-} // namespace
+}  // namespace
 
 void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBound& size) {
   if (options.weight_function || !options.weight_samples.empty() || options.gradation > 0 ||
@@ -247,7 +247,8 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
 std::size_t steiner_budget(double expected_triangles, std::size_t ring_vertices) {
   // Generous: ten times the expected triangles, with a floor for meshes
   // whose estimate is small. Hitting it is reported, never silent.
-  return static_cast<std::size_t>(std::min(4e9, 10.0 * expected_triangles + 20.0 * static_cast<double>(ring_vertices) + 1e5));
+  return static_cast<std::size_t>(
+      std::min(4e9, 10.0 * expected_triangles + 20.0 * static_cast<double>(ring_vertices) + 1e5));
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

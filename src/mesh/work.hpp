@@ -22,4 +22,4 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
 // (what is left below the bound is then counted as MeshShortfall::limit).
 std::size_t steiner_budget(double expected_triangles, std::size_t ring_vertices);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -102,9 +102,11 @@ Point point_inside(const Triangulation& tri, std::vector<std::uint32_t> triangle
     const auto& v = tri.triangles[t];
     return signed_area(tri.points[v[0]], tri.points[v[1]], tri.points[v[2]]);
   };
-  std::stable_sort(triangles.begin(), triangles.end(), [&](std::uint32_t a, std::uint32_t b) { return area(a) > area(b); });
+  std::stable_sort(triangles.begin(), triangles.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return area(a) > area(b); });
   for (const std::uint32_t t : triangles) {
-    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]], c = tri.points[tri.triangles[t][2]];
+    const Point a = tri.points[tri.triangles[t][0]], b = tri.points[tri.triangles[t][1]],
+                c = tri.points[tri.triangles[t][2]];
     const Point m{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
     if (orient2d(a, b, m) > 0 && orient2d(b, c, m) > 0 && orient2d(c, a, m) > 0) return m;
   }
@@ -126,13 +128,14 @@ bool on_constrained_edge(const Triangulation& tri, const std::vector<std::uint32
   return false;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<DecompositionFace> decomposition_faces(const Decomposition& d) {
   std::vector<DecompositionFace> out;
   const bool interior = has_interior_segments(d);
   if (!interior && d.regions.empty()) {
-    for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) out.push_back({k, d.subdomains[k].interior_point, no_index});
+    for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
+      out.push_back({k, d.subdomains[k].interior_point, no_index});
     return out;
   }
   const Sides sides = segment_sides(d);
@@ -171,7 +174,8 @@ std::vector<DecompositionFace> decomposition_faces(const Decomposition& d) {
     if (subdomain[f] != no_index) ++faces_of_subdomain[subdomain[f]];
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0U);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return subdomain[a] < subdomain[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return subdomain[a] < subdomain[b]; });
   // The point of a face: the input's own region point when it is the one
   // covering the face and lies strictly inside it (the file then shows the
   // user's point), else the subdomain's interior point when the face is the
@@ -192,4 +196,4 @@ std::vector<DecompositionFace> decomposition_faces(const Decomposition& d) {
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

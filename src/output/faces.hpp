@@ -17,7 +17,7 @@ namespace madd::detail {
 // subdomain without interior segments is one face).
 struct DecompositionFace {
   std::uint32_t subdomain = 0;
-  Point point;                     // strictly inside the face, on no segment
+  Point point;  // strictly inside the face, on no segment
   // The input region (index into Decomposition::regions) whose attribute and
   // area bound Triangle gives this part of the input: of the region points
   // lying in the part of the domain bounded by input segments (boundary and
@@ -39,4 +39,4 @@ struct DecompositionFace {
 // consistently.
 std::vector<DecompositionFace> decomposition_faces(const Decomposition& decomposition);
 
-} // namespace madd::detail
+}  // namespace madd::detail

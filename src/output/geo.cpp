@@ -35,7 +35,8 @@ std::vector<double> point_sizes(const Decomposition& d, double fixed) {
     if (sub.interior_points.empty()) continue;
     double local = unset;
     for (const auto& ring : sub.ring_segments)
-      for (const std::uint32_t s : ring) local = std::min(local, distance(d.points[d.segments[s].a], d.points[d.segments[s].b]));
+      for (const std::uint32_t s : ring)
+        local = std::min(local, distance(d.points[d.segments[s].a], d.points[d.segments[s].b]));
     for (const std::uint32_t s : sub.interior_segments)
       local = std::min(local, distance(d.points[d.segments[s].a], d.points[d.segments[s].b]));
     for (const std::uint32_t p : sub.interior_points)
@@ -165,7 +166,7 @@ void append_curve_groups(std::string& out, const Decomposition& d) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_geo(const Decomposition& decomposition, const GeoOptions& options) {
   std::string out = "// madd decomposition: ";
@@ -174,11 +175,12 @@ std::string format_geo(const Decomposition& decomposition, const GeoOptions& opt
          "// Physical Curve \"boundary_m\" holds the original boundary with marker m. Mesh: gmsh -2 FILE.geo\n";
   if (std::any_of(decomposition.subdomains.begin(), decomposition.subdomains.end(),
                   [](const Subdomain& s) { return !s.interior_segments.empty() || !s.interior_points.empty(); }))
-    out += "// Interior segments are Lines In Surface (in \"boundary_m\" by their marker m), isolated points Points In Surface.\n";
+    out += "// Interior segments are Lines In Surface (in \"boundary_m\" by their marker m), isolated points Points In "
+           "Surface.\n";
   append_points_and_lines(out, decomposition, options);
   append_surfaces(out, decomposition);
   append_curve_groups(out, decomposition);
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

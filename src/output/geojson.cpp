@@ -66,7 +66,7 @@ void append_interior_features(std::string& out, const Decomposition& d) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_geojson(const Decomposition& decomposition) {
   std::string out = "{\"type\":\"FeatureCollection\",\"features\":[";
@@ -88,4 +88,4 @@ std::string format_geojson(const Decomposition& decomposition) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -45,12 +45,9 @@ public:
   // v, or null when not finite (JSON has no NaN or infinity).
   void number(std::string_view name, double v, Digits digits = Digits::shortest) {
     key(name);
-    if (!std::isfinite(v))
-      out_ += "null";
-    else if (digits == Digits::all)
-      append_g17(out_, v);
-    else
-      append_shortest(out_, v);
+    if (!std::isfinite(v)) out_ += "null";
+    else if (digits == Digits::all) append_g17(out_, v);
+    else append_shortest(out_, v);
   }
   void count(std::string_view name, std::uint64_t v) {
     key(name);
@@ -63,4 +60,4 @@ private:
   bool first_ = true;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

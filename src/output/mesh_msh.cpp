@@ -43,8 +43,8 @@ struct Box {
 
 // The model behind the mesh: its boundary edges grouped by marker.
 struct Model {
-  std::vector<int> markers;  // curve c holds the edges of markers[c], increasing
-  std::vector<BoundaryEdge> edges;  // by curve, then in triangle order
+  std::vector<int> markers;                              // curve c holds the edges of markers[c], increasing
+  std::vector<BoundaryEdge> edges;                       // by curve, then in triangle order
   std::vector<std::vector<std::size_t>> surface_curves;  // the curves each subdomain touches
 };
 
@@ -84,7 +84,8 @@ Model boundary_model(const Mesh& mesh) {
   std::stable_sort(model.edges.begin(), model.edges.end(),
                    [](const BoundaryEdge& x, const BoundaryEdge& y) { return x.curve < y.curve; });
   model.surface_curves.resize(mesh.subdomain_count());
-  for (const BoundaryEdge& e : model.edges) model.surface_curves[mesh.triangle_subdomain[e.triangle]].push_back(e.curve);
+  for (const BoundaryEdge& e : model.edges)
+    model.surface_curves[mesh.triangle_subdomain[e.triangle]].push_back(e.curve);
   for (auto& curves : model.surface_curves) {
     std::sort(curves.begin(), curves.end());
     curves.erase(std::unique(curves.begin(), curves.end()), curves.end());
@@ -219,11 +220,12 @@ void append_region_attributes(std::string& out, const Mesh& mesh) {
   if (!detail::has_region_attributes(mesh)) return;
   out += "$ElementData\n1\n\"region_attribute\"\n1\n0\n3\n0\n1\n";
   line(out, mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) line(out, std::int64_t(t) + 1, detail::region_attribute(mesh, t));
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    line(out, std::int64_t(t) + 1, detail::region_attribute(mesh, t));
   out += "$EndElementData\n";
 }
 
-} // namespace
+}  // namespace
 
 std::string format_mesh_msh(const Mesh& mesh) {
   const Model model = boundary_model(mesh);
@@ -238,4 +240,4 @@ std::string format_mesh_msh(const Mesh& mesh) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

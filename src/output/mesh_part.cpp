@@ -52,24 +52,23 @@ std::string format_part_vtu(const MeshPart& part) {
 }
 
 std::string format_parts_pvtu(const std::vector<std::string>& pieces, bool region_attributes) {
-  std::string out =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <PUnstructuredGrid GhostLevel=\"0\">\n"
-      "    <PPointData Scalars=\"marker\" GlobalIds=\"global_id\">\n"
-      "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
-      "      <PDataArray type=\"Int32\" Name=\"owner\"/>\n"
-      "      <PDataArray type=\"Int32\" Name=\"marker\"/>\n"
-      "    </PPointData>\n"
-      "    <PCellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n"
-      "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
-      "      <PDataArray type=\"Int32\" Name=\"rank\"/>\n"
-      "      <PDataArray type=\"Int32\" Name=\"subdomain\"/>\n";
+  std::string out = "<?xml version=\"1.0\"?>\n"
+                    "<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                    "  <PUnstructuredGrid GhostLevel=\"0\">\n"
+                    "    <PPointData Scalars=\"marker\" GlobalIds=\"global_id\">\n"
+                    "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
+                    "      <PDataArray type=\"Int32\" Name=\"owner\"/>\n"
+                    "      <PDataArray type=\"Int32\" Name=\"marker\"/>\n"
+                    "    </PPointData>\n"
+                    "    <PCellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n"
+                    "      <PDataArray type=\"Int64\" Name=\"global_id\" IdType=\"1\"/>\n"
+                    "      <PDataArray type=\"Int32\" Name=\"rank\"/>\n"
+                    "      <PDataArray type=\"Int32\" Name=\"subdomain\"/>\n";
   if (region_attributes) out += "      <PDataArray type=\"Float64\" Name=\"region_attribute\"/>\n";
   out += "    </PCellData>\n"
-      "    <PPoints>\n"
-      "      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
-      "    </PPoints>\n";
+         "    <PPoints>\n"
+         "      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
+         "    </PPoints>\n";
   for (const std::string& piece : pieces) out += "    <Piece Source=\"" + piece + "\"/>\n";
   out += "  </PUnstructuredGrid>\n</VTKFile>\n";
   return out;
@@ -89,7 +88,7 @@ std::pair<std::string, std::string> split_prefix(const std::string& prefix) {
   return {prefix.substr(0, slash + 1), prefix.substr(slash + 1)};
 }
 
-} // namespace
+}  // namespace
 
 void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
                    const MeshPartFormats& formats) {
@@ -115,4 +114,4 @@ void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& 
   }
 }
 
-} // namespace madd
+}  // namespace madd

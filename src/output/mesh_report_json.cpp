@@ -46,7 +46,7 @@ void add_run_figure(detail::JsonObject& o, std::string& out, const RunFigure& fi
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_mesh_report_json(const MeshMetrics& m, const std::vector<RunFigure>& run) {
   std::string out;
@@ -78,4 +78,4 @@ std::string format_mesh_report_json(const MeshMetrics& m, const std::vector<RunF
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

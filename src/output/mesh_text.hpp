@@ -66,4 +66,4 @@ struct VtuGlobalIds {
 // with the region attribute of every triangle.
 std::string format_vtu(const LocalMesh& mesh, bool regions, const VtuGlobalIds& global);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -33,7 +33,7 @@ int boundary_marker(const std::unordered_map<std::uint64_t, int>& markers, std::
   return it == markers.end() ? 1 : it->second;
 }
 
-} // namespace detail
+}  // namespace detail
 
 namespace {
 
@@ -44,16 +44,14 @@ using detail::line;
 template <typename IdOf>
 void append_triangle_line(std::string& out, std::int64_t id, const std::array<std::uint32_t, 3>& t, IdOf id_of,
                           std::uint32_t subdomain, const Mesh& mesh, std::size_t triangle) {
-  if (!detail::has_region_attributes(mesh))
-    line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
-  else
-    line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain, detail::region_attribute(mesh, triangle));
+  if (!detail::has_region_attributes(mesh)) line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
+  else line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain, detail::region_attribute(mesh, triangle));
 }
 
 // The .ele attribute count: the subdomain, and the region attribute with regions.
 int ele_attributes(const Mesh& mesh) { return detail::has_region_attributes(mesh) ? 2 : 1; }
 
-} // namespace
+}  // namespace
 
 std::string format_mesh_node(const Mesh& mesh, unsigned first_index) {
   detail::check_first_index(first_index);
@@ -108,7 +106,7 @@ std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) {
       const std::uint32_t b = mesh.triangles[t][static_cast<std::size_t>((i + 2) % 3)];
       // An edge inside the domain: an interior segment's marker, else 0 (separators too).
       const auto inside = across == no_index ? markers.end() : markers.find(detail::edge_key(a, b));
-      const int marker = across == no_index ? detail::boundary_marker(markers, a, b)
+      const int marker = across == no_index        ? detail::boundary_marker(markers, a, b)
                          : inside == markers.end() ? 0
                                                    : inside->second;
       line(body, count + first_index, std::int64_t{a} + first_index, std::int64_t{b} + first_index, marker);
@@ -133,7 +131,7 @@ std::vector<std::uint32_t> subdomain_vertices(const Mesh& mesh, std::uint32_t k)
   return vertices;
 }
 
-} // namespace
+}  // namespace
 
 std::string format_subdomain_mesh_node(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
   detail::check_first_index(first_index);
@@ -165,4 +163,4 @@ std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigne
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -35,7 +35,8 @@ void close_array(std::string& out) { out += "        </DataArray>\n"; }
 template <typename AnyMesh>
 void append_point_data(std::string& out, const AnyMesh& mesh, const detail::VtuGlobalIds* global) {
   const std::size_t n = mesh.points.size();
-  out += global ? "      <PointData Scalars=\"marker\" GlobalIds=\"global_id\">\n" : "      <PointData Scalars=\"marker\">\n";
+  out += global ? "      <PointData Scalars=\"marker\" GlobalIds=\"global_id\">\n"
+                : "      <PointData Scalars=\"marker\">\n";
   if (global) {
     open_array(out, "Int64", "global_id", 1, true);
     for (const std::uint64_t id : *global->point_ids) line(out, id);
@@ -52,7 +53,8 @@ void append_point_data(std::string& out, const AnyMesh& mesh, const detail::VtuG
 
 template <typename AnyMesh>
 void append_cell_data(std::string& out, const AnyMesh& mesh, bool regions, const detail::VtuGlobalIds* global) {
-  out += global ? "      <CellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n" : "      <CellData Scalars=\"subdomain\">\n";
+  out += global ? "      <CellData Scalars=\"subdomain\" GlobalIds=\"global_id\">\n"
+                : "      <CellData Scalars=\"subdomain\">\n";
   if (global) {
     open_array(out, "Int64", "global_id", 1, true);
     for (const std::uint64_t id : *global->triangle_ids) line(out, id);
@@ -102,7 +104,7 @@ std::string vtu_text(const AnyMesh& mesh, bool regions, const detail::VtuGlobalI
   return out;
 }
 
-} // namespace
+}  // namespace
 
 namespace detail {
 
@@ -110,10 +112,8 @@ std::string format_vtu(const LocalMesh& mesh, bool regions, const VtuGlobalIds& 
   return vtu_text(mesh, regions, &global);
 }
 
-} // namespace detail
+}  // namespace detail
 
-std::string format_mesh_vtu(const Mesh& mesh) {
-  return vtu_text(mesh, detail::has_region_attributes(mesh), nullptr);
-}
+std::string format_mesh_vtu(const Mesh& mesh) { return vtu_text(mesh, detail::has_region_attributes(mesh), nullptr); }
 
-} // namespace madd
+}  // namespace madd

@@ -31,7 +31,7 @@ bool is_split_mesh_name(const std::string& name, std::string_view stem) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 // The padding rule lives in split_file_name (output 2's names); only the
 // extension differs.
@@ -81,4 +81,4 @@ void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view
   outputs.write();
 }
 
-} // namespace madd
+}  // namespace madd

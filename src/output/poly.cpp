@@ -65,7 +65,8 @@ void append_regions(std::string& out, const Decomposition& d, const std::vector<
   } else if (chosen.size() == d.subdomains.size()) {
     out += "# regions: one per subdomain, attribute = subdomain number, no area bound\n";
   } else {
-    out += "# regions: one per part of a subdomain between its interior segments, attribute = subdomain number, no area bound\n";
+    out += "# regions: one per part of a subdomain between its interior segments, attribute = subdomain number, no "
+           "area bound\n";
   }
   append_int(out, static_cast<std::int64_t>(chosen.size()));
   out += '\n';
@@ -93,7 +94,7 @@ void append_regions(std::string& out, const Decomposition& d, const std::vector<
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_decomposition_poly(const Decomposition& d, std::string_view header_comment) {
   std::string out;
@@ -127,7 +128,7 @@ std::string format_decomposition_poly(const Decomposition& d, std::string_view h
 }
 
 std::string detail::format_subdomain_poly(const Decomposition& d, std::uint32_t k,
-                                         const std::vector<DecompositionFace>& faces) {
+                                          const std::vector<DecompositionFace>& faces) {
   const Subdomain& sub = d.subdomains.at(k);
   // Local 1-based ids in order of first appearance: ring vertices (a vertex
   // shared by two rings, a hole touching the outer ring, is written once),
@@ -181,7 +182,8 @@ std::string detail::format_subdomain_poly(const Decomposition& d, std::uint32_t 
     for (std::size_t j = 0; j < ring.size(); ++j)
       append_segment(ring[j], ring[(j + 1) % ring.size()], d.segments[sub.ring_segments[r][j]].marker);
   }
-  for (const std::uint32_t s : sub.interior_segments) append_segment(d.segments[s].a, d.segments[s].b, d.segments[s].marker);
+  for (const std::uint32_t s : sub.interior_segments)
+    append_segment(d.segments[s].a, d.segments[s].b, d.segments[s].marker);
   append_holes(out, sub.hole_points);
   append_regions(out, d, faces, k);
   return out;
@@ -190,8 +192,8 @@ std::string detail::format_subdomain_poly(const Decomposition& d, std::uint32_t 
 std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k) {
   (void)d.subdomains.at(k);  // out of range: throw before the faces are computed
   // Faces are only needed for the input's regions (none: no triangulation).
-  return detail::format_subdomain_poly(d, k, d.regions.empty() ? std::vector<detail::DecompositionFace>{}
-                                                               : detail::decomposition_faces(d));
+  return detail::format_subdomain_poly(
+      d, k, d.regions.empty() ? std::vector<detail::DecompositionFace>{} : detail::decomposition_faces(d));
 }
 
 std::string split_file_name(std::string_view stem, std::uint32_t k, std::uint32_t count) {
@@ -201,4 +203,4 @@ std::string split_file_name(std::string_view stem, std::uint32_t k, std::uint32_
   return std::string(stem) + "-" + number + ".poly";
 }
 
-} // namespace madd
+}  // namespace madd

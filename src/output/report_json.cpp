@@ -52,4 +52,4 @@ std::string format_report_json(const Metrics& m) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

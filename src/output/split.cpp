@@ -23,7 +23,7 @@ bool is_split_name(const std::string& name, std::string_view stem) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 void add_split(OutputSet& outputs, const Decomposition& d, const std::string& dir, std::string_view stem) {
   const auto count = static_cast<std::uint32_t>(d.subdomains.size());
@@ -44,4 +44,4 @@ void write_split(const Decomposition& d, const std::string& dir, std::string_vie
   outputs.write();
 }
 
-} // namespace madd
+}  // namespace madd

@@ -15,4 +15,4 @@ namespace madd::detail {
 // decomposition has no regions, `faces` is not read and may be empty.
 std::string format_subdomain_poly(const Decomposition& d, std::uint32_t k, const std::vector<DecompositionFace>& faces);
 
-} // namespace madd::detail
+}  // namespace madd::detail

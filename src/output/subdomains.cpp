@@ -60,7 +60,7 @@ void append_interior_section(std::string& out, const Decomposition& d) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_subdomain_file(const Decomposition& d) {
   std::string out;
@@ -115,4 +115,4 @@ std::string format_subdomain_file(const Decomposition& d) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

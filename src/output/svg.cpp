@@ -26,8 +26,10 @@ struct View {
       min_y = max_y = points[0].y;
     }
     for (const Point& p : points) {
-      min_x = std::min(min_x, p.x); max_x = std::max(max_x, p.x);
-      min_y = std::min(min_y, p.y); max_y = std::max(max_y, p.y);
+      min_x = std::min(min_x, p.x);
+      max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y);
+      max_y = std::max(max_y, p.y);
     }
     const double extent = std::max(max_x - min_x, max_y - min_y);
     scale = extent > 0 ? pixels / extent : 1.0;
@@ -65,12 +67,29 @@ std::string colour(std::size_t k) {
   const double c = (1 - std::abs(2 * l - 1)) * s;
   const double x = c * (1 - std::abs(std::fmod(h, 2.0) - 1));
   double r = 0, g = 0, b = 0;
-  if (h < 1) { r = c; g = x; } else if (h < 2) { r = x; g = c; } else if (h < 3) { g = c; b = x; }
-  else if (h < 4) { g = x; b = c; } else if (h < 5) { r = x; b = c; } else { r = c; b = x; }
+  if (h < 1) {
+    r = c;
+    g = x;
+  } else if (h < 2) {
+    r = x;
+    g = c;
+  } else if (h < 3) {
+    g = c;
+    b = x;
+  } else if (h < 4) {
+    g = x;
+    b = c;
+  } else if (h < 5) {
+    r = x;
+    b = c;
+  } else {
+    r = c;
+    b = x;
+  }
   const double m = l - c / 2;
   char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", int(std::lround((r + m) * 255)), int(std::lround((g + m) * 255)),
-                int(std::lround((b + m) * 255)));
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", int(std::lround((r + m) * 255)),
+                int(std::lround((g + m) * 255)), int(std::lround((b + m) * 255)));
   return buffer;
 }
 
@@ -240,7 +259,7 @@ void append_annotations(std::string& out, const Decomposition& d, const View& vi
   }
 }
 
-} // namespace
+}  // namespace
 
 void check_options(const SvgOptions& options) {
   if (!(std::isfinite(options.width) && options.width >= 0.0 && options.width <= 1e6))
@@ -278,4 +297,4 @@ std::string format_svg(const Decomposition& d, const SvgOptions& options) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

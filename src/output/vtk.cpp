@@ -60,22 +60,28 @@ std::vector<Triangle> subdomain_triangles(const Decomposition& d, std::uint32_t 
   out.reserve(tri.triangles.size());
   for (std::size_t t = 0; t < tri.triangles.size(); ++t) {
     out.push_back({global[tri.triangles[t][0]], global[tri.triangles[t][1]], global[tri.triangles[t][2]]});
-    face_of.push_back(tri.attributes.empty() || tri.attributes[t] < 1 ? no_index
-                                                                      : static_cast<std::uint32_t>(tri.attributes[t]) - 1);
+    face_of.push_back(
+        tri.attributes.empty() || tri.attributes[t] < 1 ? no_index : static_cast<std::uint32_t>(tri.attributes[t]) - 1);
   }
   return out;
 }
 
 // What a cell is (the "kind" cell array, docs/formats.md).
-enum CellKind : int { subdomain_triangle = 0, boundary_piece = 1, separator_piece = 2, interior_piece = 3, isolated_point = 4 };
+enum CellKind : int {
+  subdomain_triangle = 0,
+  boundary_piece = 1,
+  separator_piece = 2,
+  interior_piece = 3,
+  isolated_point = 4
+};
 
 // The cells in the order legacy POLYDATA numbers them (VERTICES, LINES,
 // POLYGONS), with the cell data of each.
 struct Cells {
-  std::vector<std::uint32_t> vertices;               // isolated points
-  std::vector<std::uint32_t> lines;                  // every segment, by index
+  std::vector<std::uint32_t> vertices;  // isolated points
+  std::vector<std::uint32_t> lines;     // every segment, by index
   std::vector<Triangle> triangles;
-  std::vector<std::int64_t> subdomain;               // -1: a separator, in two subdomains
+  std::vector<std::int64_t> subdomain;  // -1: a separator, in two subdomains
   std::vector<int> kind, marker;
   // Only when the input has regions: the attribute and max area Triangle
   // would give each triangle (output 1's regions), 0 and -1 for other cells.
@@ -154,7 +160,7 @@ void append_section(std::string& out, const char* keyword, std::size_t cells, st
   out += '\n';
 }
 
-} // namespace
+}  // namespace
 
 std::string format_vtk(const Decomposition& decomposition) {
   const Decomposition& d = decomposition;
@@ -207,7 +213,8 @@ std::string format_vtk(const Decomposition& decomposition) {
   // area and weight are 0: it belongs to two subdomains.
   const auto of_subdomain = [&](double Subdomain::*field) {
     std::vector<double> v;
-    for (const std::int64_t k : cells.subdomain) v.push_back(k < 0 ? 0.0 : d.subdomains[static_cast<std::size_t>(k)].*field);
+    for (const std::int64_t k : cells.subdomain)
+      v.push_back(k < 0 ? 0.0 : d.subdomains[static_cast<std::size_t>(k)].*field);
     return v;
   };
   const auto write_double = [&](double v) { detail::append_g17(out, v); };
@@ -224,4 +231,4 @@ std::string format_vtk(const Decomposition& decomposition) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

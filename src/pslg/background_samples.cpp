@@ -34,4 +34,4 @@ std::vector<ValuedPoint> read_background_samples(const std::string& path, Sample
   return samples;
 }
 
-} // namespace madd
+}  // namespace madd

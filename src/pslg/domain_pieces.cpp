@@ -42,4 +42,4 @@ DomainPieces trace_domain_pieces(const Pslg& domain, bool split_at_vertices) {
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -44,11 +44,10 @@ void check_count_fits(const PolyLexer& lx, std::uint32_t n, std::uint64_t fields
 }
 
 // Checks that item `i` of a section of `count` items carries the id base+i.
-void expect_id(PolyLexer& lx, IdBase& base, std::int64_t id, std::uint32_t i, std::uint32_t count,
-               const char* what) {
+void expect_id(PolyLexer& lx, IdBase& base, std::int64_t id, std::uint32_t i, std::uint32_t count, const char* what) {
   if (!base.known) {
-    if (id != 0 && id != 1) lx.fail_token(std::string("the first ") + what + " id must be 0 or 1, got " +
-                                          std::to_string(id));
+    if (id != 0 && id != 1)
+      lx.fail_token(std::string("the first ") + what + " id must be 0 or 1, got " + std::to_string(id));
     base = {true, static_cast<std::uint32_t>(id), lx.line()};
   }
   const std::int64_t expected = std::int64_t{base.first} + i;
@@ -101,16 +100,15 @@ VertexHeader read_vertex_header(PolyLexer& lx) {
 
 // The start of item line i of a section of n: the line exists and carries
 // the id the numbering expects.
-void start_item(PolyLexer& lx, IdBase& base, std::uint32_t i, std::uint32_t n, const char* what,
-                const char* id_label) {
+void start_item(PolyLexer& lx, IdBase& base, std::uint32_t i, std::uint32_t n, const char* what, const char* id_label) {
   lx.require_item(what, i + (base.known ? base.first : 1), n);
   expect_id(lx, base, lx.id(id_label), i, n, what);
 }
 
 // A section header that holds only its count (holes, regions), checked to
 // fit in what is left of the file, `fields` fields per item.
-std::uint32_t read_section_count(PolyLexer& lx, const char* count_label, const char* header_label,
-                                 std::uint64_t fields, const char* what) {
+std::uint32_t read_section_count(PolyLexer& lx, const char* count_label, const char* header_label, std::uint64_t fields,
+                                 const char* what) {
   const std::uint32_t n = lx.count(count_label);
   const std::size_t column = lx.token_column();
   lx.end_of_line(header_label);
@@ -242,7 +240,7 @@ void expect_end(PolyLexer& lx, const char* after) {
   if (lx.next_line()) lx.fail_column(1, std::string("unexpected text after ") + after);
 }
 
-} // namespace
+}  // namespace
 
 PolyFile parse_node(std::string_view text, const std::string& path) {
   PolyLexer lx(text, path);
@@ -278,8 +276,7 @@ PolyFile read_poly_file(const std::string& path) {
   std::string text;
   if (!read_whole_file(path, text)) throw InputFileError(path + ": cannot read file");
   const std::string ext = ".node";
-  const bool is_node =
-      path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+  const bool is_node = path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
   return is_node ? parse_node(text, path) : parse_poly(text, path);
 }
 
@@ -289,4 +286,4 @@ Pslg read_domain(const std::string& path, const ValidateOptions& options) {
   return std::move(file.pslg);
 }
 
-} // namespace madd
+}  // namespace madd

@@ -79,8 +79,8 @@ public:
   std::uint32_t count(const char* what) {
     std::string_view tok = token(what);
     std::uint64_t v = 0;
-    if (!parse_integer(tok, v)) fail(token_begin_, std::string("expected a non-negative integer ") + what +
-                                                       ", got '" + printable(tok) + "'");
+    if (!parse_integer(tok, v))
+      fail(token_begin_, std::string("expected a non-negative integer ") + what + ", got '" + printable(tok) + "'");
     if (v >= std::numeric_limits<std::uint32_t>::max()) fail(token_begin_, std::string(what) + " is too large");
     return static_cast<std::uint32_t>(v);
   }
@@ -180,12 +180,12 @@ private:
 
   std::string_view text_;
   std::string path_;
-  std::size_t next_ = 0;       // start of the line after the current one
-  std::size_t line_begin_ = 0; // start of the current line
-  std::size_t line_end_ = 0;   // end of the current line's fields (before '#')
+  std::size_t next_ = 0;        // start of the line after the current one
+  std::size_t line_begin_ = 0;  // start of the current line
+  std::size_t line_end_ = 0;    // end of the current line's fields (before '#')
   std::size_t cursor_ = 0;
   std::size_t token_begin_ = 0;
   std::uint32_t line_ = 0;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -84,7 +84,7 @@ void write_holes_and_regions(TextOut& out, const Pslg& p) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string format_poly(const Pslg& pslg, std::string_view header_comment) {
   TextOut out(64 + header_comment.size() + pslg.points.size() * 48 + pslg.segments.size() * 24);
@@ -95,4 +95,4 @@ std::string format_poly(const Pslg& pslg, std::string_view header_comment) {
   return out.take();
 }
 
-} // namespace madd
+}  // namespace madd

@@ -227,7 +227,7 @@ private:
   std::size_t crossings_ = 0, overlaps_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 ResolvedPslg resolve_intersections(const Pslg& pslg) {
   Resolver resolver(pslg);
@@ -238,4 +238,4 @@ ResolvedPslg resolve_intersections(const Pslg& pslg) {
                               std::to_string(max_passes) + " passes");
 }
 
-} // namespace madd
+}  // namespace madd

@@ -16,7 +16,7 @@ namespace {
 // How many sides of a piece of segment have the kept region.
 enum Side : unsigned { none = 0, one = 1, both = 2 };
 
-} // namespace
+}  // namespace
 
 PslgSummary summarize_pslg(const Pslg& input) {
   PslgSummary out;
@@ -59,7 +59,8 @@ PslgSummary summarize_pslg(const Pslg& input) {
 
   std::vector<unsigned> sides(input.segments.size(), 0);  // per input segment: bit 1 << (kept sides of a piece)
   for (std::uint32_t k = 0; k < p.segments.size(); ++k) {
-    const unsigned n = (is_kept(fm.face_of_half_edge(2 * k)) ? 1U : 0U) + (is_kept(fm.face_of_half_edge(2 * k + 1)) ? 1U : 0U);
+    const unsigned n =
+        (is_kept(fm.face_of_half_edge(2 * k)) ? 1U : 0U) + (is_kept(fm.face_of_half_edge(2 * k + 1)) ? 1U : 0U);
     sides[resolved.source_segment[k]] |= 1U << n;
   }
   for (const unsigned bits : sides) {
@@ -70,4 +71,4 @@ PslgSummary summarize_pslg(const Pslg& input) {
   return out;
 }
 
-} // namespace madd
+}  // namespace madd

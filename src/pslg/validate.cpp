@@ -40,9 +40,7 @@ public:
            std::to_string(id(p_.segments[s].b)) + ")";
   }
   std::string hole(std::uint32_t h) const { return "hole " + std::to_string(id(h)) + " " + at(p_.holes[h]); }
-  std::string region(std::uint32_t r) const {
-    return "region " + std::to_string(id(r)) + " " + at(p_.regions[r].at);
-  }
+  std::string region(std::uint32_t r) const { return "region " + std::to_string(id(r)) + " " + at(p_.regions[r].at); }
 
   enum class Item { point, segment, hole, region };
   [[noreturn]] void fail(InputProblem problem, const std::string& message, std::vector<std::int64_t> ids,
@@ -89,14 +87,15 @@ void check_values(const Pslg& p, const Reporter& r, const ValidateOptions& optio
       r.fail(InputProblem::other, r.region(k) + range_note, {r.id(k)}, {p.regions[k].at}, Item::region, k);
   for (std::uint32_t s = 0; s < p.segments.size(); ++s)
     if (p.segments[s].a >= p.points.size() || p.segments[s].b >= p.points.size())
-      r.fail(InputProblem::other, "segment " + std::to_string(r.id(s)) + " refers to a missing vertex", {r.id(s)},
-             {}, Item::segment, s);
+      r.fail(InputProblem::other, "segment " + std::to_string(r.id(s)) + " refers to a missing vertex", {r.id(s)}, {},
+             Item::segment, s);
   if (!options.check_weights || p.attributes_per_point == 0) return;
   for (std::uint32_t v = 0; v < p.points.size(); ++v) {
     const double w = p.attribute(v, 0);
     if (!std::isfinite(w) || w < 0.0)
-      r.fail(InputProblem::bad_weight, r.vertex(v) + " has boundary weight " + number(w) +
-                                           "; weights must be finite and >= 0 when grading by weight",
+      r.fail(InputProblem::bad_weight,
+             r.vertex(v) + " has boundary weight " + number(w) +
+                 "; weights must be finite and >= 0 when grading by weight",
              {r.id(v)}, {p.points[v]}, Item::point, v);
   }
 }
@@ -109,7 +108,7 @@ std::uint64_t mix(std::uint64_t x) noexcept {
   return x ^ (x >> 31);
 }
 std::uint64_t bits(double v) noexcept {
-  v += 0.0; // -0.0 becomes +0.0: they are the same point
+  v += 0.0;  // -0.0 becomes +0.0: they are the same point
   std::uint64_t b = 0;
   std::memcpy(&b, &v, sizeof b);
   return b;
@@ -168,8 +167,8 @@ void check_intersections(const Pslg& p, const detail::SegmentGrid& grid, const R
 void check_holes_on_segments(const Pslg& p, const detail::SegmentGrid& grid, const Reporter& r) {
   for (std::uint32_t h = 0; h < p.holes.size(); ++h) {
     if (const auto s = detail::segment_under(p, grid, p.holes[h]))
-      r.fail(InputProblem::hole_on_segment, r.hole(h) + " lies on " + r.segment(*s), {r.id(h), r.id(*s)},
-             {p.holes[h]}, Item::hole, h);
+      r.fail(InputProblem::hole_on_segment, r.hole(h) + " lies on " + r.segment(*s), {r.id(h), r.id(*s)}, {p.holes[h]},
+             Item::hole, h);
   }
 }
 
@@ -177,8 +176,8 @@ void check_holes_on_segments(const Pslg& p, const detail::SegmentGrid& grid, con
 // of odd degree on it), a stray segment outside, or a ring whose both sides
 // the hole points remove.
 [[noreturn]] void fail_outside_piece(const Pslg& p, const detail::DomainPieces& dp, std::uint32_t k,
-                                     const std::vector<std::uint32_t>& degree, const std::vector<std::uint32_t>& hole_of_face,
-                                     const Reporter& r) {
+                                     const std::vector<std::uint32_t>& degree,
+                                     const std::vector<std::uint32_t>& hole_of_face, const Reporter& r) {
   const std::uint32_t s = dp.resolved.source_segment[k];
   // A loose end first (degree 1), then a fork (odd degree).
   std::uint32_t ends[2] = {p.segments[s].a, p.segments[s].b};
@@ -248,8 +247,8 @@ void check_regions(const Pslg& p, const detail::DomainPieces& dp, const std::vec
   for (std::uint32_t h = 0; h < dp.real_holes; ++h) {
     const std::uint32_t f = fm.hole_face[h];
     if (f == no_index)
-      r.fail(InputProblem::hole_outside_domain, r.hole(h) + " lies outside every boundary", {r.id(h)},
-             {p.holes[h]}, Item::hole, h);
+      r.fail(InputProblem::hole_outside_domain, r.hole(h) + " lies outside every boundary", {r.id(h)}, {p.holes[h]},
+             Item::hole, h);
     if (hole_of_face[f] == no_index) hole_of_face[f] = h;
   }
   const auto pieces = static_cast<std::uint32_t>(dp.resolved.pslg.segments.size());
@@ -294,7 +293,7 @@ void check_pslg_intersections(const Pslg& p, const detail::SegmentGrid& grid, co
          {r.id(conflict->later), r.id(conflict->earlier)}, {conflict->contact.at}, Item::segment, conflict->later);
 }
 
-} // namespace
+}  // namespace
 
 void validate_pslg(const Pslg& pslg, const SourceMap& source, const ValidatePslgOptions& options) {
   const Reporter r(pslg, source);
@@ -303,9 +302,8 @@ void validate_pslg(const Pslg& pslg, const SourceMap& source, const ValidatePslg
   check_zero_length(pslg, r);
   if (pslg.segments.empty()) {
     if (!pslg.holes.empty())
-      r.fail(InputProblem::empty_domain,
-             r.hole(0) + " would remove every triangle: there are no segments to stop it", {r.id(0)},
-             {pslg.holes[0]}, Item::hole, 0);
+      r.fail(InputProblem::empty_domain, r.hole(0) + " would remove every triangle: there are no segments to stop it",
+             {r.id(0)}, {pslg.holes[0]}, Item::hole, 0);
     return;
   }
   const detail::SegmentGrid grid(pslg.points, pslg.segments);
@@ -345,4 +343,4 @@ double domain_area(const Pslg& pslg) {
   return area;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -77,7 +77,8 @@ struct DomainPieces {
   bool is_kept(std::uint32_t face) const { return face != no_index && kept[face]; }
   // Bit 0: the domain lies left of piece k run a -> b; bit 1: left of b -> a.
   unsigned domain_sides(std::uint32_t k) const {
-    return (is_kept(faces.face_of_half_edge(2 * k)) ? 1U : 0U) | (is_kept(faces.face_of_half_edge(2 * k + 1)) ? 2U : 0U);
+    return (is_kept(faces.face_of_half_edge(2 * k)) ? 1U : 0U) |
+           (is_kept(faces.face_of_half_edge(2 * k + 1)) ? 2U : 0U);
   }
   // The face isolated vertex isolated[i] lies in (no_index: outside every ring).
   std::uint32_t isolated_face(std::size_t i) const { return faces.hole_face[real_holes + i]; }
@@ -90,4 +91,4 @@ DomainPieces trace_domain_pieces(const Pslg& domain, bool split_at_vertices);
 // trace_domain_pieces must be told. Precondition as find_segment_conflict.
 bool has_vertex_inside_segment(const Pslg& pslg);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -29,7 +29,7 @@ std::uint32_t dest(const Pslg& p, std::uint32_t h) { return origin(p, h ^ 1U); }
 struct Star {
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> out;
-  std::vector<std::uint32_t> pos; // position of each half-edge within its vertex's range
+  std::vector<std::uint32_t> pos;  // position of each half-edge within its vertex's range
 };
 
 // Angle in [0, pi) is the upper half; ties within a half go to orient2d.
@@ -64,7 +64,7 @@ Star build_star(const Pslg& p) {
 
 // The next half-edge along the face on the left: at the head of h, the edge
 // just clockwise of the reverse of h.
-std::uint32_t next_half_edge(const Pslg& p, const Star& st, std::uint32_t h) {
+std::uint32_t next_around_face(const Pslg& p, const Star& st, std::uint32_t h) {
   const std::uint32_t v = dest(p, h);
   const std::uint32_t deg = st.start[v + 1] - st.start[v];
   return st.out[st.start[v] + (st.pos[h ^ 1U] + deg - 1) % deg];
@@ -82,7 +82,7 @@ void walk_rings(const Pslg& p, const Star& st, FaceMap& fm) {
     do {
       fm.ring_of[h] = r;
       ring.push_back(origin(p, h));
-      h = next_half_edge(p, st, h);
+      h = next_around_face(p, st, h);
     } while (h != h0);
     fm.ring_area.push_back(ring_signed_area(RingView(p.points, ring)));
   }
@@ -153,7 +153,7 @@ private:
     Point lo = p_.points[p_.segments[s].a], hi = p_.points[p_.segments[s].b];
     if ((lo.y > q.y) == (hi.y > q.y)) return;
     if (lo.y > hi.y) std::swap(lo, hi);
-    const double side = orient2d(lo, hi, q); // < 0: q right of the upward segment
+    const double side = orient2d(lo, hi, q);  // < 0: q right of the upward segment
     if (leftward ? !(side < 0.0) : !(side > 0.0)) return;
     flip(fm_.ring_of[2 * s]);
     flip(fm_.ring_of[2 * s + 1]);
@@ -173,7 +173,7 @@ private:
   std::uint32_t query_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 FaceMap build_face_map(const Pslg& p, const SegmentGrid& grid) {
   FaceMap fm;
@@ -204,4 +204,4 @@ std::vector<bool> kept_faces(const FaceMap& fm) {
   return kept;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

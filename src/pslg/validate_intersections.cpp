@@ -54,7 +54,7 @@ ContactResult disjoint_endpoints(Point a, Point b, Point c, Point d) {
   return {Contact::cross, lerp(a, b, t)};
 }
 
-} // namespace
+}  // namespace
 
 ContactResult classify_contact(const std::vector<Point>& pts, const Segment& s, const Segment& t) {
   if ((s.a == t.a && s.b == t.b) || (s.a == t.b && s.b == t.a)) return {Contact::overlap, pts[s.a]};
@@ -99,8 +99,12 @@ void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& fo
       for (std::size_t w = u + 1; w < cell.size(); ++w) found.offer(p, cell[u], cell[w]);
     return;
   }
-  const auto min_x = [&](std::uint32_t s) { return std::min(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
-  const auto max_x = [&](std::uint32_t s) { return std::max(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x); };
+  const auto min_x = [&](std::uint32_t s) {
+    return std::min(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x);
+  };
+  const auto max_x = [&](std::uint32_t s) {
+    return std::max(p.points[p.segments[s].a].x, p.points[p.segments[s].b].x);
+  };
   std::sort(cell.begin(), cell.end(), [&](std::uint32_t s, std::uint32_t t) { return min_x(s) < min_x(t); });
   for (std::size_t u = 0; u < cell.size() && !found.done; ++u) {
     const double reach = max_x(cell[u]);
@@ -108,7 +112,7 @@ void test_cell(const Pslg& p, std::vector<std::uint32_t>& cell, BestConflict& fo
   }
 }
 
-} // namespace
+}  // namespace
 
 std::optional<SegmentConflict> find_segment_conflict(const Pslg& pslg, const SegmentGrid& grid, bool touches) {
   BestConflict found;
@@ -164,13 +168,17 @@ private:
   std::vector<SegmentConflict> found_;
 };
 
-} // namespace
+}  // namespace
 
 std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const SegmentGrid& grid, std::size_t limit) {
   ContactCollector collector(pslg, limit);
   std::vector<std::uint32_t> cell;
-  const auto min_x = [&](std::uint32_t s) { return std::min(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x); };
-  const auto max_x = [&](std::uint32_t s) { return std::max(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x); };
+  const auto min_x = [&](std::uint32_t s) {
+    return std::min(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x);
+  };
+  const auto max_x = [&](std::uint32_t s) {
+    return std::max(pslg.points[pslg.segments[s].a].x, pslg.points[pslg.segments[s].b].x);
+  };
   for (std::uint32_t r = 0; r < grid.rows(); ++r) {
     const auto row = grid.row_range(r, 0, grid.cols() - 1);
     for (std::size_t k = 0; k < row.size();) {
@@ -191,10 +199,10 @@ std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const Segmen
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p) {
   if (!grid.contains(p)) return std::nullopt;
   for (const auto& entry : grid.cell_at(p)) {
-    const std::uint32_t s = entry.item; // ascending within a cell: the first hit is the smallest
+    const std::uint32_t s = entry.item;  // ascending within a cell: the first hit is the smallest
     if (on_segment(pslg.points[pslg.segments[s].a], pslg.points[pslg.segments[s].b], p)) return s;
   }
   return std::nullopt;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

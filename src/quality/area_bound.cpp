@@ -16,7 +16,7 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 bool finite_point(Point p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-} // namespace
+}  // namespace
 
 NearestSample::NearestSample(std::span<const ValuedPoint> samples) : samples_(samples) {
   double xmin = infinity, ymin = infinity, xmax = -infinity, ymax = -infinity;
@@ -29,7 +29,7 @@ NearestSample::NearestSample(std::span<const ValuedPoint> samples) : samples_(sa
     ymax = std::max(ymax, s.at.y);
     ++n;
   }
-  if (n == 0) return;  // no cells: nothing to find
+  if (n == 0) return;                                      // no cells: nothing to find
   const double width = xmax - xmin, height = ymax - ymin;  // may overflow to inf for extreme input
   const double count = static_cast<double>(n);
   // Square cells, about one sample each; never more than ~3n cells (the
@@ -80,11 +80,11 @@ double AreaBound::area_at(Point p) const {
   return bound;
 }
 
-} // namespace detail
+}  // namespace detail
 
 // The same code as the mesher's and verify_mesh's bound (a grid built for
 // one query: O(samples), like a scan). For many queries with the same
 // options the library builds a detail::AreaBound once.
 double area_bound_at(const MeshSizeOptions& size, Point p) { return detail::AreaBound(size).area_at(p); }
 
-} // namespace madd
+}  // namespace madd

@@ -46,4 +46,4 @@ private:
   NearestSample background_;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -8,4 +8,4 @@ namespace madd::detail {
 // NaN when fewer than two values.
 double decile(const std::vector<double>& sorted, int q);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -27,4 +27,4 @@ inline double smallest_angle_deg(Point a, Point b, Point c) noexcept {
   return degrees(angle_at(b, c, a));
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

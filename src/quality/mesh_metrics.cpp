@@ -23,9 +23,8 @@ namespace {
 template <class AnyMesh>
 MeshMetrics figures_of(const AnyMesh& mesh, const MeshSizeOptions& size) {
   MeshMetrics m;
-  m.subdomains = mesh.subdomain_first_triangle.empty()
-                     ? 0
-                     : static_cast<std::uint32_t>(mesh.subdomain_first_triangle.size() - 1);
+  m.subdomains =
+      mesh.subdomain_first_triangle.empty() ? 0 : static_cast<std::uint32_t>(mesh.subdomain_first_triangle.size() - 1);
   m.triangles = mesh.triangles.size();
   m.vertices = mesh.points.size();
   m.min_angle_bound_deg = mesh.min_triangle_angle_deg;
@@ -51,7 +50,7 @@ MeshMetrics figures_of(const AnyMesh& mesh, const MeshSizeOptions& size) {
   return m;
 }
 
-} // namespace
+}  // namespace
 
 MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size) { return figures_of(mesh, size); }
 MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size) { return figures_of(mesh, size); }
@@ -69,4 +68,4 @@ std::vector<RunFigure> run_figures(const MeshReport& report) {
           {"phase_seconds", report.phases}};
 }
 
-} // namespace madd
+}  // namespace madd

@@ -85,7 +85,7 @@ void fill_separators(const Decomposition& d, const std::vector<double>& areas, M
   m.max_separator_over_area_norm = max_ratio * std::sqrt(m.mean_area);
 }
 
-} // namespace
+}  // namespace
 
 namespace detail {
 
@@ -100,7 +100,7 @@ double decile(const std::vector<double>& sorted, int q) {
   return (sorted[j - 1] * static_cast<double>(10 - delta) + sorted[j] * static_cast<double>(delta)) / 10.0;
 }
 
-} // namespace detail
+}  // namespace detail
 
 namespace {
 // Sec. 5.2's stopping rule, checked from the result: area / required area per
@@ -118,7 +118,7 @@ void fill_required_area(const Decomposition& d, const std::vector<double>& areas
     if (ratio > d.subdomain_area_ratio) ++m.subdomains_over_area_bound;
   }
 }
-} // namespace
+}  // namespace
 
 Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
   Metrics m;
@@ -148,8 +148,9 @@ Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
     const auto [lo, hi] = std::minmax_element(areas.begin(), areas.end());
     m.max_area_over_mean = *hi / m.mean_area;
     m.min_area_over_mean = *lo / m.mean_area;
-    const auto [wlo, whi] = std::minmax_element(d.subdomains.begin(), d.subdomains.end(),
-                                                [](const Subdomain& a, const Subdomain& b) { return a.weight < b.weight; });
+    const auto [wlo, whi] =
+        std::minmax_element(d.subdomains.begin(), d.subdomains.end(),
+                            [](const Subdomain& a, const Subdomain& b) { return a.weight < b.weight; });
     m.max_weight_over_mean = whi->weight / mean_weight;
     m.min_weight_over_mean = wlo->weight / mean_weight;
   }
@@ -158,4 +159,4 @@ Metrics metrics(const Decomposition& d, std::vector<PhaseTime> times) {
   return m;
 }
 
-} // namespace madd
+}  // namespace madd

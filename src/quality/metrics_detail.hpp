@@ -21,7 +21,7 @@ inline double interior_angle_deg(Point prev, Point at, Point next) { return ccw_
 
 // Per vertex of a subdomain: the far ends of its interior pieces there.
 inline std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> interior_ends(const Decomposition& d,
-                                                                                  const Subdomain& sub) {
+                                                                                   const Subdomain& sub) {
   std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> ends;
   for (const std::uint32_t g : sub.interior_segments) {
     if (g >= d.segments.size()) continue;
@@ -73,4 +73,4 @@ void for_each_new_angle(const Decomposition& d, F&& f) {
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -105,20 +105,23 @@ std::vector<std::vector<Use>> check_rings(const Decomposition& d, ExactSum& cove
         const Segment& g = d.segments[sub.ring_segments[r][k]];
         const std::uint32_t p = ring[k], q = ring[(k + 1) % n];
         if (!((g.a == p && g.b == q) || (g.a == q && g.b == p))) {
-          log.add(sub_name(s) + " ring " + std::to_string(r) + " position " + std::to_string(k) +
-                  ": segment " + std::to_string(sub.ring_segments[r][k]) + " does not join its ring vertices");
+          log.add(sub_name(s) + " ring " + std::to_string(r) + " position " + std::to_string(k) + ": segment " +
+                  std::to_string(sub.ring_segments[r][k]) + " does not join its ring vertices");
           continue;
         }
         uses[sub.ring_segments[r][k]].push_back({s, g.a == p});
       }
       twice.add(detail::ring_twice_area_exact(RingView(d.points, ring)));
       const Orientation turn = detail::ring_orientation(RingView(d.points, ring));
-      if (r == 0 && turn != Orientation::counter_clockwise) log.add(sub_name(s) + " outer ring is not counter-clockwise");
-      if (r > 0 && turn != Orientation::clockwise) log.add(sub_name(s) + " hole ring " + std::to_string(r) + " is not clockwise");
+      if (r == 0 && turn != Orientation::counter_clockwise)
+        log.add(sub_name(s) + " outer ring is not counter-clockwise");
+      if (r > 0 && turn != Orientation::clockwise)
+        log.add(sub_name(s) + " hole ring " + std::to_string(r) + " is not clockwise");
       if (r > 0) {
         const Point probe = midpoint(d.points[ring[0]], d.points[ring[1]]);
         if (locate_in_ring(RingView(d.points, sub.rings[0]), probe) == RingLocation::outside)
-          log.add(sub_name(s) + " hole ring " + std::to_string(r) + " lies outside its outer ring (not one connected polygon)");
+          log.add(sub_name(s) + " hole ring " + std::to_string(r) +
+                  " lies outside its outer ring (not one connected polygon)");
         // A hole inside another hole would be a second, separate piece. Quadratic
         // in the hole count, so only checked where that stays cheap.
         for (std::size_t q = 1; q < sub.rings.size() && sub.rings.size() <= 1000; ++q)
@@ -234,8 +237,8 @@ void check_angles(const Decomposition& d, ProblemLog& log) {
   const double bound = d.separator_angle_deg - detail::angle_rounding_bound_deg;
   detail::for_each_new_angle(d, [&](std::uint32_t s, std::uint32_t r, std::uint32_t k, double angle) {
     if (angle < bound)
-      log.add(sub_name(s) + " has a new angle of " + detail::number_text(angle) + " deg < " + detail::number_text(d.separator_angle_deg) +
-              " at " + point_text(d.points[d.subdomains[s].rings[r][k]]));
+      log.add(sub_name(s) + " has a new angle of " + detail::number_text(angle) + " deg < " +
+              detail::number_text(d.separator_angle_deg) + " at " + point_text(d.points[d.subdomains[s].rings[r][k]]));
   });
 }
 
@@ -251,13 +254,14 @@ void check_cover(const ExactSum& covered, const ExactSum& domain, double sliver,
   ExactSum difference = covered;
   difference.subtract(domain);
   if (difference.magnitude_at_most(sliver)) return;
-  log.add("the subdomains' areas add up to " + detail::number_text(0.5 * covered.approximate()) + " but the domain's is " +
-          detail::number_text(0.5 * domain.approximate()) + ": a gap or an overlap (they differ by " +
-          detail::number_text(0.5 * difference.approximate()) + ", more than the " + detail::number_text(0.5 * sliver) +
+  log.add("the subdomains' areas add up to " + detail::number_text(0.5 * covered.approximate()) +
+          " but the domain's is " + detail::number_text(0.5 * domain.approximate()) +
+          ": a gap or an overlap (they differ by " + detail::number_text(0.5 * difference.approximate()) +
+          ", more than the " + detail::number_text(0.5 * sliver) +
           " the rounding of boundary vertices can account for)");
 }
 
-} // namespace
+}  // namespace
 
 Verification verify_decomposition(const Decomposition& d, const Pslg& domain, std::uint32_t expected_count) {
   Verification result;
@@ -281,4 +285,4 @@ Verification verify_decomposition(const Decomposition& d, const Pslg& domain, st
   return result;
 }
 
-} // namespace madd
+}  // namespace madd

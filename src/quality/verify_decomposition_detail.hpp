@@ -28,8 +28,7 @@ private:
 // Reports a pair of segments that cross, overlap, or touch anywhere other than
 // a shared endpoint (including a vertex in the interior of a segment: a
 // T-junction), if any. Exact (orient2d); a uniform grid keeps it near-linear.
-void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
-                             ProblemLog& log);
+void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments, ProblemLog& log);
 
 // The boundary pieces: each input segment's pieces lie on it (up to the
 // rounding bound of the interpolation that placed their vertices), form one
@@ -49,4 +48,4 @@ double off_line_bound(Point a, Point b, std::size_t pieces) noexcept;
 // "(x, y)" with full precision, for messages.
 std::string point_text(Point p);
 
-} // namespace madd::detail
+}  // namespace madd::detail

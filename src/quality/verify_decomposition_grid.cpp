@@ -7,8 +7,7 @@
 
 namespace madd::detail {
 
-void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments,
-                             ProblemLog& log) {
+void check_segments_disjoint(const std::vector<Point>& points, const std::vector<Segment>& segments, ProblemLog& log) {
   Pslg graph;
   graph.points = points;
   graph.segments = segments;
@@ -26,4 +25,4 @@ void check_segments_disjoint(const std::vector<Point>& points, const std::vector
           " (the first such pair; there may be more)");
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

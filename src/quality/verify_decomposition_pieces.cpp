@@ -15,7 +15,7 @@ namespace madd::detail {
 
 namespace {
 constexpr double eps = 0x1p-53;  // unit roundoff
-} // namespace
+}  // namespace
 
 // How far a vertex on a piece of input segment ab may lie from the line ab,
 // times |b - a|: a bound on |cross(b - a, p - a)| over the vertices of the k
@@ -134,7 +134,7 @@ void check_one_segment(const Decomposition& d, const Pslg& domain, std::uint32_t
             " to " + point_text(b));
 }
 
-} // namespace
+}  // namespace
 
 // Returns a bound on |twice the area the subdomains cover - twice the
 // domain's|, for check of full cover. The subdomains' rings consist of
@@ -155,7 +155,8 @@ double check_boundary_pieces(const Decomposition& d, const Pslg& domain, Problem
     const Segment& piece = d.segments[g];
     const std::uint32_t origin = d.segment_origin[g];
     if (origin == no_index) {
-      if (piece.marker != 0) log.add("separator segment " + std::to_string(g) + " has marker " + std::to_string(piece.marker));
+      if (piece.marker != 0)
+        log.add("separator segment " + std::to_string(g) + " has marker " + std::to_string(piece.marker));
       continue;
     }
     pieces[origin].push_back(g);
@@ -166,10 +167,11 @@ double check_boundary_pieces(const Decomposition& d, const Pslg& domain, Problem
   }
   double sliver = 0.0;
   std::size_t terms = 0;
-  for (std::uint32_t i = 0; i < domain.segments.size(); ++i) check_one_segment(d, domain, i, pieces[i], log, sliver, terms);
+  for (std::uint32_t i = 0; i < domain.segments.size(); ++i)
+    check_one_segment(d, domain, i, pieces[i], log, sliver, terms);
   // Each term: a sum, a product, a quotient and |w|^2's 4 roundings (a
   // denominator rounded up by at most (1 + eps) per rounding); then the sum.
   return rounded_up(sliver, terms + 7);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -22,4 +22,4 @@ void ProblemLog::finish() {
   if (count_ > cap_) out_.add("... and " + std::to_string(count_ - cap_) + " more problems");
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -39,7 +39,7 @@ std::string mesh_triangle_text(const Mesh& mesh, std::uint32_t t) {
   return text;
 }
 
-} // namespace detail
+}  // namespace detail
 
 namespace {
 
@@ -52,7 +52,8 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   const Decomposition& d = m.decomposition;
   const std::size_t np = m.points.size(), nt = m.triangles.size();
   if (m.point_markers.size() != np)
-    log.add("point_markers has " + std::to_string(m.point_markers.size()) + " entries for " + std::to_string(np) + " points");
+    log.add("point_markers has " + std::to_string(m.point_markers.size()) + " entries for " + std::to_string(np) +
+            " points");
   for (std::size_t p = 0; p < np; ++p)
     if (!std::isfinite(m.points[p].x) || !std::isfinite(m.points[p].y))
       log.add("point " + std::to_string(p) + " " + detail::point_text(m.points[p]) + " is not finite");
@@ -65,9 +66,11 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   for (std::uint32_t t = 0; t < nt; ++t)
     for (int i = 0; i < 3; ++i) {
       if (m.triangles[t][i] >= np)
-        log.add("triangle " + std::to_string(t) + " has vertex " + std::to_string(m.triangles[t][i]) + ", out of range");
+        log.add("triangle " + std::to_string(t) + " has vertex " + std::to_string(m.triangles[t][i]) +
+                ", out of range");
       if (t < m.neighbours.size() && m.neighbours[t][i] != no_index && m.neighbours[t][i] >= nt)
-        log.add("triangle " + std::to_string(t) + " has neighbour " + std::to_string(m.neighbours[t][i]) + ", out of range");
+        log.add("triangle " + std::to_string(t) + " has neighbour " + std::to_string(m.neighbours[t][i]) +
+                ", out of range");
     }
   // Subdomain ranges: N + 1 non-decreasing offsets from 0 to the triangle
   // count, N the decomposition's subdomain count, matching triangle_subdomain.
@@ -77,8 +80,8 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
     log.add("subdomain_first_triangle has " + std::to_string(first.size()) + " offsets for " + std::to_string(n) +
             " subdomains (expected N + 1)");
   } else if (first.front() != 0 || first.back() != nt) {
-    log.add("subdomain_first_triangle runs from " + std::to_string(first.front()) + " to " + std::to_string(first.back()) +
-            " instead of 0 to the triangle count " + std::to_string(nt));
+    log.add("subdomain_first_triangle runs from " + std::to_string(first.front()) + " to " +
+            std::to_string(first.back()) + " instead of 0 to the triangle count " + std::to_string(nt));
   } else {
     for (std::uint32_t k = 0; k < n; ++k) {
       if (first[k] > first[k + 1]) {
@@ -94,12 +97,14 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   // The decomposition and the input: their points are the mesh's first ones.
   if (d.points.size() > np || !std::equal(d.points.begin(), d.points.end(), m.points.begin()))
     log.add("the decomposition's points are not the mesh's first points, with the same indices");
-  if (domain.points.size() > d.points.size() || !std::equal(domain.points.begin(), domain.points.end(), d.points.begin()))
+  if (domain.points.size() > d.points.size() ||
+      !std::equal(domain.points.begin(), domain.points.end(), d.points.begin()))
     log.add("the input points are not the decomposition's first points, with the same indices");
   for (std::size_t s = 0; s < domain.segments.size(); ++s)
     if (domain.segments[s].a >= domain.points.size() || domain.segments[s].b >= domain.points.size())
       log.add("input segment " + std::to_string(s) + " has an endpoint out of range");
-  if (d.segment_origin.size() != d.segments.size()) log.add("the decomposition's segment_origin and segments differ in size");
+  if (d.segment_origin.size() != d.segments.size())
+    log.add("the decomposition's segment_origin and segments differ in size");
   for (std::size_t j = 0; j < d.segments.size(); ++j) {
     const Segment& g = d.segments[j];
     if (g.a >= d.points.size() || g.b >= d.points.size() || g.a == g.b)
@@ -119,7 +124,8 @@ bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   for (std::size_t s = 0; s < m.segments.size(); ++s) {
     const MeshSegment& g = m.segments[s];
     if (g.a >= np || g.b >= np || g.a == g.b)
-      log.add("mesh segment " + std::to_string(s) + " has bad endpoints " + std::to_string(g.a) + "-" + std::to_string(g.b));
+      log.add("mesh segment " + std::to_string(s) + " has bad endpoints " + std::to_string(g.a) + "-" +
+              std::to_string(g.b));
     if (g.piece >= d.segments.size())
       log.add("mesh segment " + std::to_string(s) + " lies on decomposition segment " + std::to_string(g.piece) +
               ", which does not exist");
@@ -133,8 +139,8 @@ bool attributes_sized(const Mesh& m, ProblemLog& log) {
   const std::size_t nt = m.triangles.size(), na = m.triangle_attribute.size();
   const bool regions = !m.decomposition.regions.empty();
   if (regions ? na == nt : na == 0) return true;
-  log.add("triangle_attribute has " + std::to_string(na) + " entries for " + std::to_string(nt) + " triangles (expected " +
-          (regions ? "one each" : "none: the input has no regions") + ")");
+  log.add("triangle_attribute has " + std::to_string(na) + " entries for " + std::to_string(nt) +
+          " triangles (expected " + (regions ? "one each" : "none: the input has no regions") + ")");
   return false;
 }
 
@@ -147,7 +153,8 @@ std::vector<std::uint8_t> check_orientation(const Mesh& m, ProblemLog& log) {
     const double o = orient2d(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
     ccw[t] = o > 0.0 ? 1 : 0;
     if (ccw[t] == 0)
-      log.add(detail::mesh_triangle_text(m, t) + (o < 0.0 ? " is clockwise" : " is degenerate (collinear or repeated vertices)"));
+      log.add(detail::mesh_triangle_text(m, t) +
+              (o < 0.0 ? " is clockwise" : " is degenerate (collinear or repeated vertices)"));
   }
   return ccw;
 }
@@ -167,13 +174,14 @@ void check_cover(const detail::ExactSum& triangles, const Pslg& domain, double s
   detail::ExactSum difference = triangles;
   difference.subtract(whole);
   if (difference.magnitude_at_most(sliver)) return;
-  log.add("the triangles' areas add up to " + detail::number_text(0.5 * triangles.approximate()) + " but the domain's is " +
-          detail::number_text(0.5 * whole.approximate()) + ": a gap or an overlap (they differ by " +
-          detail::number_text(0.5 * difference.approximate()) + ", more than the " + detail::number_text(0.5 * sliver) +
+  log.add("the triangles' areas add up to " + detail::number_text(0.5 * triangles.approximate()) +
+          " but the domain's is " + detail::number_text(0.5 * whole.approximate()) +
+          ": a gap or an overlap (they differ by " + detail::number_text(0.5 * difference.approximate()) +
+          ", more than the " + detail::number_text(0.5 * sliver) +
           " the rounding of boundary vertices can account for)");
 }
 
-} // namespace
+}  // namespace
 
 Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size) {
   Verification result;
@@ -201,4 +209,4 @@ Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOpt
   return result;
 }
 
-} // namespace madd
+}  // namespace madd

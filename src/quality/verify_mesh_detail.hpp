@@ -61,4 +61,4 @@ void check_mesh_size(const Mesh& mesh, const MeshSizeOptions& size, const std::v
 // The triangles below the angle bound are exactly as many as the shortfall counts.
 void check_mesh_angles(const Mesh& mesh, ProblemLog& log);
 
-} // namespace madd::detail
+}  // namespace madd::detail

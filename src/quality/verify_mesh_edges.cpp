@@ -76,14 +76,16 @@ public:
     const auto& T = m_.triangles;
     const std::size_t np = m_.points.size();
     std::vector<std::uint32_t> half_start, halves, seg_start, segs;
-    bucket(np, static_cast<std::uint32_t>(3 * T.size()),
-           [&](std::uint32_t code) {
-             const std::uint32_t a = from(code), b = to(code);
-             return a == b ? no_index : std::min(a, b);  // a repeated vertex: reported by the orientation check
-           },
-           half_start, halves);
-    bucket(np, static_cast<std::uint32_t>(m_.segments.size()),
-           [&](std::uint32_t s) { return std::min(m_.segments[s].a, m_.segments[s].b); }, seg_start, segs);
+    bucket(
+        np, static_cast<std::uint32_t>(3 * T.size()),
+        [&](std::uint32_t code) {
+          const std::uint32_t a = from(code), b = to(code);
+          return a == b ? no_index : std::min(a, b);  // a repeated vertex: reported by the orientation check
+        },
+        half_start, halves);
+    bucket(
+        np, static_cast<std::uint32_t>(m_.segments.size()),
+        [&](std::uint32_t s) { return std::min(m_.segments[s].a, m_.segments[s].b); }, seg_start, segs);
     std::vector<Half> local;
     std::vector<SegEnd> local_segs;
     for (std::uint32_t v = 0; v < np; ++v) {
@@ -101,12 +103,13 @@ public:
       std::sort(local_segs.begin(), local_segs.end());
       std::size_t i = 0, j = 0;
       while (i < local.size() || j < local_segs.size()) {
-        const std::uint32_t w = std::min(i < local.size() ? local[i].hi : no_index,
-                                         j < local_segs.size() ? local_segs[j].hi : no_index);
+        const std::uint32_t w =
+            std::min(i < local.size() ? local[i].hi : no_index, j < local_segs.size() ? local_segs[j].hi : no_index);
         const std::size_t i0 = i, j0 = j;
         while (i < local.size() && local[i].hi == w) ++i;
         while (j < local_segs.size() && local_segs[j].hi == w) ++j;
-        edge(v, w, std::span<const Half>(local.data() + i0, i - i0), std::span<const SegEnd>(local_segs.data() + j0, j - j0));
+        edge(v, w, std::span<const Half>(local.data() + i0, i - i0),
+             std::span<const SegEnd>(local_segs.data() + j0, j - j0));
       }
     }
     return std::move(out_);
@@ -131,9 +134,9 @@ private:
     return piece < owner_.size() ? owner_[piece] : no_index;
   }
   std::string seg_text(std::uint32_t s) const {
-    return (m_.segments[s].marker == 0            ? "separator segment "
+    return (m_.segments[s].marker == 0      ? "separator segment "
             : interior_owner(s) != no_index ? "interior segment "
-                                                   : "boundary segment ") +
+                                            : "boundary segment ") +
            std::to_string(s);
   }
 
@@ -185,13 +188,15 @@ private:
     // One triangle each way.
     if (neighbour(f) != tri(b) || neighbour(b) != tri(f)) {
       log_.add(tri_text(f) + " and " + tri_text(b) + " share " + edge_text(v, w) + " but name " +
-               std::to_string(neighbour(f)) + " and " + std::to_string(neighbour(b)) + " as their neighbours across it");
+               std::to_string(neighbour(f)) + " and " + std::to_string(neighbour(b)) +
+               " as their neighbours across it");
     }
     const std::uint32_t kf = subdomain(f), kb = subdomain(b);
     if (kf != kb) {
       if (!separator)
         log_.add(edge_text(v, w) + " between subdomains " + std::to_string(kf) + " and " + std::to_string(kb) + " (" +
-                 tri_text(f) + ", " + tri_text(b) + ") is " + (has_seg ? "a boundary segment" : "no separator segment"));
+                 tri_text(f) + ", " + tri_text(b) + ") is " +
+                 (has_seg ? "a boundary segment" : "no separator segment"));
       return;
     }
     if (has_seg) {
@@ -199,8 +204,9 @@ private:
       if (!separator && interior_owner(s) == kf) return;
       log_.add(seg_text(s) + " (" + edge_text(v, w) + ") lies inside subdomain " + std::to_string(kf) + ", between " +
                tri_text(f) + " and " + tri_text(b) +
-               (interior_owner(s) != no_index ? " (its piece is interior to subdomain " + std::to_string(interior_owner(s)) + ")"
-                                              : ""));
+               (interior_owner(s) != no_index
+                    ? " (its piece is interior to subdomain " + std::to_string(interior_owner(s)) + ")"
+                    : ""));
       return;
     }
     if (ccw_[tri(f)] == 0 || ccw_[tri(b)] == 0) return;  // already reported; the test needs CCW
@@ -219,10 +225,10 @@ private:
   MeshEdges out_;
 };
 
-} // namespace
+}  // namespace
 
 MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log) {
   return EdgePass(mesh, ccw, log).run();
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

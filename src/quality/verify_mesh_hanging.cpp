@@ -22,7 +22,7 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
   return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
 }
 
-} // namespace
+}  // namespace
 
 void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary, ProblemLog& log) {
   if (boundary.empty()) return;
@@ -37,11 +37,11 @@ void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary,
       const Segment& s = boundary[e.item];
       if (s.a == v || s.b == v) continue;
       if (orient2d(P[s.a], P[s.b], P[v]) == 0.0 && strictly_between(P[s.a], P[s.b], P[v]))
-        log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " + std::to_string(s.a) + "-" +
-                std::to_string(s.b) + " " + point_text(P[s.a]) + "-" + point_text(P[s.b]) +
+        log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " + std::to_string(s.a) +
+                "-" + std::to_string(s.b) + " " + point_text(P[s.a]) + "-" + point_text(P[s.b]) +
                 ", which only one triangle has (a hanging vertex)");
     }
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -76,12 +76,13 @@ void check_mesh_angles(const Mesh& m, ProblemLog& log) {
   }
   if (count == claimed) return;
   std::string text = std::to_string(count) + " triangles have a smallest angle below the bound " +
-                     number_text(m.min_triangle_angle_deg) + " deg, but the shortfall counts " + std::to_string(claimed) + " (" +
-                     std::to_string(m.shortfall.input_angle) + " input angle, " + std::to_string(m.shortfall.separator) +
-                     " separator, " + std::to_string(m.shortfall.precision) + " precision, " +
-                     std::to_string(m.shortfall.limit) + " limit)";
-  if (worst_t != no_index) text += "; the smallest angle is " + number_text(worst) + " deg, of " + mesh_triangle_text(m, worst_t);
+                     number_text(m.min_triangle_angle_deg) + " deg, but the shortfall counts " +
+                     std::to_string(claimed) + " (" + std::to_string(m.shortfall.input_angle) + " input angle, " +
+                     std::to_string(m.shortfall.separator) + " separator, " + std::to_string(m.shortfall.precision) +
+                     " precision, " + std::to_string(m.shortfall.limit) + " limit)";
+  if (worst_t != no_index)
+    text += "; the smallest angle is " + number_text(worst) + " deg, of " + mesh_triangle_text(m, worst_t);
   log.add(text);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

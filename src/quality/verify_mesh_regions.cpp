@@ -17,9 +17,7 @@ namespace madd::detail {
 
 namespace {
 
-std::uint64_t key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
+std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
 // The lowest triangle whose closure holds p (the triangles are known to be
 // counter-clockwise by now), or no_index.
@@ -34,7 +32,7 @@ std::uint32_t triangle_at(const Mesh& m, Point p) {
   return no_index;
 }
 
-} // namespace
+}  // namespace
 
 void check_interior_points(const Mesh& m, ProblemLog& log) {
   const Decomposition& d = m.decomposition;
@@ -103,4 +101,4 @@ void check_region_attributes(const Mesh& m, const std::vector<std::uint32_t>& la
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

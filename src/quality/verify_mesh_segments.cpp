@@ -55,8 +55,8 @@ bool walk_chain(const Mesh& m, std::span<const std::uint32_t> ids, std::uint32_t
         ++choices;
       }
     if (choices != 1) {
-      log.add(name + "'s mesh segments " + (choices == 0 ? "stop" : "branch") + " at vertex " + std::to_string(cur) + " " +
-              point_text(m.points[cur]) + " instead of forming one chain to vertex " + std::to_string(end) + " " +
+      log.add(name + "'s mesh segments " + (choices == 0 ? "stop" : "branch") + " at vertex " + std::to_string(cur) +
+              " " + point_text(m.points[cur]) + " instead of forming one chain to vertex " + std::to_string(end) + " " +
               point_text(m.points[end]));
       return false;
     }
@@ -82,7 +82,8 @@ bool walk_chain(const Mesh& m, std::span<const std::uint32_t> ids, std::uint32_t
 }
 
 // Mesh segment indices grouped by key (no_index: left out), stable.
-std::vector<std::uint32_t> grouped(const std::vector<std::uint32_t>& key, std::vector<std::uint32_t>& first, std::size_t groups) {
+std::vector<std::uint32_t> grouped(const std::vector<std::uint32_t>& key, std::vector<std::uint32_t>& first,
+                                   std::size_t groups) {
   first.assign(groups + 1, 0);
   for (const std::uint32_t k : key)
     if (k != no_index) ++first[k + 1];
@@ -103,7 +104,9 @@ void check_markers(const Mesh& m, ProblemLog& log) {
     if (g.marker != want || (!separator && want == 0))
       log.add("mesh segment " + std::to_string(s) + " on " + (separator ? "separator " : "boundary piece ") +
               std::to_string(g.piece) + " has marker " + std::to_string(g.marker) + ", expected " +
-              (separator ? "0" : want == 0 ? "nonzero" : std::to_string(want)));
+              (separator   ? "0"
+               : want == 0 ? "nonzero"
+                           : std::to_string(want)));
   }
   // Triangle's rule: a point's marker is that of the boundary segment it
   // lies on, the larger at a corner of two; 0 inside and on separators only.
@@ -144,25 +147,26 @@ void check_input_segment(const Mesh& m, const Pslg& domain, std::uint32_t input,
   const double allowed = off_line_bound(a, b, ids.size());
   const double length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
   double off_cur = 0.0;  // |cross| at the current vertex; 0 at a
-  walk_chain(m, ids, whole.a, whole.b, a, b, name, ends, log, [&](std::uint32_t, std::uint32_t next, const ExactSum& along) {
-    double off_next = 0.0;
-    if (next != whole.b) {
-      const ExactSum cross = triangle_twice_area_exact(a, b, m.points[next]);
-      off_next = cross.magnitude_bound();
-      if (!cross.magnitude_at_most(allowed))
-        log.add("boundary vertex " + std::to_string(next) + " " + point_text(m.points[next]) + " leaves " + name +
-                " (off by " + number_text(std::abs(cross.approximate()) / std::sqrt(length2)) + ", more than the " +
-                number_text(allowed / std::sqrt(length2)) + " its interpolation can round to)");
-    }
-    if (off_cur + off_next > 0.0) {
-      sliver.sum += (off_cur + off_next) * along.magnitude_bound() / length2;
-      ++sliver.terms;
-    }
-    off_cur = off_next;
-  });
+  walk_chain(
+      m, ids, whole.a, whole.b, a, b, name, ends, log, [&](std::uint32_t, std::uint32_t next, const ExactSum& along) {
+        double off_next = 0.0;
+        if (next != whole.b) {
+          const ExactSum cross = triangle_twice_area_exact(a, b, m.points[next]);
+          off_next = cross.magnitude_bound();
+          if (!cross.magnitude_at_most(allowed))
+            log.add("boundary vertex " + std::to_string(next) + " " + point_text(m.points[next]) + " leaves " + name +
+                    " (off by " + number_text(std::abs(cross.approximate()) / std::sqrt(length2)) + ", more than the " +
+                    number_text(allowed / std::sqrt(length2)) + " its interpolation can round to)");
+        }
+        if (off_cur + off_next > 0.0) {
+          sliver.sum += (off_cur + off_next) * along.magnitude_bound() / length2;
+          ++sliver.terms;
+        }
+        off_cur = off_next;
+      });
 }
 
-} // namespace
+}  // namespace
 
 double check_mesh_segments(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   const Decomposition& d = m.decomposition;
@@ -187,10 +191,11 @@ double check_mesh_segments(const Mesh& m, const Pslg& domain, ProblemLog& log) {
   const std::vector<std::uint32_t> by_input = grouped(key, first, domain.segments.size());
   Sliver sliver;
   for (std::uint32_t i = 0; i < domain.segments.size(); ++i)
-    check_input_segment(m, domain, i, std::span<const std::uint32_t>(by_input).subspan(first[i], first[i + 1] - first[i]),
-                        ends, sliver, log);
+    check_input_segment(m, domain, i,
+                        std::span<const std::uint32_t>(by_input).subspan(first[i], first[i + 1] - first[i]), ends,
+                        sliver, log);
   // Each term: a sum, a product, a quotient and |w|^2's 4 roundings; then the sum.
   return rounded_up(sliver.sum, sliver.terms + 7);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

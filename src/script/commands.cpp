@@ -40,8 +40,7 @@ auto read_input(const ScriptCommand& c, std::size_t column, F&& f) -> decltype(f
 // The decomposition every write command needs, checked once by the
 // library's own verifier: a wrong file is never written (docs/design.md, "Verifiers at every stage").
 const Decomposition& verified_decomposition(const ScriptCommand& c, ScriptContext& context) {
-  if (!context.decomposition || !context.domain)
-    c.fail(c.words[0].column, "nothing to write yet: run 'dec' first");
+  if (!context.decomposition || !context.domain) c.fail(c.words[0].column, "nothing to write yet: run 'dec' first");
   const Decomposition& d = *context.decomposition;
   if (context.verified) return d;
   const auto actual = static_cast<std::uint32_t>(d.subdomains.size());
@@ -68,11 +67,9 @@ Decomposition decompose_located(const ScriptCommand& c, std::size_t column, cons
   }
 }
 
-std::string count_text(std::size_t n, const char* what) {
-  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
-}
+std::string count_text(std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
 
-} // namespace
+}  // namespace
 
 void script_read(const ScriptCommand& c, ScriptContext& context) {
   c.expect_arguments(1, 1, "read FILE");
@@ -187,4 +184,4 @@ void script_write_subdomains(const ScriptCommand& c, ScriptContext& context) {
   say(context, "writeSubdomains " + file.text + ": " + count_text(d.subdomains.size(), "subdomain"));
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -30,17 +30,28 @@ namespace {
 
 double apply_unary(ExprOp op, double a) noexcept {
   switch (op) {
-  case ExprOp::neg: return -a;
-  case ExprOp::sqrt: return std::sqrt(a);
-  case ExprOp::exp: return std::exp(a);
-  case ExprOp::log: return std::log(a);
-  case ExprOp::sin: return std::sin(a);
-  case ExprOp::cos: return std::cos(a);
-  case ExprOp::tan: return std::tan(a);
-  case ExprOp::abs: return std::fabs(a);
-  case ExprOp::floor: return std::floor(a);
-  case ExprOp::ceil: return std::ceil(a);
-  default: return a;
+  case ExprOp::neg:
+    return -a;
+  case ExprOp::sqrt:
+    return std::sqrt(a);
+  case ExprOp::exp:
+    return std::exp(a);
+  case ExprOp::log:
+    return std::log(a);
+  case ExprOp::sin:
+    return std::sin(a);
+  case ExprOp::cos:
+    return std::cos(a);
+  case ExprOp::tan:
+    return std::tan(a);
+  case ExprOp::abs:
+    return std::fabs(a);
+  case ExprOp::floor:
+    return std::floor(a);
+  case ExprOp::ceil:
+    return std::ceil(a);
+  default:
+    return a;
   }
 }
 
@@ -48,28 +59,44 @@ double apply_unary(ExprOp op, double a) noexcept {
 // does not depend on the order of the arguments.
 double apply_binary(ExprOp op, double a, double b) noexcept {
   switch (op) {
-  case ExprOp::add: return a + b;
-  case ExprOp::sub: return a - b;
-  case ExprOp::mul: return a * b;
-  case ExprOp::div: return a / b;
-  case ExprOp::pow: return std::pow(a, b);
-  case ExprOp::min: return std::fmin(a, b);
-  case ExprOp::max: return std::fmax(a, b);
-  case ExprOp::hypot: return std::hypot(a, b);
-  default: return a;
+  case ExprOp::add:
+    return a + b;
+  case ExprOp::sub:
+    return a - b;
+  case ExprOp::mul:
+    return a * b;
+  case ExprOp::div:
+    return a / b;
+  case ExprOp::pow:
+    return std::pow(a, b);
+  case ExprOp::min:
+    return std::fmin(a, b);
+  case ExprOp::max:
+    return std::fmax(a, b);
+  case ExprOp::hypot:
+    return std::hypot(a, b);
+  default:
+    return a;
   }
 }
 
 bool is_binary(ExprOp op) noexcept {
   switch (op) {
-  case ExprOp::add: case ExprOp::sub: case ExprOp::mul: case ExprOp::div: case ExprOp::pow:
-  case ExprOp::min: case ExprOp::max: case ExprOp::hypot:
+  case ExprOp::add:
+  case ExprOp::sub:
+  case ExprOp::mul:
+  case ExprOp::div:
+  case ExprOp::pow:
+  case ExprOp::min:
+  case ExprOp::max:
+  case ExprOp::hypot:
     return true;
-  default: return false;
+  default:
+    return false;
   }
 }
 
-} // namespace
+}  // namespace
 
 double Expression::operator()(double x, double y) const noexcept {
   std::array<double, 4 * max_expression_depth + 8> stack;
@@ -77,10 +104,18 @@ double Expression::operator()(double x, double y) const noexcept {
   std::size_t top = 0;  // number of values on the stack
   for (const ExprInstruction& in : program_->code) {
     switch (in.op) {
-    case ExprOp::constant: stack[top++] = in.value; break;
-    case ExprOp::x: stack[top++] = x; break;
-    case ExprOp::y: stack[top++] = y; break;
-    case ExprOp::r: stack[top++] = std::hypot(x, y); break;
+    case ExprOp::constant:
+      stack[top++] = in.value;
+      break;
+    case ExprOp::x:
+      stack[top++] = x;
+      break;
+    case ExprOp::y:
+      stack[top++] = y;
+      break;
+    case ExprOp::r:
+      stack[top++] = std::hypot(x, y);
+      break;
     default:
       if (is_binary(in.op)) {
         --top;
@@ -97,4 +132,4 @@ std::function<double(double x, double y)> Expression::function() const {
   return [e = *this](double x, double y) { return e(x, y); };
 }
 
-} // namespace madd
+}  // namespace madd

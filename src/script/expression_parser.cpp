@@ -33,10 +33,18 @@ struct FunctionInfo {
 };
 
 constexpr std::array<FunctionInfo, 13> functions{{
-    {"sqrt", ExprOp::sqrt, 1, 1}, {"exp", ExprOp::exp, 1, 1},     {"log", ExprOp::log, 1, 1},
-    {"sin", ExprOp::sin, 1, 1},   {"cos", ExprOp::cos, 1, 1},     {"tan", ExprOp::tan, 1, 1},
-    {"abs", ExprOp::abs, 1, 1},   {"floor", ExprOp::floor, 1, 1}, {"ceil", ExprOp::ceil, 1, 1},
-    {"hypot", ExprOp::hypot, 2, 2}, {"pow", ExprOp::pow, 2, 2},   {"min", ExprOp::min, 2, -1},
+    {"sqrt", ExprOp::sqrt, 1, 1},
+    {"exp", ExprOp::exp, 1, 1},
+    {"log", ExprOp::log, 1, 1},
+    {"sin", ExprOp::sin, 1, 1},
+    {"cos", ExprOp::cos, 1, 1},
+    {"tan", ExprOp::tan, 1, 1},
+    {"abs", ExprOp::abs, 1, 1},
+    {"floor", ExprOp::floor, 1, 1},
+    {"ceil", ExprOp::ceil, 1, 1},
+    {"hypot", ExprOp::hypot, 2, 2},
+    {"pow", ExprOp::pow, 2, 2},
+    {"min", ExprOp::min, 2, -1},
     {"max", ExprOp::max, 2, -1},
 }};
 
@@ -226,8 +234,10 @@ private:
       parse_sum();
       expect(Tok::rparen, "expected ')' to close the '(' at column " + std::to_string(t.begin + 1));
       return;
-    case Tok::end: fail(t.begin, "unexpected end of expression");
-    default: fail(t.begin, "expected a number, variable, function or '(', found " + describe(t));
+    case Tok::end:
+      fail(t.begin, "unexpected end of expression");
+    default:
+      fail(t.begin, "expected a number, variable, function or '(', found " + describe(t));
     }
   }
 
@@ -258,11 +268,11 @@ private:
         advance();
       }
     }
-    expect(Tok::rparen, "expected ')' or ',' in the call of '" + name + "' opened at column " +
-                            std::to_string(open + 1));
+    expect(Tok::rparen,
+           "expected ')' or ',' in the call of '" + name + "' opened at column " + std::to_string(open + 1));
     if (args < f->min_args || (f->max_args >= 0 && args > f->max_args)) {
-      const std::string wanted = f->max_args < 0 ? std::to_string(f->min_args) + " or more"
-                                                 : std::to_string(f->min_args);
+      const std::string wanted =
+          f->max_args < 0 ? std::to_string(f->min_args) + " or more" : std::to_string(f->min_args);
       fail(t.begin, "function '" + name + "' takes " + wanted + (wanted == "1" ? " argument" : " arguments") +
                         ", got " + std::to_string(args));
     }
@@ -281,31 +291,41 @@ std::size_t stack_needed(const std::vector<ExprInstruction>& program) {
   std::size_t size = 0, most = 1;
   for (const ExprInstruction& in : program) {
     switch (in.op) {
-    case ExprOp::constant: case ExprOp::x: case ExprOp::y: case ExprOp::r:
+    case ExprOp::constant:
+    case ExprOp::x:
+    case ExprOp::y:
+    case ExprOp::r:
       most = std::max(most, ++size);
       break;
-    case ExprOp::add: case ExprOp::sub: case ExprOp::mul: case ExprOp::div: case ExprOp::pow:
-    case ExprOp::min: case ExprOp::max: case ExprOp::hypot:
+    case ExprOp::add:
+    case ExprOp::sub:
+    case ExprOp::mul:
+    case ExprOp::div:
+    case ExprOp::pow:
+    case ExprOp::min:
+    case ExprOp::max:
+    case ExprOp::hypot:
       --size;
       break;
-    default: break;
+    default:
+      break;
     }
   }
   return most;
 }
 
-} // namespace
+}  // namespace
 
 Expression parse_expression(std::string_view text, const std::string& name) {
   Expression e;
   detail::ExprProgram program{Parser(text, name).run(), 1};
   program.stack_size = stack_needed(program.code);
   if (program.stack_size > max_stack)
-    throw ParseError(name, 1, 1, "expression too complex (needs more than " + std::to_string(max_stack) +
-                                     " intermediate values)");
+    throw ParseError(name, 1, 1,
+                     "expression too complex (needs more than " + std::to_string(max_stack) + " intermediate values)");
   e.program_ = std::make_shared<const detail::ExprProgram>(std::move(program));
   e.text_ = std::string(text);
   return e;
 }
 
-} // namespace madd
+}  // namespace madd

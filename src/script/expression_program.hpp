@@ -9,8 +9,28 @@
 namespace madd::detail {
 
 enum class ExprOp : std::uint8_t {
-  constant, x, y, r, add, sub, mul, div, pow, neg,
-  sqrt, exp, log, sin, cos, tan, abs, floor, ceil, min, max, hypot,
+  constant,
+  x,
+  y,
+  r,
+  add,
+  sub,
+  mul,
+  div,
+  pow,
+  neg,
+  sqrt,
+  exp,
+  log,
+  sin,
+  cos,
+  tan,
+  abs,
+  floor,
+  ceil,
+  min,
+  max,
+  hypot,
 };
 
 struct ExprInstruction {
@@ -25,4 +45,4 @@ struct ExprProgram {
   friend bool operator==(const ExprProgram&, const ExprProgram&) = default;
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -38,11 +38,16 @@ void rethrow_located(const ScriptCommand& c, std::size_t column, const Error& er
   if (const auto* e = dynamic_cast<const OptionError*>(&error))
     throw OptionError(e->option(), e->requirement(), message);
   switch (error.kind()) {
-  case ErrorKind::bad_input: throw InputFileError(message);
-  case ErrorKind::output: throw OutputError(message);
-  case ErrorKind::limit: throw LimitError(message);
-  case ErrorKind::internal: throw InternalError(message);
-  default: throw Error(error.kind(), message);
+  case ErrorKind::bad_input:
+    throw InputFileError(message);
+  case ErrorKind::output:
+    throw OutputError(message);
+  case ErrorKind::limit:
+    throw LimitError(message);
+  case ErrorKind::internal:
+    throw InternalError(message);
+  default:
+    throw Error(error.kind(), message);
   }
 }
 
@@ -53,7 +58,7 @@ std::string printable(std::string_view text) {
   return out;
 }
 
-} // namespace detail
+}  // namespace detail
 
 namespace {
 
@@ -111,8 +116,18 @@ std::optional<ScriptCommand> split_line(std::string_view raw, std::size_t line, 
   return c;
 }
 
-enum class Verb : std::uint8_t { read, dec, write, read_weights, read_areas, write_subdomains, weight_function,
-                                 area_function, set, exit };
+enum class Verb : std::uint8_t {
+  read,
+  dec,
+  write,
+  read_weights,
+  read_areas,
+  write_subdomains,
+  weight_function,
+  area_function,
+  set,
+  exit
+};
 
 struct VerbName {
   std::string_view name;
@@ -120,10 +135,17 @@ struct VerbName {
 };
 
 constexpr std::array<VerbName, 11> verbs{{
-    {"read", Verb::read}, {"dec", Verb::dec}, {"write", Verb::write}, {"read_weights", Verb::read_weights},
-    {"read_areas", Verb::read_areas}, {"writeSubdomains", Verb::write_subdomains},
-    {"setWeightFunction", Verb::weight_function}, {"setAreaFunction", Verb::area_function},
-    {"set", Verb::set}, {"exit", Verb::exit}, {"quit", Verb::exit},
+    {"read", Verb::read},
+    {"dec", Verb::dec},
+    {"write", Verb::write},
+    {"read_weights", Verb::read_weights},
+    {"read_areas", Verb::read_areas},
+    {"writeSubdomains", Verb::write_subdomains},
+    {"setWeightFunction", Verb::weight_function},
+    {"setAreaFunction", Verb::area_function},
+    {"set", Verb::set},
+    {"exit", Verb::exit},
+    {"quit", Verb::exit},
 }};
 
 // Runs one command; returns true for `exit`.
@@ -137,15 +159,33 @@ bool execute(const ScriptCommand& c, ScriptContext& context) {
                                   "' (commands: read, dec, write, read_weights, read_areas, writeSubdomains, "
                                   "setWeightFunction, setAreaFunction, set, exit)");
   switch (*verb) {
-  case Verb::read: detail::script_read(c, context); break;
-  case Verb::dec: detail::script_dec(c, context); break;
-  case Verb::write: detail::script_write(c, context); break;
-  case Verb::read_weights: detail::script_read_values(c, context, false); break;
-  case Verb::read_areas: detail::script_read_values(c, context, true); break;
-  case Verb::write_subdomains: detail::script_write_subdomains(c, context); break;
-  case Verb::weight_function: detail::script_set_function(c, context, false); break;
-  case Verb::area_function: detail::script_set_function(c, context, true); break;
-  case Verb::set: detail::script_set(c, context); break;
+  case Verb::read:
+    detail::script_read(c, context);
+    break;
+  case Verb::dec:
+    detail::script_dec(c, context);
+    break;
+  case Verb::write:
+    detail::script_write(c, context);
+    break;
+  case Verb::read_weights:
+    detail::script_read_values(c, context, false);
+    break;
+  case Verb::read_areas:
+    detail::script_read_values(c, context, true);
+    break;
+  case Verb::write_subdomains:
+    detail::script_write_subdomains(c, context);
+    break;
+  case Verb::weight_function:
+    detail::script_set_function(c, context, false);
+    break;
+  case Verb::area_function:
+    detail::script_set_function(c, context, true);
+    break;
+  case Verb::set:
+    detail::script_set(c, context);
+    break;
   case Verb::exit:
     c.expect_arguments(0, 0, "exit");
     return true;
@@ -153,7 +193,7 @@ bool execute(const ScriptCommand& c, ScriptContext& context) {
   return false;
 }
 
-} // namespace
+}  // namespace
 
 ScriptResult run_script(std::string_view text, const std::string& name, ScriptContext& context) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -175,4 +215,4 @@ ScriptResult run_script(std::string_view text, const std::string& name, ScriptCo
   return result;
 }
 
-} // namespace madd
+}  // namespace madd

@@ -64,4 +64,4 @@ void script_write_subdomains(const ScriptCommand& c, ScriptContext& context);
 void script_set_function(const ScriptCommand& c, ScriptContext& context, bool areas);
 void script_set(const ScriptCommand& c, ScriptContext& context);
 
-} // namespace madd::detail
+}  // namespace madd::detail

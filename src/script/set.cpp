@@ -87,7 +87,7 @@ std::string parameter_names() {
   return names;
 }
 
-} // namespace
+}  // namespace
 
 std::string script_name_of(const std::string& field) {
   if (field == "weight_function") return "setWeightFunction";
@@ -114,7 +114,9 @@ std::vector<Assignment> split_assignments(const ScriptCommand& c) {
   const std::string& s = c.rest;
   std::vector<Assignment> out;
   std::size_t i = 0;
-  const auto skip = [&] { while (i < s.size() && is_blank(s[i])) ++i; };
+  const auto skip = [&] {
+    while (i < s.size() && is_blank(s[i])) ++i;
+  };
   const auto column = [&](std::size_t at) { return c.rest_column + at; };
   skip();
   if (i == s.size()) c.fail(c.end_column, "missing <parameter>=<value> (for example: set f=0.35)");
@@ -144,7 +146,7 @@ bool looks_like_library(const std::string& word) {
   return ends_with(".so") || word.find(".so.") != std::string::npos || ends_with(".dylib") || ends_with(".dll");
 }
 
-} // namespace
+}  // namespace
 
 void script_set(const ScriptCommand& c, ScriptContext& context) {
   // All assignments of the line are checked before any applies, so a bad
@@ -159,7 +161,8 @@ void script_set(const ScriptCommand& c, ScriptContext& context) {
     if (!assign(*p, a.value, options))
       c.fail_option(a.value_column, p->field,
                     std::string(p->name) + " (" + p->meaning + ") needs " +
-                        (p->type == ValueType::real ? "a number" : "a whole number") + ", got '" + printable(a.value) + "'");
+                        (p->type == ValueType::real ? "a number" : "a whole number") + ", got '" + printable(a.value) +
+                        "'");
   }
   try {
     check_option_ranges(options);
@@ -203,4 +206,4 @@ void script_set_function(const ScriptCommand& c, ScriptContext& context, bool ar
   if (context.log) context.log(command + " " + c.rest);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

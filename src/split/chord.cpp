@@ -284,7 +284,7 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
   return out;
 }
 
-} // namespace
+}  // namespace
 
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
   const Ring ring = ring_of(fd);
@@ -317,4 +317,4 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
   return std::nullopt;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

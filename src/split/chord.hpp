@@ -21,13 +21,13 @@ namespace madd::detail {
 
 struct ChordOptions {
   double separator_angle_deg = 60.0;  // Phi0: both ends, both sides
-  std::uint32_t plan = 2;       // final subdomains of the face
+  std::uint32_t plan = 2;             // final subdomains of the face
   // Chords are rated by a two-sided balance quality: like balance_quality
   // (split.hpp), but the lightest final subdomain counts as well as the
   // heaviest, so it never exceeds balance_quality for the same areas.
-  double min_quality = 0.0;     // a chord must balance better than this
-  double good_quality = 0.95;   // among chords at least this good, the shortest wins
-  bool end_bonus = true;        // Sec. 5.1 smoothing: lengths scaled by the end bonuses (existing vertices, midpoints)
+  double min_quality = 0.0;    // a chord must balance better than this
+  double good_quality = 0.95;  // among chords at least this good, the shortest wins
+  bool end_bonus = true;       // Sec. 5.1 smoothing: lengths scaled by the end bonuses (existing vertices, midpoints)
 };
 
 // A chord found on face `fd` (the refined boundary of a face with a single
@@ -40,4 +40,4 @@ struct Chord {
 };
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -55,7 +55,7 @@ void add_samples(const MedialGraph& g, const Triangulation& tri, const FaceDensi
   }
 }
 
-} // namespace
+}  // namespace
 
 std::vector<double> density_weights(const MedialGraph& g, const Triangulation& tri, const FaceDomain& fd,
                                     const FaceDensity& density) {
@@ -66,4 +66,4 @@ std::vector<double> density_weights(const MedialGraph& g, const Triangulation& t
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -44,7 +44,8 @@ double end_angles(const MedialGraph& g, const FaceDomain& fd, const std::vector<
     // Through a tip, the move must not sweep over the segment ending there.
     if (fd.links[c].tip) {
       const Point along = g.points[fd.links[c].next];
-      const double ap = ccw_angle_deg(g.points[c], along, g.points[p]), ax = ccw_angle_deg(g.points[c], along, g.points[x]);
+      const double ap = ccw_angle_deg(g.points[c], along, g.points[p]),
+                   ax = ccw_angle_deg(g.points[c], along, g.points[x]);
       if (std::abs(ap - ax) >= 180.0) return -1.0;
     }
     a = std::min(a, at_c);
@@ -104,7 +105,8 @@ Move best_move(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s
                std::size_t k, int e, const double w[2], const Point interior[2]) {
   const std::uint32_t p = cut[k].end[e], c = cut[k].end[1 - e];
   Move best;
-  best.score = score(g, fd, c, p, std::max(end_angles(g, fd, cut, k, c, p), s.separator_angle_deg), s.separator_angle_deg);
+  best.score =
+      score(g, fd, c, p, std::max(end_angles(g, fd, cut, k, c, p), s.separator_angle_deg), s.separator_angle_deg);
   best.score *= 1.0 - 1e-9;  // only a real improvement moves
   const double shortest = std::min(distance(g.points[c], g.points[p]), s.min_length);
   for (int dir = 0; dir < 2; ++dir) {
@@ -117,8 +119,9 @@ Move best_move(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s
       double nw[2];
       moved_weights(g, s, cut[k], e, y, w, nw);
       // Shorter is better, but not down to a sliver of the final subdomains' size.
-      const bool ok = angle >= s.separator_angle_deg + angle_margin_deg && distance(g.points[c], g.points[y]) >= shortest &&
-                      nw[0] > 0.0 && nw[1] > 0.0 && balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality;
+      const bool ok = angle >= s.separator_angle_deg + angle_margin_deg &&
+                      distance(g.points[c], g.points[y]) >= shortest && nw[0] > 0.0 && nw[1] > 0.0 &&
+                      balance_quality(s.plan, nw[0], nw[1]) >= s.min_quality;
       const double sc = ok ? score(g, fd, c, y, angle, s.separator_angle_deg) : INFINITY;
       if (sc < best.score && swept_empty(g, fd, c, path, interior)) {
         best.score = sc;
@@ -132,7 +135,7 @@ Move best_move(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s
   return best;
 }
 
-} // namespace
+}  // namespace
 
 void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing& s, std::vector<CutEnd>& cut,
                  double w[2], const Point interior[2]) {
@@ -158,4 +161,4 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -22,7 +22,8 @@ public:
     const auto n = static_cast<std::uint32_t>(g.vertex_triangle.size());
     const Box all = bounding_box(tri.points);
     const auto cells = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 512.0));
-    grid_ = UniformGrid(all.lo, std::max(all.width() / cells, 1e-300), std::max(all.height() / cells, 1e-300), cells, cells);
+    grid_ = UniformGrid(all.lo, std::max(all.width() / cells, 1e-300), std::max(all.height() / cells, 1e-300), cells,
+                        cells);
     std::vector<Box> boxes(n);
     for (std::uint32_t v = 0; v < n; ++v) boxes[v] = bounding_box(vertex_triangle_corners(g, tri, v));
     grid_.fill(n, UniformGrid::Index::by_cell,
@@ -55,4 +56,4 @@ private:
   UniformGrid grid_;  // items are G_D vertices, listed in the cells of their triangle's bounding box
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

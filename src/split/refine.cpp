@@ -10,7 +10,7 @@ namespace madd::detail {
 namespace {
 constexpr float existing_vertex_bonus = 0.8f;  // Sec. 5.1 type 1: ends on an existing vertex
 constexpr float midpoint_bonus = 0.9f;         // Sec. 5.1 type 2: ends midway between them
-} // namespace
+}  // namespace
 
 double face_perimeter(const Subdivision& sub, std::uint32_t face) {
   double total = 0.0;
@@ -41,7 +41,7 @@ double weight_factor(const std::vector<double>* w, double mean, std::uint32_t a,
   return std::clamp(0.5 * ((*w)[a] + (*w)[b]) / mean, 1.0, std::max(level, 1.0));
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -127,7 +127,7 @@ void add_interior(const Subdivision& sub, const Face& f, double spacing, bool pi
   }
 }
 
-} // namespace
+}  // namespace
 
 FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacing,
                        const std::vector<double>* point_weights, double adaptive_level, bool pin_isolated) {
@@ -196,4 +196,4 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -12,9 +12,9 @@
 namespace madd::detail {
 
 struct FaceDomain {
-  Pslg pslg;                         // the refined rings and one hole point per hole ring
-  std::vector<BoundaryLinks> links;  // per working point: ring neighbours, Sec. 5.1 bonus
-  std::vector<EndRef> refs;          // per working point: where it lies in the subdivision
+  Pslg pslg;                           // the refined rings and one hole point per hole ring
+  std::vector<BoundaryLinks> links;    // per working point: ring neighbours, Sec. 5.1 bonus
+  std::vector<EndRef> refs;            // per working point: where it lies in the subdivision
   std::vector<std::uint32_t> ring_of;  // per working point: the face ring it lies on (0 off the rings)
   // Interior constraints (docs/algorithm.md, "Interior segments"): pslg's
   // segments from ring_segments on are the interior pieces' working edges;
@@ -50,4 +50,4 @@ FaceDomain refine_face(const Subdivision& sub, std::uint32_t face, double spacin
 // Perimeter of a face: total length of its rings.
 double face_perimeter(const Subdivision& sub, std::uint32_t face);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -33,7 +33,7 @@ constexpr double points_per_side = 4.0;  // spacing = sqrt(area) / (points_per_s
 constexpr double max_working_points = 4.0e5;
 constexpr double min_point_cap = 2.0e4;
 constexpr double points_per_vertex_cap = 32.0;
-constexpr int max_repartitions = 6;      // Sec. 4.3 attempts per bisection
+constexpr int max_repartitions = 6;             // Sec. 4.3 attempts per bisection
 constexpr double min_separator_fraction = 0.1;  // step 2 keeps separators >= this x sqrt(area per final subdomain)
 constexpr std::uint32_t max_extra_targets = 2;  // j/plan targets tried besides floor(plan/2)/plan
 constexpr double chord_trigger = 0.95;          // below this balance quality, look for a chord (split/chord.hpp)
@@ -51,7 +51,7 @@ constexpr double offset_spacings[] = {2.0 / 3.0, 0.6, 3.0 / 7.0, 0.3};
 // which would leave the whole face as one subdomain.
 constexpr double uneven_fractions[] = {0.4, 1.0 / 3.0, 0.25, 0.2};
 constexpr int uneven_rounds = 3;
-constexpr double max_chord_points = 1500.0;     // the chord search is quadratic in the boundary points
+constexpr double max_chord_points = 1500.0;  // the chord search is quadratic in the boundary points
 // At commit, an end of this split may move to a vertex a neighbour's commit
 // put on the same straight segment within this fraction of the spacing
 // (EndSnap, subdivision/subdivision.hpp): a quarter of the distance between two working
@@ -62,7 +62,7 @@ bool is_cut(const MedialGraph& g, const std::vector<std::uint8_t>& side, const M
   return side[g.coarse[e.left]] != side[g.coarse[e.right]];
 }
 
-} // namespace
+}  // namespace
 
 // Two cut partial separators meeting at one boundary point would pinch a side
 // there (and may form an angle below Phi0). Returns pairs of G'_D vertices to
@@ -242,12 +242,14 @@ IsolatedIn locate_isolated(const FaceDomain& fd, const Triangulation& tri, const
       for (int i = 0; i < 3; ++i) {
         const std::uint32_t k = pinned_of[tri.triangles[t][i]];
         if (k != no_index && out[k].empty())
-          out[k].push_back(g.first_vertex[t] + (g.centre[t] != no_index ? static_cast<std::uint32_t>((i + 1) % 3) : 0u));
+          out[k].push_back(g.first_vertex[t] +
+                           (g.centre[t] != no_index ? static_cast<std::uint32_t>((i + 1) % 3) : 0u));
       }
     }
   }
   for (const auto& holders : out)
-    if (holders.empty()) throw DecompositionError("an isolated point is in no triangle of its subdomain (internal error)", face);
+    if (holders.empty())
+      throw DecompositionError("an isolated point is in no triangle of its subdomain (internal error)", face);
   return out;
 }
 
@@ -359,8 +361,8 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
 std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan,
                                  const SplitOptions& options, double best, SplitTimes& times) {
   const double area = sub.face_area(face);
-  const double h =
-      std::max(0.5 * std::sqrt(area) / (points_per_side * options.boundary_refinement), face_perimeter(sub, face) / max_chord_points);
+  const double h = std::max(0.5 * std::sqrt(area) / (points_per_side * options.boundary_refinement),
+                            face_perimeter(sub, face) / max_chord_points);
   ChordOptions co;
   co.separator_angle_deg = options.separator_angle_deg;
   co.plan = plan;
@@ -376,7 +378,7 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
   return chord;
 }
 
-} // namespace
+}  // namespace
 
 SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan, const SplitOptions& options,
                           const FaceDensity& density, const ResourceGuard* limits) {
@@ -418,8 +420,8 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (int k = 0; best.quality < 0.0 && k < uneven_rounds; ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times,
-                              uneven_fractions);
+    Candidate c =
+        try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times, uneven_fractions);
     if (c.quality > best.quality) best = std::move(c);
   }
   for (std::size_t k = 0; best.quality < options.min_split_quality && k < std::size(offset_spacings); ++k) {
@@ -434,8 +436,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   for (int k = 0; best.quality < 0.0 && !sub.faces[face].inner_points.empty() && k < uneven_rounds; ++k) {
     if (limits != nullptr) limits->check(sub.faces.size());
     const double h = std::max(first_spacing * std::ldexp(1.0, -k), perimeter / point_cap);
-    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times, {},
-                              true);
+    Candidate c = try_spacing(sub, face, plan, h, options.max_split_retries + 1 + k, options, density, times, {}, true);
     if (c.quality > best.quality) best = std::move(c);
   }
   if (best.quality < 0.0) {
@@ -448,4 +449,4 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   return std::move(best.result);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

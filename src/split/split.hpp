@@ -18,24 +18,26 @@ namespace madd::detail {
 
 struct SplitOptions {
   double separator_angle_deg = 60.0;
-  double boundary_refinement = 3.0;          // r
-  double min_split_quality = 0.75;  // accept when each side has >= this share of its target
-  double good_balance = 0.95;   // stop trying targets and refining at this balance quality
+  double boundary_refinement = 3.0;  // r
+  double min_split_quality = 0.75;   // accept when each side has >= this share of its target
+  double good_balance = 0.95;        // stop trying targets and refining at this balance quality
   int max_split_retries = 4;
   std::uint64_t seed = 1;
   int smoothing_iterations = 1;  // Sec. 5.1: 0 turns both smoothing steps off
-  double adaptive_boundary_refinement = 4.0;  // graded runs: heavier edges get up to this many times more pieces (refine.hpp)
-  double smoothing_tolerance = 0.03;  // step 2 may lower the balance quality by this much (never below min_split_quality)
+  double adaptive_boundary_refinement =
+      4.0;  // graded runs: heavier edges get up to this many times more pieces (refine.hpp)
+  double smoothing_tolerance =
+      0.03;  // step 2 may lower the balance quality by this much (never below min_split_quality)
 };
 
 // What the parts of a face weigh in a graded decomposition (Sec. 5.2). Not
 // graded: a G_D vertex weighs its area.
 struct FaceDensity {
   bool graded = false;
-  double r = 1.0;                                     // density = r * area + a * weight
+  double r = 1.0;  // density = r * area + a * weight
   double a = 0.0;
   const std::vector<double>* point_weights = nullptr;  // case 1: per subdivision vertex
-  std::vector<ValuedPoint> samples;                   // cases 2/3: weight samples inside the face
+  std::vector<ValuedPoint> samples;                    // cases 2/3: weight samples inside the face
 };
 
 // Splits face `face`, planned to become `plan` >= 2 final subdomains, aiming
@@ -96,4 +98,4 @@ void smooth_ends(const MedialGraph& g, const FaceDomain& fd, const EndSmoothing&
 std::vector<double> density_weights(const MedialGraph& g, const Triangulation& tri, const FaceDomain& fd,
                                     const FaceDensity& density);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -56,7 +56,7 @@ void check_inner_angles(const Subdivision& sub, std::uint32_t f, double separato
   }
 }
 
-} // namespace
+}  // namespace
 
 void check_new_angles(const Subdivision& sub, double separator_angle_deg) {
   constexpr double tolerance_deg = angle_rounding_bound_deg;  // the splits keep a margin far above it
@@ -79,4 +79,4 @@ void check_new_angles(const Subdivision& sub, double separator_angle_deg) {
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -24,7 +24,7 @@ bool rings_are_simple(const Face& face) {
   return std::adjacent_find(all.begin(), all.end()) == all.end();
 }
 
-} // namespace
+}  // namespace
 
 bool Subdivision::merge(std::uint32_t a, std::uint32_t b) {
   if (a == b || a >= faces.size() || b >= faces.size()) return false;
@@ -141,4 +141,4 @@ void Subdivision::compact() {
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

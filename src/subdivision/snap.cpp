@@ -55,7 +55,7 @@ bool splits_corner(Point at, Point prev, Point next, Point q, double phi) {
   return a1 >= phi && a2 >= phi && std::abs(a1 + a2 - corner) <= straight_tolerance_deg;
 }
 
-} // namespace
+}  // namespace
 
 bool Subdivision::far_angles_hold(const SnapEdge& edge, Point from, Point to, double phi) const {
   const EndRef& far = edge.far;
@@ -116,4 +116,4 @@ bool Subdivision::may_snap(std::uint32_t v, const EndRef& end, const SnapEdge& e
   return !in_swept(split.interior[0]) && !in_swept(split.interior[1]);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

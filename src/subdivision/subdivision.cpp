@@ -103,9 +103,7 @@ Point Subdivision::hole_point(std::uint32_t face, std::size_t ring) const {
   return origin_hole[o];
 }
 
-double Subdivision::face_area(std::uint32_t face) const {
-  return rings_area(points, faces[face].rings);
-}
+double Subdivision::face_area(std::uint32_t face) const { return rings_area(points, faces[face].rings); }
 
 std::size_t Subdivision::ring_vertex_count(std::uint32_t face) const {
   std::size_t n = 0;
@@ -330,11 +328,10 @@ Face Subdivision::assemble_face(std::vector<Cycle>& cycles, Point interior, std:
     }
   }
   if (outers != 1) {
-    throw DecompositionError("split of subdomain " + std::to_string(face) +
-                                 " did not give two connected faces (internal error)",
-                             face);
+    throw DecompositionError(
+        "split of subdomain " + std::to_string(face) + " did not give two connected faces (internal error)", face);
   }
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -60,15 +60,15 @@ struct SplitResult {
   std::vector<SeparatorEdge> edges;
   std::vector<std::uint8_t> ring_side;  // per ring of the face: the side its inner neighbourhood joins
   double weight[2] = {0.0, 0.0};
-  Point interior[2];                    // a point strictly inside each side
+  Point interior[2];  // a point strictly inside each side
   // Per interior piece of the face (Face::inner_segments as the split saw
   // it): the side of each of its working edges, in the piece's direction
   // (split/refine.hpp divides it into that many equal parts); per isolated
   // point (Face::inner_points): its side.
   std::vector<std::vector<std::uint8_t>> inner_sides;
   std::vector<std::uint8_t> point_sides;
-  EndSnap snap;                         // how ends may move at commit (not part of the choice)
-  SplitTimes times;                     // how long computing it took (not part of the geometry)
+  EndSnap snap;      // how ends may move at commit (not part of the choice)
+  SplitTimes times;  // how long computing it took (not part of the geometry)
 };
 
 struct Face {
@@ -80,8 +80,8 @@ struct Face {
   // "Interior segments"). A separator crosses such a piece only at a vertex.
   std::vector<std::uint32_t> inner_segments;
   std::vector<std::uint32_t> inner_points;
-  std::uint32_t plan = 1;                                 // final subdomains this face will become
-  std::uint32_t sibling = no_index;                       // the other side of the split that made it, if still whole
+  std::uint32_t plan = 1;            // final subdomains this face will become
+  std::uint32_t sibling = no_index;  // the other side of the split that made it, if still whole
 };
 
 // A closed boundary cycle found by the face walk.
@@ -112,12 +112,12 @@ class Subdivision {
 public:
   std::vector<Point> points;
   std::vector<Segment> segments;
-  std::vector<std::uint32_t> origin;                     // input segment, no_index for separators
-  std::vector<std::uint32_t> next_piece;                 // next piece along the same original segment
-  std::vector<std::array<std::uint32_t, 2>> seg_faces;   // faces having the segment in a ring;
-                                                         // an interior piece names its face twice
+  std::vector<std::uint32_t> origin;                    // input segment, no_index for separators
+  std::vector<std::uint32_t> next_piece;                // next piece along the same original segment
+  std::vector<std::array<std::uint32_t, 2>> seg_faces;  // faces having the segment in a ring;
+                                                        // an interior piece names its face twice
   std::vector<Face> faces;
-  std::vector<Point> origin_hole;                        // per input segment on a hole ring: its hole point
+  std::vector<Point> origin_hole;  // per input segment on a hole ring: its hole point
   std::vector<std::uint8_t> origin_has_hole;
 
   // The whole validated domain as one face (rings traced from the segments).
@@ -178,4 +178,4 @@ private:
   std::uint32_t split_segment(std::uint32_t piece, std::uint32_t vertex);
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

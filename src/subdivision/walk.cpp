@@ -51,7 +51,7 @@ void split_at_repeated_vertices(const std::vector<HalfEdge>& half_edges, const s
   out.push_back(std::move(stack));
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& points,
                                                    const std::vector<HalfEdge>& half_edges) {
@@ -108,4 +108,4 @@ std::vector<std::vector<std::uint32_t>> walk_faces(const std::vector<Point>& poi
   return cycles;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

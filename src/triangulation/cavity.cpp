@@ -30,7 +30,7 @@ inline bool in_conflict(const Point* P, const std::uint32_t* t, std::uint32_t gh
   return incircle(P[a], P[b], P[c], p) > 0;
 }
 
-} // namespace
+}  // namespace
 
 bool ghost_conflict(Point a, Point b, Point p) noexcept {
   const double o = orient2d(a, b, p);
@@ -255,4 +255,4 @@ void Cavity::clear() noexcept {
   reset();
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

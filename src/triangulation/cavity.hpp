@@ -95,11 +95,11 @@ private:
   enum class Mark : std::uint8_t { out, in };
   std::vector<Mark> in_cavity_;
   std::vector<RimEdge> rim_;
-  std::vector<RimSide> rim_sides_;  // per rim edge, in a constrained mesh
-  std::vector<std::uint32_t> link_;  // per vertex: the fan triangle whose rim edge starts there
+  std::vector<RimSide> rim_sides_;                        // per rim edge, in a constrained mesh
+  std::vector<std::uint32_t> link_;                       // per vertex: the fan triangle whose rim edge starts there
   std::uint32_t skip_ = no_index, skip_twin_ = no_index;  // the split edge and its twin (dig_on_edge)
-  std::uint32_t open_a_ = no_index, open_b_ = no_index;    // its ends, when the fan stays open there
-  std::uint32_t ghost_ = no_index;                         // the mesh's, as dug
+  std::uint32_t open_a_ = no_index, open_b_ = no_index;   // its ends, when the fan stays open there
+  std::uint32_t ghost_ = no_index;                        // the mesh's, as dug
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

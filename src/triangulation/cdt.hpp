@@ -34,4 +34,4 @@ void insert_segments(HalfEdgeMesh& mesh, const Pslg& pslg);
 bool constrained_delaunay(HalfEdgeMesh& mesh, const Pslg& pslg, const TriangulateOptions& options,
                           std::vector<std::uint32_t>* regions = nullptr);
 
-} // namespace madd::detail
+}  // namespace madd::detail

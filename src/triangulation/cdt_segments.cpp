@@ -52,8 +52,8 @@ private:
 
   HalfEdgeMesh& m_;
   const Pslg& pslg_;
-  std::span<const Point> P_;         // the mesh's vertices are indices into it
-  std::vector<std::uint32_t> v2c_;   // per vertex: a corner (3t+i) holding it
+  std::span<const Point> P_;        // the mesh's vertices are indices into it
+  std::vector<std::uint32_t> v2c_;  // per vertex: a corner (3t+i) holding it
   std::vector<std::uint32_t> crossed_;
   Path upper_, lower_;
   std::vector<Task> tasks_;
@@ -85,7 +85,8 @@ void SegmentInserter::find_slits(const Path& path) {
 
 void SegmentInserter::close_slits() {
   for (const Slit& a : slits_) {
-    const auto twin = std::find_if(slits_.begin(), slits_.end(), [&](const Slit& b) { return b.old_edge == a.old_twin; });
+    const auto twin =
+        std::find_if(slits_.begin(), slits_.end(), [&](const Slit& b) { return b.old_edge == a.old_twin; });
     if (twin == slits_.end() || a.fresh == no_index || twin->fresh == no_index) {
       throw InternalError("triangulate: internal error: unpaired edge inside a segment cavity");
     }
@@ -268,11 +269,11 @@ void SegmentInserter::insert(std::uint32_t s) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void insert_segments(HalfEdgeMesh& mesh, const Pslg& pslg) {
   SegmentInserter inserter(mesh, pslg);
   for (std::uint32_t s = 0; s < pslg.segments.size(); ++s) inserter.insert(s);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

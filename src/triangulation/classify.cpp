@@ -98,7 +98,7 @@ std::vector<std::uint32_t> region_labels(const HalfEdgeMesh& mesh, const Pslg& p
   return label;
 }
 
-} // namespace
+}  // namespace
 
 bool constrained_delaunay(HalfEdgeMesh& mesh, const Pslg& pslg, const TriangulateOptions& options,
                           std::vector<std::uint32_t>* regions) {
@@ -119,4 +119,4 @@ bool constrained_delaunay(HalfEdgeMesh& mesh, const Pslg& pslg, const Triangulat
   return true;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -60,9 +60,9 @@ void Inserter::start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   const std::uint32_t init[12] = {a, b, c, b, a, g, c, b, g, a, c, g};
   m_.append_slots(4);
   std::copy(init, init + 12, m_.tv.begin());
-  m_.link(2, 3 + 2);   // a->b : ghost (b,a,g)
-  m_.link(0, 6 + 2);   // b->c : ghost (c,b,g)
-  m_.link(1, 9 + 2);   // c->a : ghost (a,c,g)
+  m_.link(2, 3 + 2);      // a->b : ghost (b,a,g)
+  m_.link(0, 6 + 2);      // b->c : ghost (c,b,g)
+  m_.link(1, 9 + 2);      // c->a : ghost (a,c,g)
   m_.link(3 + 0, 9 + 1);  // (a,g) | (g,a)
   m_.link(6 + 0, 3 + 1);  // (b,g) | (g,b)
   m_.link(9 + 0, 6 + 1);  // (c,g) | (g,c)
@@ -109,14 +109,14 @@ void check_collinear_duplicates(std::span<const Point> P) {
   }
 }
 
-} // namespace
+}  // namespace
 
 bool build_delaunay(HalfEdgeMesh& mesh, std::span<const Point> input) {
   mesh = HalfEdgeMesh{};
   // Half-edge ids (3 per triangle, 2n triangles) must fit in 32 bits.
   if (input.size() >= (std::size_t{no_index} - 16) / 6) {
-    throw InvalidInputError(InputProblem::other, "too many points for 32-bit triangle indices: " +
-                                                     std::to_string(input.size()));
+    throw InvalidInputError(InputProblem::other,
+                            "too many points for 32-bit triangle indices: " + std::to_string(input.size()));
   }
   mesh.ghost = static_cast<std::uint32_t>(input.size());
   if (input.size() < 3) {
@@ -144,4 +144,4 @@ bool build_delaunay(HalfEdgeMesh& mesh, std::span<const Point> input) {
   return true;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

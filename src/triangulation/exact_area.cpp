@@ -62,4 +62,4 @@ ExactSum triangles_twice_area_exact(const Triangulation& tri) {
   return twice;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

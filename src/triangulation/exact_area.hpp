@@ -25,4 +25,4 @@ ExactSum hull_twice_area_exact(const std::vector<Point>& points);
 // Twice the total signed area of the triangles, exactly.
 ExactSum triangles_twice_area_exact(const Triangulation& tri);
 
-} // namespace madd::detail
+}  // namespace madd::detail

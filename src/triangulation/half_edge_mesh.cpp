@@ -80,7 +80,7 @@ void move_down(HalfEdgeMesh& m, const std::vector<std::uint32_t>& index) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
   std::uint32_t live = 0;
@@ -100,4 +100,4 @@ std::uint32_t HalfEdgeMesh::remove_triangles(std::vector<std::uint32_t>& dead) {
   return live;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

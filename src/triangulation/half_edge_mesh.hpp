@@ -85,4 +85,4 @@ private:
   void grow_arrays();
 };
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -48,7 +48,7 @@ constexpr Table make_table() {
 
 constexpr Table table = make_table();
 
-} // namespace
+}  // namespace
 
 std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept {
   std::uint32_t d = 0, state = 0;
@@ -98,7 +98,7 @@ void radix_sort(std::vector<Item>& items, int bits) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points) {
   const auto n = static_cast<std::uint32_t>(points.size());
@@ -133,4 +133,4 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points) {
   return order;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -19,4 +19,4 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) noexcept
 // the next), each in Hilbert order. Deterministic.
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points);
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -49,7 +49,7 @@ std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
   return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
 }
 
-} // namespace
+}  // namespace
 
 KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
   KeptRegion out;
@@ -77,7 +77,9 @@ KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
     for (std::size_t h = 0; h < p.holes.size(); ++h)
       if (fm.hole_face[h] == no_index && in_closed_hull(hull, p.holes[h])) outside = Outside::unknown;
   }
-  const auto face_kept = [&](std::uint32_t face) { return face == no_index ? outside == Outside::retained : kept[face]; };
+  const auto face_kept = [&](std::uint32_t face) {
+    return face == no_index ? outside == Outside::retained : kept[face];
+  };
   ExactSum twice;
   if (outside == Outside::retained) twice = hull_twice_area_exact(p.points);
   // The unbounded face's rings run clockwise around what they enclose:
@@ -92,7 +94,8 @@ KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
   out.must_be_edge.resize(p.segments.size());
   for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
     const std::uint32_t f = fm.face_of_half_edge(2 * s), g = fm.face_of_half_edge(2 * s + 1);
-    const bool hull_side = (f == no_index) != (g == no_index) && on_hull.count(pair_key(p.segments[s].a, p.segments[s].b));
+    const bool hull_side =
+        (f == no_index) != (g == no_index) && on_hull.count(pair_key(p.segments[s].a, p.segments[s].b));
     out.must_be_edge[s] = (f != no_index && kept[f]) || (g != no_index && kept[g]) ||
                           (outside == Outside::retained && (f == no_index || g == no_index) && !hull_side);
   }
@@ -101,4 +104,4 @@ KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
   return out;
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -31,4 +31,4 @@ struct KeptRegion {
 // Precondition: validate_pslg() passed, intersections not allowed.
 KeptRegion kept_region(const Pslg& pslg, const TriangulateOptions& options);
 
-} // namespace madd::detail
+}  // namespace madd::detail

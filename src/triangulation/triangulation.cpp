@@ -43,7 +43,7 @@ Triangulation export_mesh(HalfEdgeMesh& mesh, std::span<const Point> points, std
   return out;
 }
 
-} // namespace
+}  // namespace
 
 Triangulation delaunay(std::span<const Point> points) {
   HalfEdgeMesh mesh;
@@ -75,4 +75,4 @@ Triangulation triangulate(const Pslg& pslg, const TriangulateOptions& options) {
   return export_mesh(mesh, pslg.points, std::move(attributes));
 }
 
-} // namespace madd
+}  // namespace madd

@@ -122,7 +122,8 @@ void check_attributes(const Triangulation& tri, Verification& v) {
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t u = tri.neighbours[t][i];
       if (u != no_index && tri.segment_of[t][i] == no_index && !same_attribute(tri.attributes[u], tri.attributes[t]))
-        report(v, tri_name(t) + " and " + tri_name(u) + " share an unconstrained edge but not their regional attribute");
+        report(v,
+               tri_name(t) + " and " + tri_name(u) + " share an unconstrained edge but not their regional attribute");
     }
 }
 
@@ -165,15 +166,15 @@ void check_area(const Triangulation& tri, const detail::KeptRegion& region, Veri
   difference.subtract(domain);
   if (difference.is_zero()) return;
   v.add("total area " + detail::number_text(0.5 * triangles.approximate()) + " differs from the domain area " +
-        detail::number_text(0.5 * domain.approximate()) + " (by " + detail::number_text(0.5 * difference.approximate()) +
-        ", computed exactly)");
+        detail::number_text(0.5 * domain.approximate()) + " (by " +
+        detail::number_text(0.5 * difference.approximate()) + ", computed exactly)");
 }
 
-} // namespace
+}  // namespace
 
 namespace detail {
 void check_segments(const Triangulation& tri, const Pslg& pslg, const KeptRegion& region, Verification& v);
-} // namespace detail
+}  // namespace detail
 
 Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg, const TriangulateOptions& options) {
   Verification v;
@@ -191,4 +192,4 @@ Verification verify_triangulation(const Triangulation& tri, const Pslg* pslg, co
   return v;
 }
 
-} // namespace madd
+}  // namespace madd

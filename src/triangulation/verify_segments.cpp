@@ -19,7 +19,7 @@ struct Constrained {
   }
 };
 
-} // namespace
+}  // namespace
 
 void check_segments(const Triangulation& tri, const Pslg& pslg, const KeptRegion& region, Verification& v) {
   std::vector<Constrained> edges;
@@ -52,10 +52,10 @@ void check_segments(const Triangulation& tri, const Pslg& pslg, const KeptRegion
     const std::uint32_t s = region.source[k];
     if (std::binary_search(edges.begin(), edges.end(), Constrained{a, b, s})) continue;
     v.add("segment " + std::to_string(s) + " (" + std::to_string(pslg.segments[s].a) + "-" +
-          std::to_string(pslg.segments[s].b) + ") is not covered by constrained edges: its piece " +
-          std::to_string(a) + "-" + std::to_string(b) + " is missing");
+          std::to_string(pslg.segments[s].b) + ") is not covered by constrained edges: its piece " + std::to_string(a) +
+          "-" + std::to_string(b) + " is missing");
     return;
   }
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -95,7 +95,7 @@ WalkResult walk(const HalfEdgeMesh& m, const Point* P, Point p, std::uint32_t st
   return {scan_for(m, P, p), no_index};
 }
 
-} // namespace
+}  // namespace
 
 WalkResult walk_visibly(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
                         WalkRandom& random) {
@@ -114,4 +114,4 @@ WalkResult walk_straight(const HalfEdgeMesh& m, std::span<const Point> points, P
                              : walk<false, true>(m, points.data(), p, start, steer);
 }
 
-} // namespace madd::detail
+}  // namespace madd::detail

@@ -22,7 +22,7 @@
 namespace madd::detail {
 
 struct WalkResult {
-  std::uint32_t triangle = no_index;    // holds p in its closure (a ghost: p outside the hull)
+  std::uint32_t triangle = no_index;  // holds p in its closure (a ghost: p outside the hull)
   // The half-edge the walk could not cross: a segment (straight walk), or
   // the outside of a mesh without ghosts.
   std::uint32_t blocked_by = no_index;
@@ -47,4 +47,4 @@ WalkResult walk_visibly(const HalfEdgeMesh& m, std::span<const Point> points, Po
 WalkResult walk_straight(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
                          Point from);
 
-} // namespace madd::detail
+}  // namespace madd::detail

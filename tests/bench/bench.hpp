@@ -22,4 +22,4 @@ inline double now_seconds() {
 // Peak resident set size of this process so far, in bytes (Linux, /proc).
 long long peak_rss_bytes();
 
-} // namespace madd::bench
+}  // namespace madd::bench

@@ -63,7 +63,8 @@ madd::Graph structured_dual(std::size_t triangles, std::uint64_t seed) {
   const auto rows = static_cast<std::uint32_t>(triangles / (2 * cols)) + 1;
   std::vector<madd::Point> pts;
   for (std::uint32_t r = 0; r <= rows; ++r)
-    for (std::uint32_t c = 0; c <= cols; ++c) pts.push_back({c + 0.3 * (unit(seed) - 0.5), r + 0.3 * (unit(seed) - 0.5)});
+    for (std::uint32_t c = 0; c <= cols; ++c)
+      pts.push_back({c + 0.3 * (unit(seed) - 0.5), r + 0.3 * (unit(seed) - 0.5)});
   std::vector<std::array<std::uint32_t, 3>> tris, nbrs;
   const auto id = [&](std::uint32_t r, std::uint32_t c) { return r * (cols + 1) + c; };
   const auto tri_id = [&](std::uint32_t r, std::uint32_t c, std::uint32_t k) { return 2 * (r * cols + c) + k; };
@@ -74,7 +75,8 @@ madd::Graph structured_dual(std::size_t triangles, std::uint64_t seed) {
       tris.push_back({id(r, c), id(r, c + 1), id(r + 1, c)});
       nbrs.push_back({tri_id(r, c, 1), c > 0 ? tri_id(r, c - 1, 1) : none, r > 0 ? tri_id(r - 1, c, 1) : none});
       tris.push_back({id(r, c + 1), id(r + 1, c + 1), id(r + 1, c)});
-      nbrs.push_back({r + 1 < rows ? tri_id(r + 1, c, 0) : none, tri_id(r, c, 0), c + 1 < cols ? tri_id(r, c + 1, 0) : none});
+      nbrs.push_back(
+          {r + 1 < rows ? tri_id(r + 1, c, 0) : none, tri_id(r, c, 0), c + 1 < cols ? tri_id(r, c + 1, 0) : none});
     }
   }
   return dual_graph(pts, tris, nbrs);
@@ -123,8 +125,8 @@ void run_one(const char* kind, std::size_t size, const madd::Graph& g, const std
   const bool ok = madd::verify_bisection(g, b).ok();
   const double total = b.weight[0] + b.weight[1];
   std::printf("| %-10s | %8zu | %8zu | %12.6g | %7.4f | %5s | %8.3f | %8.3f | %s |\n", kind, size, g.vertex_count(),
-              b.cut, std::max(b.weight[0], b.weight[1]) / (0.5 * total), b.connected[0] && b.connected[1] ? "yes" : "no",
-              t, cpu, ok ? "ok" : "FAILED");
+              b.cut, std::max(b.weight[0], b.weight[1]) / (0.5 * total),
+              b.connected[0] && b.connected[1] ? "yes" : "no", t, cpu, ok ? "ok" : "FAILED");
   std::fflush(stdout);
   if (!out_dir.empty()) write_metis(g, out_dir + "/" + kind + "-" + std::to_string(size) + ".graph");
 }
@@ -158,4 +160,4 @@ int run_bisect(int argc, char** argv) {
 
 const madd::bench::Registration registration("bisect", run_bisect);
 
-} // namespace
+}  // namespace

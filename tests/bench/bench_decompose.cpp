@@ -28,8 +28,7 @@ std::vector<unsigned> parse_list(const char* text) {
 }
 
 // One decompose() call, timed, with its figures on one line.
-void run_one(const std::string& file, const madd::Pslg& domain, unsigned n, unsigned threads, double phi,
-             bool verify) {
+void run_one(const std::string& file, const madd::Pslg& domain, unsigned n, unsigned threads, double phi, bool verify) {
   madd::DecomposeOptions options;
   options.subdomains = n;
   options.separator_angle_deg = phi;
@@ -90,4 +89,4 @@ int run(int argc, char** argv) {
 
 const madd::bench::Registration reg("decompose", run);
 
-} // namespace
+}  // namespace

@@ -13,7 +13,7 @@ std::map<std::string, BenchFn>& registry() {
   static std::map<std::string, BenchFn> benches;
   return benches;
 }
-} // namespace
+}  // namespace
 
 Registration::Registration(const char* name, BenchFn fn) { registry()[name] = fn; }
 
@@ -26,7 +26,7 @@ long long peak_rss_bytes() {
   return -1;
 }
 
-} // namespace madd::bench
+}  // namespace madd::bench
 
 int main(int argc, char** argv) {
   auto& benches = madd::bench::registry();

@@ -31,9 +31,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* const usage =
-    "usage: madd_bench mesh [-n N] [-q DEG] [-a AREA] [-j T,T..] [--runs R]\n"
-    "                       [--triangle PATH] [--csv FILE] FILE.poly...\n";
+const char* const usage = "usage: madd_bench mesh [-n N] [-q DEG] [-a AREA] [-j T,T..] [--runs R]\n"
+                          "                       [--triangle PATH] [--csv FILE] FILE.poly...\n";
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -246,8 +245,8 @@ int run_mesh(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", file.c_str(), peer.error.c_str());
         status = 1;
       } else {
-        std::printf("%-24s %3s %10lld %9.3f %11.0f  (Triangle %s)\n", name.c_str(), "T", peer.triangles,
-                    peer.seconds, static_cast<double>(peer.triangles) / peer.seconds, peer.switches.c_str());
+        std::printf("%-24s %3s %10lld %9.3f %11.0f  (Triangle %s)\n", name.c_str(), "T", peer.triangles, peer.seconds,
+                    static_cast<double>(peer.triangles) / peer.seconds, peer.switches.c_str());
         for (Row& r : rows) {
           if (r.file == name) {
             r.peer = peer;
@@ -271,8 +270,8 @@ int run_mesh(int argc, char** argv) {
       std::string phases;
       for (const auto& [p, s] : r.phases) phases += (phases.empty() ? "" : ";") + p + "=" + shortest(s);
       std::fprintf(out, "%s,%u,%g,%g,%u,%zu,%.6f,%.0f,%s,", r.file.c_str(), options.decomposition.subdomains,
-                   options.size.min_triangle_angle_deg, options.size.max_triangle_area, r.threads, r.triangles, r.seconds,
-                   static_cast<double>(r.triangles) / r.seconds, phases.c_str());
+                   options.size.min_triangle_angle_deg, options.size.max_triangle_area, r.threads, r.triangles,
+                   r.seconds, static_cast<double>(r.triangles) / r.seconds, phases.c_str());
       if (r.has_peer) std::fprintf(out, "%lld,%.6f\n", r.peer.triangles, r.peer.seconds);
       else std::fprintf(out, ",\n");
     }
@@ -283,4 +282,4 @@ int run_mesh(int argc, char** argv) {
 
 const madd::bench::Registration reg("mesh", run_mesh);
 
-} // namespace
+}  // namespace

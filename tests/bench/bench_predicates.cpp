@@ -71,4 +71,4 @@ int run_predicates(int argc, char** argv) {
 
 const madd::bench::Registration reg("predicates", run_predicates);
 
-} // namespace
+}  // namespace

@@ -120,4 +120,4 @@ int run(int argc, char** argv) {
 
 const madd::bench::Registration registration("scaling", run);
 
-} // namespace
+}  // namespace

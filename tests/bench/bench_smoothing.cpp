@@ -12,7 +12,8 @@
 namespace {
 
 struct Sums {
-  double shortest = 0, short_count = 0, short_sep = 0, on_existing = 0, ends = 0, median = 0, min_angle = 180, c3 = 0, ms = 0;
+  double shortest = 0, short_count = 0, short_sep = 0, on_existing = 0, ends = 0, median = 0, min_angle = 180, c3 = 0,
+         ms = 0;
 };
 
 Sums measure(const madd::Pslg& domain, std::uint32_t n, int iterations, int seeds) {
@@ -61,4 +62,4 @@ int run(int argc, char** argv) {
 
 const madd::bench::Registration reg("smoothing", run);
 
-} // namespace
+}  // namespace

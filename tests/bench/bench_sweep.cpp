@@ -42,9 +42,8 @@
 namespace {
 
 constexpr double balance_bound = 1.25;  // the target for max/mean area
-const char* const usage =
-    "usage: madd_bench sweep [--n N,N..] [--phi DEG,DEG..] [--threads J] [--repeat R]\n"
-    "                        [--time-limit S] [--csv FILE] FILE.poly...\n";
+const char* const usage = "usage: madd_bench sweep [--n N,N..] [--phi DEG,DEG..] [--threads J] [--repeat R]\n"
+                          "                        [--time-limit S] [--csv FILE] FILE.poly...\n";
 
 // The decades of the shortest-new-segment histogram: [1e-1, inf), [1e-2, 1e-1), ..., [0, 1e-4).
 constexpr int decades = 5;
@@ -234,16 +233,13 @@ std::string csv_field(std::string text) {
   return one_line(std::move(text));
 }
 
-const char* status_name(Status s) {
-  return s == Status::ok ? "ok" : s == Status::failed ? "failed" : "check_failed";
-}
+const char* status_name(Status s) { return s == Status::ok ? "ok" : s == Status::failed ? "failed" : "check_failed"; }
 
 void write_csv_header(std::FILE* csv) {
-  std::fprintf(csv,
-               "domain,n,phi,threads,repeat,status,message,deterministic,subdomains,points,segments,"
-               "separator_segments,max_area_over_mean,min_area_over_mean,sep_per_subdomain_norm,"
-               "mean_separator_per_subdomain,mean_area,separator_length_norm,max_separator_over_area_norm,"
-               "shortest_new_segment_norm,angle_min,angle_median,boundary_angle_min,time_median_s,time_min_s\n");
+  std::fprintf(csv, "domain,n,phi,threads,repeat,status,message,deterministic,subdomains,points,segments,"
+                    "separator_segments,max_area_over_mean,min_area_over_mean,sep_per_subdomain_norm,"
+                    "mean_separator_per_subdomain,mean_area,separator_length_norm,max_separator_over_area_norm,"
+                    "shortest_new_segment_norm,angle_min,angle_median,boundary_angle_min,time_median_s,time_min_s\n");
 }
 
 void write_csv_row(std::FILE* csv, const Run& run, unsigned threads, int repeat) {
@@ -433,10 +429,12 @@ int run(int argc, char** argv) {
   }
   std::printf("\nfailures (%d):\n", all.failed);
   for (const Run& r : runs) {
-    if (r.status == Status::failed) std::printf("  %-20s N %5u phi %g: %s\n", r.domain.c_str(), r.n, r.phi, r.error.c_str());
+    if (r.status == Status::failed)
+      std::printf("  %-20s N %5u phi %g: %s\n", r.domain.c_str(), r.n, r.phi, r.error.c_str());
   }
   if (all.check_failed > 0) {
-    std::printf("\nCHECK FAILURES (%d): decompositions verify_decomposition rejects, a bug in madd:\n", all.check_failed);
+    std::printf("\nCHECK FAILURES (%d): decompositions verify_decomposition rejects, a bug in madd:\n",
+                all.check_failed);
     for (const Run& r : runs) {
       if (r.status == Status::check_failed) {
         std::printf("  %-20s N %5u phi %g: %s\n", r.domain.c_str(), r.n, r.phi, one_line(r.problems.front()).c_str());
@@ -452,7 +450,8 @@ int run(int argc, char** argv) {
     std::printf("  %-20s N %5u phi %g: max/mean %.3f\n", r->domain.c_str(), r->n, r->phi, r->m.max_area_over_mean);
   }
   const int nondeterministic = static_cast<int>(select([](const Run& r) { return !r.deterministic; }).size());
-  if (nondeterministic > 0) std::printf("\nNOT DETERMINISTIC: %d run(s) gave different results on repeat\n", nondeterministic);
+  if (nondeterministic > 0)
+    std::printf("\nNOT DETERMINISTIC: %d run(s) gave different results on repeat\n", nondeterministic);
   std::printf("\ndecompose() time %.2f s in all (sum of the runs' medians); sweep wall time %.2f s\n", all.time_total,
               madd::bench::now_seconds() - sweep_start);
   if (unreadable > 0) std::printf("%d file(s) not read\n", unreadable);
@@ -461,4 +460,4 @@ int run(int argc, char** argv) {
 
 const madd::bench::Registration registration("sweep", run);
 
-} // namespace
+}  // namespace

@@ -218,4 +218,4 @@ int run_triangulate(int argc, char** argv) {
 
 const madd::bench::Registration reg("triangulate", run_triangulate);
 
-} // namespace
+}  // namespace

@@ -47,14 +47,14 @@ int run_validate(int argc, char** argv) {
   const double t4 = madd::bench::now_seconds(), c4 = cpu();
   std::printf("segments %zu  holes %zu  text %.1f MB\n", file.pslg.segments.size(), file.pslg.holes.size(),
               static_cast<double>(text.size()) / 1e6);
-  std::printf("wall: format %.3f s  parse %.3f s  validate %.3f s  domain_area %.3f s\n", t1 - t0, t2 - t1,
-              t3 - t2, t4 - t3);
-  std::printf("cpu:  format %.3f s  parse %.3f s  validate %.3f s  domain_area %.3f s\n", c1 - c0, c2 - c1,
-              c3 - c2, c4 - c3);
+  std::printf("wall: format %.3f s  parse %.3f s  validate %.3f s  domain_area %.3f s\n", t1 - t0, t2 - t1, t3 - t2,
+              t4 - t3);
+  std::printf("cpu:  format %.3f s  parse %.3f s  validate %.3f s  domain_area %.3f s\n", c1 - c0, c2 - c1, c3 - c2,
+              c4 - c3);
   std::printf("area %.6f  peak RSS %.1f MB\n", area, static_cast<double>(madd::bench::peak_rss_bytes()) / 1e6);
   return file.pslg == p ? 0 : 1;
 }
 
 const madd::bench::Registration reg("validate", run_validate);
 
-} // namespace
+}  // namespace

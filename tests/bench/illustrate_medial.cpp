@@ -88,7 +88,8 @@ int run_illustrate(int argc, char** argv) {
     if (e.acceptable) c.line(g.points[e.from], g.points[e.to], "#3366cc", 1.2);
   }
   for (const madd::MedialEdge& e : g.edges) {
-    if (cut.side[g.coarse[e.left]] != cut.side[g.coarse[e.right]]) c.line(g.points[e.from], g.points[e.to], "#dd2222", 3.0);
+    if (cut.side[g.coarse[e.left]] != cut.side[g.coarse[e.right]])
+      c.line(g.points[e.from], g.points[e.to], "#dd2222", 3.0);
   }
   for (std::uint32_t t = 0; t < tri.triangles.size(); ++t) {
     if (g.centre[t] != madd::no_index) c.dot(g.points[g.centre[t]], "#228833", 2.5);
@@ -113,4 +114,4 @@ int run_illustrate(int argc, char** argv) {
 
 const madd::bench::Registration registration("illustrate", run_illustrate);
 
-} // namespace
+}  // namespace

@@ -23,12 +23,14 @@ struct Bytes {
   std::vector<char> data;
   std::size_t at = 0;
 
-  template <typename T> void put(const T& v) {
+  template <typename T>
+  void put(const T& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     const char* p = reinterpret_cast<const char*>(&v);
     data.insert(data.end(), p, p + sizeof v);
   }
-  template <typename T> void put(const std::vector<T>& v) {
+  template <typename T>
+  void put(const std::vector<T>& v) {
     put(v.size());
     if constexpr (std::is_trivially_copyable_v<T>) {
       const char* p = reinterpret_cast<const char*>(v.data());
@@ -37,11 +39,13 @@ struct Bytes {
       for (const T& x : v) put(x);
     }
   }
-  template <typename T> void get(T& v) {
+  template <typename T>
+  void get(T& v) {
     std::memcpy(&v, data.data() + at, sizeof v);
     at += sizeof v;
   }
-  template <typename T> void get(std::vector<T>& v) {
+  template <typename T>
+  void get(std::vector<T>& v) {
     std::size_t n = 0;
     get(n);
     v.resize(n);
@@ -91,7 +95,7 @@ double until_everyone(double start) {
   return last;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
