@@ -167,9 +167,8 @@ int run_check(int argc, char** argv) {
   const CommandOptions& options = options_of("check");
   CommandLine line;
   if (const auto done =
-          read_command_line(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
+          read_one_operand(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
     return *done;
-  if (line.operands.size() != 1) return usage_error("check", "expected exactly one input file");
   CheckArgs args;
   args.path = line.operands.front();
   args.quiet = line.quiet;

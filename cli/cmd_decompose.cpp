@@ -239,8 +239,7 @@ int run_decompose(int argc, char** argv) {
   CommandLine& line = args.line;
   line.mesh.decomposition = DecomposeOptions{};  // a bare decomposition's defaults, not meshing's
   const std::string help = decompose_intro + options_help(decompose_options) + decompose_exit_codes;
-  if (const auto done = read_command_line(decompose_options, argc, argv, line, help)) return *done;
-  if (line.operands.size() != 1) return usage_error("decompose", "expected exactly one input file");
+  if (const auto done = read_one_operand(decompose_options, argc, argv, line, help)) return *done;
   args.input = line.operands.front();
   if (line.quiet && line.verbose) return usage_error("decompose", "--quiet and --verbose exclude each other");
   if (const std::string twice = output_named_twice(line); !twice.empty())

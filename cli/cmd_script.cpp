@@ -80,9 +80,9 @@ int run_script_command(int argc, char** argv) {
   const CommandOptions& options = options_of("script");
   CommandLine line;
   if (const auto done =
-          read_command_line(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes))
+          read_one_operand(options, argc, argv, line, script_intro + options_help(options) + script_exit_codes,
+                           "one script file (or '-' for stdin)"))
     return *done;
-  if (line.operands.size() != 1) return usage_error("script", "expected exactly one script file (or '-' for stdin)");
   ScriptArgs args{line.operands.front(), line.quiet};
   return run_guarded("script", script_body, &args);
 }

@@ -219,8 +219,7 @@ int run_triangulate(int argc, char** argv) {
   const CommandOptions& options = options_of("triangulate");
   CommandLine line;
   const std::string help = triangulate_intro + options_help(options) + triangulate_exit_codes;
-  if (const auto done = read_command_line(options, argc, argv, line, help)) return *done;
-  if (line.operands.size() != 1) return usage_error("triangulate", "expected exactly one input file");
+  if (const auto done = read_one_operand(options, argc, argv, line, help)) return *done;
   Args args;
   args.input = line.operands.front();
   args.prefix = line.output;

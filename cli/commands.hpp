@@ -61,6 +61,10 @@ struct CommandOptions;  // cli/option_table.hpp
 // or --help asked and `help` printed; nullopt when the command should run.
 std::optional<int> read_command_line(const CommandOptions& options, int argc, char** argv, CommandLine& line,
                                      const std::string& help);
+// The same for a command that takes one operand (its input): also a usage
+// problem when there is not exactly one, "expected exactly <expected>".
+std::optional<int> read_one_operand(const CommandOptions& options, int argc, char** argv, CommandLine& line,
+                                    const std::string& help, const char* expected = "one input file");
 
 const char* version_string() noexcept;
 

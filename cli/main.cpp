@@ -154,6 +154,13 @@ std::optional<int> read_command_line(const CommandOptions& options, int argc, ch
   return exit_ok;
 }
 
+std::optional<int> read_one_operand(const CommandOptions& options, int argc, char** argv, CommandLine& line,
+                                    const std::string& help, const char* expected) {
+  if (const auto done = read_command_line(options, argc, argv, line, help)) return done;
+  if (line.operands.size() != 1) return usage_error(options.command, std::string("expected exactly ") + expected);
+  return std::nullopt;
+}
+
 int run_guarded(const char* command, int (*body)(void*), void* context) {
   try {
     return body(context);

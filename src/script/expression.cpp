@@ -80,22 +80,6 @@ double apply_binary(ExprOp op, double a, double b) noexcept {
   }
 }
 
-bool is_binary(ExprOp op) noexcept {
-  switch (op) {
-  case ExprOp::add:
-  case ExprOp::sub:
-  case ExprOp::mul:
-  case ExprOp::div:
-  case ExprOp::pow:
-  case ExprOp::min:
-  case ExprOp::max:
-  case ExprOp::hypot:
-    return true;
-  default:
-    return false;
-  }
-}
-
 }  // namespace
 
 double Expression::operator()(double x, double y) const noexcept {

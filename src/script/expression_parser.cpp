@@ -290,26 +290,8 @@ private:
 std::size_t stack_needed(const std::vector<ExprInstruction>& program) {
   std::size_t size = 0, most = 1;
   for (const ExprInstruction& in : program) {
-    switch (in.op) {
-    case ExprOp::constant:
-    case ExprOp::x:
-    case ExprOp::y:
-    case ExprOp::r:
-      most = std::max(most, ++size);
-      break;
-    case ExprOp::add:
-    case ExprOp::sub:
-    case ExprOp::mul:
-    case ExprOp::div:
-    case ExprOp::pow:
-    case ExprOp::min:
-    case ExprOp::max:
-    case ExprOp::hypot:
-      --size;
-      break;
-    default:
-      break;
-    }
+    if (is_leaf(in.op)) most = std::max(most, ++size);
+    else if (is_binary(in.op)) --size;
   }
   return most;
 }

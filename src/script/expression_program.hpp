@@ -33,6 +33,28 @@ enum class ExprOp : std::uint8_t {
   hypot,
 };
 
+// What an instruction does to the stack: a leaf pushes a value, a binary
+// operator takes two and leaves one, every other operator replaces the top.
+// The evaluator and the parser's stack bound both read these.
+inline bool is_leaf(ExprOp op) noexcept {
+  return op == ExprOp::constant || op == ExprOp::x || op == ExprOp::y || op == ExprOp::r;
+}
+inline bool is_binary(ExprOp op) noexcept {
+  switch (op) {
+  case ExprOp::add:
+  case ExprOp::sub:
+  case ExprOp::mul:
+  case ExprOp::div:
+  case ExprOp::pow:
+  case ExprOp::min:
+  case ExprOp::max:
+  case ExprOp::hypot:
+    return true;
+  default:
+    return false;
+  }
+}
+
 struct ExprInstruction {
   ExprOp op = ExprOp::constant;
   double value = 0.0;  // the number, for ExprOp::constant only
