@@ -14,6 +14,7 @@
 #include "triangulation/cdt.hpp"
 #include "triangulation/half_edge_mesh.hpp"
 #include "triangulation/walk.hpp"
+#include "random_points.hpp"
 
 namespace {
 
@@ -22,13 +23,7 @@ using madd::Point;
 using madd::detail::Cavity;
 using madd::detail::HalfEdgeMesh;
 
-std::vector<Point> random_points(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point> pts(n);
-  for (auto& p : pts) p = {u(rng), u(rng)};
-  return pts;
-}
+using madd::test::random_points;
 
 bool is_real(const HalfEdgeMesh& m, std::uint32_t t) { return m.alive(t) && (m.ghost == no_index || !m.is_ghost(t)); }
 

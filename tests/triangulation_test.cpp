@@ -24,18 +24,13 @@
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "triangulation/exact_area.hpp"
+#include "random_points.hpp"
 
 namespace {
 
 using madd::Point;
 
-std::vector<Point> random_points(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point> pts(n);
-  for (auto& p : pts) p = {u(rng), u(rng)};
-  return pts;
-}
+using madd::test::random_points;
 
 using madd::test::hull_point_count;
 
