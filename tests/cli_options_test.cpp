@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "cli/option_table.hpp"
 #include "madd/decomposition.hpp"
@@ -125,6 +126,30 @@ TEST_CASE("madd mesh names the flag typed: --min-angle is the separators' angle,
           flag + " needs an area > 0, got '0'");
   }
   CHECK_FALSE(fs::exists(box.path("m.ele")));
+}
+
+TEST_CASE("a command of one input refuses none or two, naming what it expected, and writes nothing") {
+  const CliSandbox box;
+  const std::pair<std::string, std::string> commands[] = {{"check", "one input file"},
+                                                          {"decompose", "one input file"},
+                                                          {"triangulate", "one input file"},
+                                                          {"mesh", "one input file"},
+                                                          {"script", "one script file (or '-' for stdin)"}};
+  for (const auto& named : commands) {
+    const std::string& command = named.first;
+    const std::string& expected = named.second;
+    for (const std::string& operands : {std::string(), key_poly + " " + pipe_poly}) {
+      CAPTURE(command);
+      CAPTURE(operands);
+      const CliRun r = box.run(command + " " + operands);
+      CHECK(r.status == 2);
+      CHECK_MESSAGE(problem_of(r.output, command) == "expected exactly " + expected, r.output);
+    }
+  }
+  CHECK(box.run("check " + key_poly).status == 0);  // one is right
+  std::size_t entries = 0;                          // nothing written but the runs' log
+  for (const auto& e : fs::directory_iterator(box.path(""))) entries += e.path().filename() != "log";
+  CHECK(entries == 0);
 }
 
 TEST_CASE("-j has one limit, the library's max_threads, said alike by decompose and mesh") {
