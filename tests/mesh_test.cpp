@@ -207,6 +207,29 @@ TEST_CASE("mesh: a time or memory limit reached while refining throws LimitError
   CHECK_THROWS_AS(madd::mesh_decomposition(d, domain, o), madd::LimitError);
 }
 
+TEST_CASE("mesh: a triangle too large whose fix a separator stops gets that separator split in the next round") {
+  // A graded field on the archipelago under which, before the rounds took
+  // size as well as angle, subdomain 9 kept a triangle above its bound next
+  // to a separator (madd mesh: self-check failed, exit 70).
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/archipelago.poly");
+  madd::MeshOptions o = options_for(16, 30, 0.0);
+  const double base = madd::domain_area(domain) / 4000;
+  o.size.triangle_area_function = [base](double x, double y) {
+    return base *
+           (1 + (x + 11.747922293593088) / (106.3465320534764 + 11.747922293593088 + 1e-9) + 0.5 * std::sin(3 * y));
+  };
+  const Mesh one = madd::mesh(domain, o);  // verify_mesh inside: throws InternalError on a triangle too large
+  check_mesh(one, domain, 0);
+  for (const auto& t : one.triangles) {
+    const Point a = one.points[t[0]], b = one.points[t[1]], c = one.points[t[2]];
+    const Point g = madd::triangle_centroid(a, b, c);
+    const double bound = o.size.triangle_area_function(g.x, g.y);
+    if (bound > 0) REQUIRE(madd::triangle_area(a, b, c) <= bound);
+  }
+  o.decomposition.threads = 2;
+  CHECK(madd::mesh(domain, o) == one);  // which separators are split depends on the meshes only
+}
+
 TEST_CASE("mesh: under a size function, balance by work evens the triangle counts that balance by area leaves uneven") {
   // Triangles 26 times smaller at the left edge of the pipe than at the right.
   const madd::Pslg domain = pipe();

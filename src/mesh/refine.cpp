@@ -487,8 +487,14 @@ MeshShortfall Refiner::shortfall(std::vector<std::uint32_t>& blocking) const {
     if (!m_.alive(t)) continue;
     // Counted with verify_mesh's own measure, so the two always agree.
     if (smallest_angle_deg(m_.point(m_.corner(t, 0)), m_.point(m_.corner(t, 1)), m_.point(m_.corner(t, 2))) >=
-        settings_.min_triangle_angle_deg - mesh_angle_slack_deg)
+        settings_.min_triangle_angle_deg - mesh_angle_slack_deg) {
+      // Too large but for a separator in the way: no shortfall (verify_mesh
+      // allows none of size), but the separator is split for the next round
+      // (src/mesh/rounds.hpp), as for an angle.
+      if (t < reason_.size() && reason_[t] == Reason::separator && blocker_[t] != no_index && is_bad(t))
+        blocking.push_back(blocker_[t]);
       continue;
+    }
     switch (t < reason_.size() ? reason_[t] : Reason::none) {
     case Reason::input_angle:
       ++f.input_angle;
