@@ -37,9 +37,30 @@ struct MeshSizeOptions {
   // area; the bound at a point is the value of the nearest sample (ties: the
   // lowest index).
   std::vector<ValuedPoint> triangle_area_samples;
+  // How a point between the samples reads them: linearly over the samples'
+  // Delaunay triangulation (the value of the nearest sample outside its hull),
+  // or the nearest sample's value (ties: the lowest index).
+  enum class SampleInterpolation { linear, nearest };
+  SampleInterpolation sample_interpolation = SampleInterpolation::linear;
 
+  // The size field (docs/mesh.md, "Size field"), in edge lengths h(x): a
+  // triangle's area bound is that of the equilateral triangle of side h,
+  // sqrt(3)/4 h^2, and the field is the smallest of the terms that are set
+  // (each 0 = off), then limited by size_gradation:
+  double min_edge_length = 0.0;  // --hmin: the distance term's h at the coast, and a floor of the feature-size term
+  double max_edge_length = 0.0;  // --hmax: h <= hmax everywhere
+  double distance_rate = 0.0;    // --distance-rate G: h <= hmin + G d, d the distance to the coast
+  double cells_across = 0.0;     // --cells-across R: h <= 2 width / R, width the local half-width of the water
+  double size_gradation = 0.0;   // --gradation G: the field satisfies h(x) <= h(y) + G |x - y|
+  // The boundary markers that count as coast for the distance and the
+  // feature size (empty: every boundary segment is coast).
+  std::vector<int> coast_markers;
+
+  // A field term that needs the domain: distance, feature size, gradation.
+  bool has_field_terms() const noexcept { return distance_rate > 0.0 || cells_across > 0.0 || size_gradation > 0.0; }
   bool has_size_bound() const noexcept {
-    return max_triangle_area > 0.0 || triangle_area_function || !triangle_area_samples.empty();
+    return max_triangle_area > 0.0 || triangle_area_function || !triangle_area_samples.empty() ||
+           max_edge_length > 0.0 || has_field_terms();
   }
 };
 

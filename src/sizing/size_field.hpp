@@ -1,0 +1,51 @@
+#pragma once
+// The size field of a domain (docs/mesh.md, "Size field"): edge lengths h(x)
+// from the distance to the coast, the local width of the water (feature
+// size), the user's bounds, limited to a gradation G. Built once per run on a
+// background triangulation of the domain; the mesher, the work estimate and
+// verify_mesh read it through quality/area_bound.hpp, so they cannot disagree.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "madd/geometry.hpp"
+#include "madd/mesh.hpp"
+#include "madd/pslg.hpp"
+
+namespace madd::detail {
+
+// The triangulation the field is piecewise linear on: the constrained
+// Delaunay triangulation of the domain's vertices and Steiner points,
+// covering the convex hull of the domain (holes and the outside included, so
+// that a walk can always reach a point); `inside` marks the domain's
+// triangles, over which the work estimate integrates.
+struct SizeBackground {
+  std::vector<Point> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;   // counterclockwise
+  std::vector<std::array<std::uint32_t, 3>> neighbours;  // across edge i (opposite corner i); no_index on the hull
+  std::vector<std::uint8_t> inside;                      // per triangle: 1 in the domain
+  std::vector<double> edge;                              // per point: h there (+infinity: no bound)
+};
+
+class SizeField {
+public:
+  // `domain` is a valid domain (validate()); throws OptionError on bad field
+  // options. Builds nothing when size.has_field_terms() is false.
+  SizeField(const Pslg& domain, const MeshSizeOptions& size);
+  // No field term was asked for: edge_at is +infinity everywhere.
+  bool empty() const noexcept { return background_.triangles.empty(); }
+  // h at p: linear over the background triangle holding p (+infinity when empty()).
+  double edge_at(Point p) const;
+  const SizeBackground& background() const noexcept { return background_; }
+
+private:
+  SizeBackground background_;
+  // (point location: a grid of start triangles for a walk)
+};
+
+// The area bound of an edge length: the equilateral triangle's, sqrt(3)/4 h^2.
+inline double area_of_edge(double h) noexcept { return 0.4330127018922193 * h * h; }
+// The edge length whose equilateral triangle has area a.
+double edge_of_area(double a) noexcept;
+
+}  // namespace madd::detail
