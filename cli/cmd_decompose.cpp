@@ -190,7 +190,7 @@ int decompose_body(void* context) {
   // For external meshers: every segment split once to the size bound and the
   // local feature size, so that meshers keeping boundary segments join up.
   if (line.mesh.size.has_size_bound()) {
-    write_outputs(args, discretise(d, line.mesh.size), m);
+    write_outputs(args, discretise(d, domain, line.mesh.size), m);
   } else {
     write_outputs(args, d, m);
   }

@@ -179,7 +179,10 @@ struct MeshRun {
 void check_options(const MeshOptions& options);
 
 // The largest allowed area at p under `size` (+infinity when unbounded).
+// The size field's terms (distance, feature size, gradation) need the
+// domain: without it they throw OptionError.
 double area_bound_at(const MeshSizeOptions& size, Point p);
+double area_bound_at(const MeshSizeOptions& size, const Pslg& domain, Point p);
 
 // Decomposes the domain, discretises it and meshes every subdomain on
 // options.decomposition.threads threads. Deterministic: byte-identical for
@@ -199,8 +202,11 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
 // split points computed once from each segment's endpoints in index order,
 // so both subdomains of a separator get the same points. Each subdomain of
 // the result, meshed by any mesher that keeps its boundary segments
-// (`triangle -pq30Y`), joins its neighbours conformingly.
+// (`triangle -pq30Y`), joins its neighbours conformingly. The size field's
+// terms need the decomposed domain (the second form; the first throws
+// OptionError when they are set).
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size);
+Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size);
 
 // Checks, independently of how the mesh was made: every triangle CCW and
 // non-degenerate, adjacency symmetric and matching shared edges; the

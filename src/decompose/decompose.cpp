@@ -12,6 +12,7 @@
 #include "decompose/grading.hpp"
 #include "kernel/resource_limits.hpp"
 #include "split/split.hpp"
+#include "decompose/decompose_valid.hpp"
 #include "decompose/rebalance.hpp"
 #include "decompose/scheduler.hpp"
 #include "decompose/stuck_faces.hpp"
@@ -109,10 +110,15 @@ Decomposition decompose(const Pslg& domain, const DecomposeOptions& options) {
 
 DecomposeRun decompose_with_report(const Pslg& domain, const DecomposeOptions& options) {
   check_options(options, domain);
+  validate(domain);
+  return detail::decompose_valid(domain, options);
+}
+
+DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions& options) {
+  check_options(options, domain);
   const detail::ResourceGuard guard({.time_limit_seconds = options.time_limit_seconds,
                                      .max_memory_bytes = options.max_memory_bytes,
                                      .subdomains = options.subdomains});
-  validate(domain);
   Subdivision sub = Subdivision::from_domain(domain);
   detail::GradingState grading(options, domain);
   const bool area_driven = grading.mode().area_driven;

@@ -122,12 +122,15 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
 }  // namespace detail
 
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size) {
-  return detail::discretise(decomposition, size, true);
+  return detail::discretise(decomposition, detail::AreaBound(size), true);
 }
 
-Decomposition detail::discretise(const Decomposition& decomposition, const MeshSizeOptions& size,
+Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size) {
+  return detail::discretise(decomposition, detail::AreaBound(size, &domain), true);
+}
+
+Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field,
                                  bool boundary_by_features) {
-  const detail::AreaBound field(size);
   // The features every piece resolves: every segment (interior ones too, so
   // that a narrow gap between an interior segment and the shore is resolved)
   // and every isolated input vertex, as a segment of length 0 (the distance

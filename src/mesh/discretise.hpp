@@ -5,6 +5,7 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "quality/area_bound.hpp"
 
 namespace madd::detail {
 
@@ -17,7 +18,7 @@ namespace madd::detail {
 // to the local feature size everywhere, which makes coarse meshes several
 // times finer than they need be near the boundary. Separators always follow
 // the size bound and every feature.
-Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size, bool boundary_by_features);
+Decomposition discretise(const Decomposition& decomposition, const AreaBound& size, bool boundary_by_features);
 
 // Rounds of separator splitting after meshing, at most (docs/mesh.md, "Decoupling").
 inline constexpr int max_separator_rounds = 10;

@@ -16,11 +16,13 @@
 #include "kernel/stopwatch.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
+#include "decompose/decompose_valid.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/refine.hpp"
 #include "mesh/rounds.hpp"
 #include "quality/area_bound.hpp"
+#include "quality/verify_mesh_bounded.hpp"
 #include "mesh/subdomain_regions.hpp"
 #include "mesh/work.hpp"
 
@@ -153,16 +155,17 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 
 }  // namespace detail
 
-MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options) {
-  check_options(options);
+namespace detail {
+
+MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
+                                   const AreaBound& field) {
   MeshRun run;
   MeshReport& report = run.report;
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  Decomposition d = detail::discretise(decomposition, options.size, false);
+  Decomposition d = detail::discretise(decomposition, field, false);
   report.phases.push_back({"discretise", clock.lap()});
-  const detail::AreaBound field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
@@ -172,26 +175,49 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
   report.phases.push_back({"refine", clock.lap()});
   run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
-  const Verification v = options.verify ? verify_mesh(run.mesh, domain, options.size) : Verification{};
+  const Verification v = options.verify ? detail::verify_mesh(run.mesh, domain, field) : Verification{};
   report.phases.push_back({"verify", clock.lap()});
   if (!v.ok()) detail::throw_failed_check(v);
   return run;
 }
 
+DecomposeRun decompose_bounded(const Pslg& domain, const MeshOptions& options, const AreaBound& field) {
+  DecomposeOptions dopt = options.decomposition;
+  if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
+  return detail::decompose_valid(domain, dopt);
+}
+
+}  // namespace detail
+
+MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options) {
+  check_options(options);
+  detail::Stopwatch clock;
+  const detail::AreaBound field(options.size, &domain);
+  const double field_seconds = clock.lap();
+  MeshRun run = detail::mesh_decomposition_bounded(decomposition, domain, options, field);
+  if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
+  return run;
+}
+
 DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) {
   check_options(options);
-  DecomposeOptions dopt = options.decomposition;
-  const detail::AreaBound field(options.size);
-  if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
-  return decompose_with_report(domain, dopt);
+  validate(domain);
+  const detail::AreaBound field(options.size, &domain);
+  return detail::decompose_bounded(domain, options, field);
 }
 
 MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
+  check_options(options);
   detail::Stopwatch clock;
-  const Decomposition d = decompose_for_mesh(domain, options).decomposition;
+  // The domain is validated once, before the size field is built on it.
+  validate(domain);
+  const detail::AreaBound field(options.size, &domain);
+  const double field_seconds = clock.lap();
+  const Decomposition d = detail::decompose_bounded(domain, options, field).decomposition;
   const double decompose_seconds = clock.lap();
-  MeshRun run = mesh_decomposition(d, domain, options);
+  MeshRun run = detail::mesh_decomposition_bounded(d, domain, options, field);
   run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
+  if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
   return run;
 }
 

@@ -15,6 +15,7 @@
 #include "kernel/stopwatch.hpp"
 #include "madd/mesh_share.hpp"
 #include "mesh/discretise.hpp"
+#include "quality/verify_mesh_bounded.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/rounds.hpp"
 #include "quality/area_bound.hpp"
@@ -111,11 +112,11 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const st
 }
 
 void verify_subdomain(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions,
-                      const detail::SubdomainMesh& piece, const MeshOptions& options) {
+                      const detail::SubdomainMesh& piece, const MeshOptions& options, const detail::AreaBound& field) {
   const SubdomainAlone alone = subdomain_alone(d, k, regions);
   std::vector<detail::SubdomainMesh> one{piece};
   const Mesh m = detail::merge(alone.decomposition, one, options.size.min_triangle_angle_deg);
-  const Verification v = verify_mesh(m, alone.domain, options.size);
+  const Verification v = detail::verify_mesh(m, alone.domain, field);
   if (v.ok()) return;
   Verification named;
   for (const std::string& p : v.problems) named.problems.push_back("subdomain " + std::to_string(k) + ": " + p);
@@ -201,7 +202,8 @@ std::vector<std::uint32_t> decomposition_point_owner(const Decomposition& d, con
 
 MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                        std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange) {
-  (void)domain;  // each subdomain is checked against its own boundary (the union is mesh()'s, checked there)
+  // Each subdomain is checked against its own boundary (the union is
+  // mesh()'s, checked there); the domain is what the size field is built on.
   check_options(options);
   if (shares == 0 || share >= shares) throw OptionError("share", "must be < shares (and shares >= 1)");
   MeshPartRun run;
@@ -211,9 +213,12 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   const auto n = static_cast<std::uint32_t>(decomposition.subdomains.size());
   const detail::ResourceGuard guard(
       {options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
-  Decomposition d = detail::discretise(decomposition, options.size, false);
+  // Every share builds the same field from the same domain (deterministic):
+  // no exchange needed.
+  const detail::AreaBound field(options.size, &domain);
+  if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
+  Decomposition d = detail::discretise(decomposition, field, false);
   report.phases.push_back({"discretise", clock.lap()});
-  const detail::AreaBound field(options.size);
   report.expected_triangles = detail::expected_triangles(d, field);
 
   part.share = share;
@@ -232,7 +237,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   report.phases.push_back({"refine", clock.lap()});
   if (options.verify) {
     for_each_on_threads(part.subdomains, options.decomposition.threads,
-                        [&](std::uint32_t k) { verify_subdomain(d, k, regions[k], pieces[k], options); });
+                        [&](std::uint32_t k) { verify_subdomain(d, k, regions[k], pieces[k], options, field); });
   }
   report.phases.push_back({"verify", clock.lap()});
 

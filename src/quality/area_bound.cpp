@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "madd/error.hpp"
+
 namespace madd {
 
 namespace detail {
@@ -64,27 +66,75 @@ std::uint32_t NearestSample::nearest(Point p) const noexcept {
   return best_index;
 }
 
-AreaBound::AreaBound(const MeshSizeOptions& size) : size_(size), background_(size.triangle_area_samples) {}
+namespace {
+
+const Pslg& domain_for_field(const MeshSizeOptions& size, const Pslg* domain) {
+  static const Pslg none;
+  if (domain) return *domain;
+  if (size.has_field_terms())
+    throw OptionError("distance_rate",
+                      "the distance, feature-size and gradation terms of the size field need the domain they grade");
+  return none;
+}
+
+double constant_bound(const MeshSizeOptions& size) {
+  double bound = size.max_triangle_area > 0.0 ? size.max_triangle_area : infinity;
+  if (size.max_edge_length > 0.0) bound = std::min(bound, area_of_edge(size.max_edge_length));
+  return bound;
+}
+
+using Interpolation = MeshSizeOptions::SampleInterpolation;
+
+std::span<const ValuedPoint> samples_read(const MeshSizeOptions& size, Interpolation how) {
+  if (size.sample_interpolation != how) return {};
+  return size.triangle_area_samples;
+}
+
+}  // namespace
+
+AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain)
+    : size_(size),
+      constant_(constant_bound(size)),
+      nearest_(samples_read(size, Interpolation::nearest)),
+      linear_(samples_read(size, Interpolation::linear)),
+      field_(domain_for_field(size, domain), size) {}
+
+bool AreaBound::uniform() const noexcept {
+  return !size_.triangle_area_function && size_.triangle_area_samples.empty() && field_.empty();
+}
 
 double AreaBound::area_at(Point p) const {
-  double bound = size_.max_triangle_area > 0.0 ? size_.max_triangle_area : infinity;
+  double bound = constant_;
   if (size_.triangle_area_function) {
     const double v = size_.triangle_area_function(p.x, p.y);
     if (v > 0.0) bound = std::min(bound, v);  // false for NaN too: ignored
   }
-  if (size_.triangle_area_samples.empty()) return bound;
-  // A sample's value is read like the function's: <= 0 or NaN is no bound.
-  const std::uint32_t nearest = background_.nearest(p);
-  if (nearest != no_index && size_.triangle_area_samples[nearest].value > 0.0)
-    bound = std::min(bound, size_.triangle_area_samples[nearest].value);
+  if (!size_.triangle_area_samples.empty()) {
+    // A sample's value is read like the function's: <= 0 or NaN is no bound.
+    if (size_.sample_interpolation == Interpolation::nearest) {
+      const std::uint32_t nearest = nearest_.nearest(p);
+      if (nearest != no_index && size_.triangle_area_samples[nearest].value > 0.0)
+        bound = std::min(bound, size_.triangle_area_samples[nearest].value);
+    } else {
+      const double v = linear_.value_at(p);
+      if (v > 0.0) bound = std::min(bound, v);
+    }
+  }
+  if (!field_.empty()) {
+    const double h = field_.edge_at(p);
+    if (h > 0.0) bound = std::min(bound, area_of_edge(h));
+  }
   return bound;
 }
 
 }  // namespace detail
 
-// The same code as the mesher's and verify_mesh's bound (a grid built for
-// one query: O(samples), like a scan). For many queries with the same
-// options the library builds a detail::AreaBound once.
+// The same code as the mesher's and verify_mesh's bound (built for one
+// query: O(samples), like a scan; with field terms, the whole field). For
+// many queries with the same options the library builds a detail::AreaBound once.
 double area_bound_at(const MeshSizeOptions& size, Point p) { return detail::AreaBound(size).area_at(p); }
+double area_bound_at(const MeshSizeOptions& size, const Pslg& domain, Point p) {
+  return detail::AreaBound(size, &domain).area_at(p);
+}
 
 }  // namespace madd

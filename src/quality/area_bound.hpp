@@ -10,6 +10,9 @@
 #include "kernel/uniform_grid.hpp"
 #include "madd/geometry.hpp"
 #include "madd/mesh.hpp"
+#include "madd/pslg.hpp"
+#include "sizing/sample_interpolant.hpp"
+#include "sizing/size_field.hpp"
 
 namespace madd::detail {
 
@@ -31,19 +34,32 @@ private:
 };
 
 // The largest allowed triangle area at a point for one MeshSizeOptions: the
-// smallest of max_area, the area function there and the value of the
-// nearest background sample, each when set and > 0 (+infinity when none
-// is). Keeps a reference to `size`, which must outlive it.
+// smallest of max_triangle_area, the area function there, the samples' value
+// there (linear or nearest, MeshSizeOptions::sample_interpolation), the
+// equilateral triangle of side max_edge_length, and the size field's
+// (sizing/size_field.hpp: distance, feature size, gradation), each when set
+// and > 0 (+infinity when none is). Built once per run and shared by the
+// decomposition's work estimate, the decoupling, refinement and verify_mesh.
+// Keeps a reference to `size`, which must outlive it.
 class AreaBound {
 public:
-  explicit AreaBound(const MeshSizeOptions& size);
+  // The field terms need the domain (a valid one): without it they throw
+  // OptionError.
+  explicit AreaBound(const MeshSizeOptions& size, const Pslg* domain = nullptr);
   double area_at(Point p) const;
   bool bounded() const noexcept { return size_.has_size_bound(); }
+  // No bound varies over the domain: area_at is one value everywhere.
+  bool uniform() const noexcept;
   const MeshSizeOptions& options() const noexcept { return size_; }
+  // The size field (empty when no field term is set).
+  const SizeField& field() const noexcept { return field_; }
 
 private:
   const MeshSizeOptions& size_;
-  NearestSample background_;
+  double constant_;  // the smallest of max_triangle_area and hmax's area (+infinity: neither)
+  NearestSample nearest_;
+  SampleInterpolant linear_;
+  SizeField field_;
 };
 
 }  // namespace madd::detail

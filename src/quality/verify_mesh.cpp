@@ -10,11 +10,14 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "kernel/number_format.hpp"
 #include "madd/mesh.hpp"
 #include "madd/predicates.hpp"
+#include "quality/area_bound.hpp"
+#include "quality/verify_mesh_bounded.hpp"
 #include "quality/verify_mesh_detail.hpp"
 #include "triangulation/exact_area.hpp"
 
@@ -184,6 +187,22 @@ void check_cover(const detail::ExactSum& triangles, const Pslg& domain, double s
 }  // namespace
 
 Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size) {
+  // Building the size field may refuse its options (coast markers the
+  // domain lacks...): a problem to report, like any other.
+  std::optional<detail::AreaBound> bound;
+  try {
+    bound.emplace(size, &domain);
+  } catch (const std::exception& e) {
+    Verification result;
+    ProblemLog log(result);
+    log.add(std::string("the size bound could not be built: ") + e.what());
+    log.finish();
+    return result;
+  }
+  return detail::verify_mesh(mesh, domain, *bound);
+}
+
+Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const AreaBound& bound) {
   Verification result;
   ProblemLog log(result);
   // Nothing here may escape: the contract is a report, never an exception
@@ -199,7 +218,7 @@ Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOpt
       detail::check_interior_points(mesh, log);
       const std::vector<std::uint32_t> region = detail::mesh_regions(mesh);
       if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log);
-      detail::check_mesh_size(mesh, size, region, log);
+      detail::check_mesh_size(mesh, bound, region, log);
       detail::check_mesh_angles(mesh, log);
     }
   } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 
 #include "kernel/exact_sum.hpp"
 #include "madd/mesh.hpp"
+#include "quality/area_bound.hpp"
 #include "quality/verify_decomposition_detail.hpp"
 
 namespace madd::detail {
@@ -55,7 +56,7 @@ void check_region_attributes(const Mesh& mesh, const std::vector<std::uint32_t>&
 
 // Every triangle within the size bound at its centroid and within its
 // region's max_area (by `label`, mesh_regions; when > 0).
-void check_mesh_size(const Mesh& mesh, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
+void check_mesh_size(const Mesh& mesh, const AreaBound& bound, const std::vector<std::uint32_t>& label,
                      ProblemLog& log);
 
 // The triangles below the angle bound are exactly as many as the shortfall counts.

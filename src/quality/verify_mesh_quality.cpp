@@ -28,14 +28,13 @@ namespace madd::detail {
 //   Both ask the one AreaBound (quality/area_bound.hpp) at triangle_centroid;
 //   a bound that differs by more than this is another bound, not rounding.
 // A region's max_area (> 0) is one more bound on its triangles, the smallest winning.
-void check_mesh_size(const Mesh& m, const MeshSizeOptions& size, const std::vector<std::uint32_t>& label,
+void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector<std::uint32_t>& label,
                      ProblemLog& log) {
   const std::vector<Region>& regions = m.decomposition.regions;
   bool regional = false;
   for (const Region& r : regions) regional |= r.max_area > 0;
-  if (!size.has_size_bound() && !regional) return;
+  if (!bound_at.bounded() && !regional) return;
   constexpr double u = 0x1p-53;
-  const AreaBound bound_at(size);
   const auto& P = m.points;
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
