@@ -2,12 +2,13 @@
 // "The domain"): on every side of the outer ring, on a hole's ring, on an
 // interior segment between two regions, on a dangling segment, several on
 // one segment (pieces with such a vertex at both ends), next to a segment's
-// end, beside a segment ending inside the same segment, and beside a truly
-// isolated vertex. Each domain is validated and summarised as `madd check`
+// end, at both ends of a separator, beside a segment ending inside the same
+// segment, and beside a truly isolated vertex. Each domain is validated and summarised as `madd check`
 // does, decomposed at several N and Phi0, written as one .poly per subdomain
 // (--split) and meshed; the vertex must stay on its segment throughout.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -86,6 +87,11 @@ std::vector<Case> cases() {
   add_point(touch, {1.25, 0.5});
   out.push_back({"beside a segment ending inside the same segment", touch, 8});
 
+  Pslg both_ends = rectangle(2, 1);  // where the separator halving it ends, on both sides
+  add_point(both_ends, {1, 0});
+  add_point(both_ends, {1, 1});
+  out.push_back({"at both ends of the separator that halves the domain", both_ends, 2});
+
   Pslg isolated = rectangle(4, 2);
   add_point(isolated, {2, 0});
   add_point(isolated, {2.2, 1.1});
@@ -128,6 +134,18 @@ TEST_CASE("a vertex inside a segment it does not end splits it: check, decompose
       }
     for (const std::uint32_t n : {1u, 2u, 4u}) madd::test::meshed_on_segments(c.domain, n);
   }
+}
+
+TEST_CASE("a separator may end at a vertex on a segment: the halving one of a 2 x 1 rectangle ends at two") {
+  Pslg p = rectangle(2, 1);
+  const std::uint32_t bottom = add_point(p, {1, 0}), top = add_point(p, {1, 1});
+  const madd::Decomposition d = madd::test::checked_on_segments(p, 2, 60.0);
+  bool joined = false;
+  for (std::uint32_t g = 0; g < d.segments.size(); ++g) {
+    const madd::Segment& s = d.segments[g];
+    joined = joined || (d.is_separator(g) && std::min(s.a, s.b) == bottom && std::max(s.a, s.b) == top);
+  }
+  CHECK(joined);  // else this case no longer exercises a separator ending there
 }
 
 }  // TEST_SUITE("vertex on segment")
