@@ -175,17 +175,20 @@ TEST_CASE("-j has one limit, the library's max_threads, said alike by decompose 
 TEST_CASE("every option decompose and mesh share is taken by both commands") {
   const CliSandbox box;
   // A value on key.poly for each shared option (a new shared option needs one here).
-  // (the size field's options with what they need: --distance-rate a --hmin, --gradation a bound to grade).
-  const std::map<std::string, std::string> value = {
-      {"subdomains", " 3"},    {"min-angle", " 50"},  {"threads", " 2"},
-      {"seed", " 7"},          {"rebalance", " 1.5"}, {"time-limit", " 60"},
-      {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
-      {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
-      {"quiet", ""},           {"help", ""},          {"sizes", " s.node"},
-      {"sizes-nearest", " --sizes s.node"},           {"hmin", " 0.1"},
-      {"hmax", " 0.5"},        {"distance-rate", " 0.3 --hmin 0.1"},
-      {"cells-across", " 3"},  {"gradation", " 0.3 --hmax 0.5"},
-      {"coast-markers", " 1"}};
+  std::map<std::string, std::string> value = {{"subdomains", " 3"},    {"min-angle", " 50"},  {"threads", " 2"},
+                                              {"seed", " 7"},          {"rebalance", " 1.5"}, {"time-limit", " 60"},
+                                              {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
+                                              {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
+                                              {"quiet", ""},           {"help", ""}};
+  // The size field's, with what they need: --distance-rate a --hmin, --gradation a bound to grade.
+  value.insert({{"sizes", " s.node"},
+                {"sizes-nearest", " --sizes s.node"},
+                {"hmin", " 0.1"},
+                {"hmax", " 0.5"},
+                {"distance-rate", " 0.3 --hmin 0.1"},
+                {"cells-across", " 3"},
+                {"gradation", " 0.3 --hmax 0.5"},
+                {"coast-markers", " 1"}});
   std::ofstream(box.path("s.node")) << "4 2 1 0\n1 -2 -2 0.05\n2 8 -2 0.05\n3 8 2 0.05\n4 -2 2 0.02\n";
   const madd::cli::CommandOptions& mesh = madd::cli::options_of("mesh");
   int shared = 0;

@@ -41,9 +41,8 @@ std::string fingerprint(const CommandLine& l) {
       << s.max_triangle_area << ' ' << bool(s.triangle_area_function) << ' ' << l.sizes_file << ' '
       << static_cast<int>(s.sample_interpolation) << ' ' << s.min_edge_length << ' ' << s.max_edge_length << ' '
       << s.distance_rate << ' ' << s.cells_across << ' ' << s.size_gradation << ' ' << s.coast_markers.size() << ' '
-      << l.mesh.balance_by_work
-      << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report << l.report_file << ' ' << l.quiet
-      << l.verbose << l.help << l.subdomains_given;
+      << l.mesh.balance_by_work << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report
+      << l.report_file << ' ' << l.quiet << l.verbose << l.help << l.subdomains_given;
   return out.str();
 }
 
@@ -163,8 +162,8 @@ TEST_CASE("the size field's flags set their fields, in mesh and decompose alike"
 }
 
 TEST_CASE("--gradation is the size field's; the decomposition's grading factor is --weight-gradation (or -a)") {
-  for (const std::vector<std::string>& words : {std::vector<std::string>{"--weight-gradation", "3"},
-                                                std::vector<std::string>{"-a", "3"}}) {
+  for (const std::vector<std::string>& words :
+       {std::vector<std::string>{"--weight-gradation", "3"}, std::vector<std::string>{"-a", "3"}}) {
     CommandLine line;
     REQUIRE(parse("decompose", words, line).empty());
     CHECK(line.mesh.decomposition.gradation == 3);

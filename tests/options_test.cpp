@@ -277,10 +277,19 @@ TEST_CASE("the size field's terms: negative or not finite, hmax below hmin, a ra
       [](madd::MeshSizeOptions& s) { s.cells_across = 3, s.size_gradation = 0.2; },
       [](madd::MeshSizeOptions& s) { s.max_edge_length = 0.5, s.size_gradation = 0.2; },
       [](madd::MeshSizeOptions& s) { s.max_triangle_area = 0.01, s.size_gradation = 0.2; },
-      [](madd::MeshSizeOptions& s) { s.triangle_area_function = [](double, double) { return 0.01; }, s.size_gradation = 1; },
-      [](madd::MeshSizeOptions& s) { s.triangle_area_samples = {{{0.5, 0.5}, 0.01}}, s.size_gradation = 0.2; },
+      [](madd::MeshSizeOptions& s) {
+        s.triangle_area_function = [](double, double) { return 0.01; };
+        s.size_gradation = 1;
+      },
+      [](madd::MeshSizeOptions& s) {
+        s.triangle_area_samples = {{{0.5, 0.5}, 0.01}};
+        s.size_gradation = 0.2;
+      },
       [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.01, s.distance_rate = 0.15, s.size_gradation = 0.2; },
-      [](madd::MeshSizeOptions& s) { s.coast_markers = {1, -2}, s.cells_across = 2; },
+      [](madd::MeshSizeOptions& s) {
+        s.coast_markers = {1, -2};
+        s.cells_across = 2;
+      },
   };
   for (std::size_t i = 0; i < good.size(); ++i) {
     CAPTURE(i);
