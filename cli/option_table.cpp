@@ -204,7 +204,7 @@ constexpr Option rows[] = {
        l.mesh.size.sample_interpolation = MeshSizeOptions::SampleInterpolation::nearest;
        return std::string();
      }},
-    // The size field (docs/mesh.md, "Size field"), in edge lengths.
+    // The size field (docs/mesh.md), in edge lengths.
     {"hmin", 0, required, "LEN", mesh_size, "min_edge_length",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.min_edge_length); }},
     {"hmax", 0, required, "LEN", mesh_size, "max_edge_length",
