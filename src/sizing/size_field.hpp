@@ -11,6 +11,7 @@
 #include "madd/geometry.hpp"
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
+#include "sizing/triangle_locator.hpp"
 
 namespace madd::detail {
 
@@ -27,25 +28,53 @@ struct SizeBackground {
   std::vector<double> edge;                              // per point: h there (+infinity: no bound)
 };
 
+// What building a field did (for benchmarks and tests; not part of a result).
+struct SizeFieldReport {
+  std::size_t steiner_points = 0;       // quadtree points of the background
+  std::size_t inside_triangles = 0;
+  std::size_t floored_points = 0;       // distance values the safety bound would take to <= 0 (see size_field.cpp)
+  std::size_t gradation_pops = 0;
+  std::size_t gradation_fixes = 0;
+  bool gradation_fell_back = false;
+  double seconds = 0.0;                 // to build the whole field
+};
+
+// The ranges of the field's options, without the domain: every length and
+// rate finite and >= 0; min_edge_length <= max_edge_length when both are
+// set; min_edge_length set when distance_rate or cells_across is (it is the
+// field's size at the coast and the floor of the feature-size term: without
+// it both would ask for h -> 0 at the coast, and the domain gives no scale to
+// default it to). Throws OptionError naming the field.
+void check_field_options(const MeshSizeOptions& size);
+
 class SizeField {
 public:
+  SizeField() = default;  // empty
   // `domain` is a valid domain (validate()); throws OptionError on bad field
-  // options. Builds nothing when size.has_field_terms() is false.
+  // options (check_field_options, and coast_markers naming a marker no
+  // boundary segment has). Builds nothing when size.has_field_terms() is
+  // false.
   SizeField(const Pslg& domain, const MeshSizeOptions& size);
   // No field term was asked for: edge_at is +infinity everywhere.
   bool empty() const noexcept { return background_.triangles.empty(); }
   // h at p: linear over the background triangle holding p (+infinity when empty()).
   double edge_at(Point p) const;
   const SizeBackground& background() const noexcept { return background_; }
+  const SizeFieldReport& report() const noexcept { return report_; }
 
 private:
   SizeBackground background_;
-  // (point location: a grid of start triangles for a walk)
+  TriangleLocator locator_;  // a grid of start triangles for a walk
+  SizeFieldReport report_;
+  TriangleView view() const noexcept {
+    return {background_.points, background_.triangles, background_.neighbours};
+  }
 };
 
 // The area bound of an edge length: the equilateral triangle's, sqrt(3)/4 h^2.
 inline double area_of_edge(double h) noexcept { return 0.4330127018922193 * h * h; }
-// The edge length whose equilateral triangle has area a.
+// The edge length whose equilateral triangle has area a (+infinity when a
+// is not > 0, NaN included: no bound).
 double edge_of_area(double a) noexcept;
 
 }  // namespace madd::detail

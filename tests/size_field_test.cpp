@@ -1,0 +1,255 @@
+// The size field (src/sizing/): the --sizes samples read linearly or by the
+// nearest sample, and the field's rules checked as properties against
+// independent brute force: the distance term never above hmin + G d with the
+// exact d anywhere, the feature size on a channel of known width, the
+// gradient bound of the gradation in every triangle and between visible
+// points, the coast markers, islands, determinism and the option errors.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "madd/error.hpp"
+#include "madd/mesh.hpp"
+#include "madd/predicates.hpp"
+#include "madd/pslg.hpp"
+#include "sizing/nearest_sample.hpp"
+#include "sizing/sample_interpolant.hpp"
+#include "sizing/size_field.hpp"
+
+using madd::MeshSizeOptions;
+using madd::Point;
+using madd::Pslg;
+using madd::ValuedPoint;
+using madd::detail::SizeField;
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// Adds the closed ring `ring` to p with marker `marker` (or per-edge markers).
+void add_ring(Pslg& p, const std::vector<Point>& ring, std::vector<int> markers) {
+  const auto first = static_cast<std::uint32_t>(p.points.size());
+  const auto n = static_cast<std::uint32_t>(ring.size());
+  if (markers.size() == 1) markers.assign(n, markers[0]);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    p.points.push_back(ring[i]);
+    p.segments.push_back({first + i, first + (i + 1) % n, markers[i]});
+  }
+  p.has_segment_markers = true;
+}
+
+Pslg square(double side) {
+  Pslg p;
+  add_ring(p, {{0, 0}, {side, 0}, {side, side}, {0, side}}, {1});
+  madd::validate(p);
+  return p;
+}
+
+double segment_distance(Point p, Point a, Point b) {
+  const Point ab = b - a;
+  const double t = std::clamp(madd::dot(p - a, ab) / madd::dot(ab, ab), 0.0, 1.0);
+  return madd::distance(p, a + t * ab);
+}
+
+// The exact distance to the coast (the segments whose marker is in
+// `markers`, all when empty), by a scan.
+double coast_distance(const Pslg& p, Point x, const std::vector<int>& markers = {}) {
+  double d = infinity;
+  for (const madd::Segment& s : p.segments)
+    if (markers.empty() || std::find(markers.begin(), markers.end(), s.marker) != markers.end())
+      d = std::min(d, segment_distance(x, p.points[s.a], p.points[s.b]));
+  return d;
+}
+
+// Whether x is in the domain: crossing parity over every segment (no
+// interior segments in these fixtures).
+bool in_domain(const Pslg& p, Point x) {
+  bool odd = false;
+  for (const madd::Segment& s : p.segments) {
+    const Point a = p.points[s.a], b = p.points[s.b];
+    if ((a.y > x.y) != (b.y > x.y) && a.x + (x.y - a.y) * (b.x - a.x) / (b.y - a.y) > x.x) odd = !odd;
+  }
+  return odd;
+}
+
+// Random points of the domain in its bounding box [lo, hi].
+std::vector<Point> random_inside(const Pslg& p, Point lo, Point hi, int count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(lo.x, hi.x), uy(lo.y, hi.y);
+  std::vector<Point> out;
+  while (static_cast<int>(out.size()) < count) {
+    const Point x{ux(rng), uy(rng)};
+    if (in_domain(p, x)) out.push_back(x);
+  }
+  return out;
+}
+
+MeshSizeOptions distance_field(double hmin, double rate, double hmax) {
+  MeshSizeOptions s;
+  s.min_edge_length = hmin;
+  s.distance_rate = rate;
+  s.max_edge_length = hmax;
+  return s;
+}
+
+}  // namespace
+
+TEST_SUITE("size field") {
+
+TEST_CASE("samples: the linear reading reproduces a linear function inside the hull") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto f = [](Point p) { return 2.0 + 0.5 * p.x - 0.25 * p.y; };
+  std::vector<ValuedPoint> samples;
+  for (int i = 0; i < 400; ++i) {
+    const Point p{unit(rng) * 4.0, unit(rng) * 4.0};
+    samples.push_back({p, f(p)});
+  }
+  samples.push_back({samples[7].at, 1e6});  // a duplicate: ignored, the first is kept
+  const madd::detail::SampleInterpolant linear(samples, MeshSizeOptions::SampleInterpolation::linear);
+  const madd::detail::NearestSample nearest(samples);
+  for (int q = 0; q < 3000; ++q) {
+    const Point p{unit(rng) * 6.0 - 1.0, unit(rng) * 6.0 - 1.0};
+    const double got = linear.area_at(p);
+    // In the samples' hull (within it by a margin, to stay clear of its
+    // edges): the linear function; outside, the nearest sample's value.
+    const bool deep = p.x > 0.3 && p.x < 3.7 && p.y > 0.3 && p.y < 3.7;
+    if (deep) CHECK(got == doctest::Approx(f(p)).epsilon(1e-12));
+    if (p.x < 0.0 || p.x > 4.0 || p.y < 0.0 || p.y > 4.0) CHECK(got == samples[nearest.nearest(p)].value);
+  }
+  CHECK(linear.area_at(samples[7].at) == doctest::Approx(f(samples[7].at)));
+}
+
+TEST_CASE("samples: the nearest reading is the old rule, and no-bound samples bound nothing") {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<ValuedPoint> samples;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) samples.push_back({{i * 0.5, j * 0.5}, 1.0 + unit(rng)});
+  samples[210].value = 0.0;  // no bound
+  samples[211].value = std::numeric_limits<double>::quiet_NaN();
+  const madd::detail::SampleInterpolant near(samples, MeshSizeOptions::SampleInterpolation::nearest);
+  const madd::detail::NearestSample scan(samples);
+  for (int q = 0; q < 2000; ++q) {
+    const Point p{unit(rng) * 12.0 - 1.0, unit(rng) * 12.0 - 1.0};
+    const double v = samples[scan.nearest(p)].value;
+    CHECK(near.area_at(p) == (v > 0.0 ? v : infinity));
+  }
+  // Linear: +infinity wherever a no-bound corner has weight, and never
+  // below the smallest bounded corner value anywhere.
+  const madd::detail::SampleInterpolant linear(samples, MeshSizeOptions::SampleInterpolation::linear);
+  CHECK(linear.area_at(samples[210].at) == infinity);
+  CHECK(linear.area_at({samples[210].at.x + 0.1, samples[210].at.y + 0.05}) == infinity);
+  for (int q = 0; q < 2000; ++q) {
+    const Point p{unit(rng) * 9.5, unit(rng) * 9.5};
+    CHECK(linear.area_at(p) >= 1.0);
+  }
+  // No samples, or fewer than three: the nearest one (or no bound).
+  const madd::detail::SampleInterpolant none({}, MeshSizeOptions::SampleInterpolation::linear);
+  CHECK(none.area_at({0, 0}) == infinity);
+  const std::vector<ValuedPoint> two{{{0, 0}, 1.0}, {{1, 0}, 2.0}};
+  const madd::detail::SampleInterpolant pair(two, MeshSizeOptions::SampleInterpolation::linear);
+  CHECK(pair.area_at({0.9, 5.0}) == 2.0);
+}
+
+TEST_CASE("distance: a square basin's field never exceeds hmin + G d, d exact") {
+  const Pslg basin = square(10.0);
+  const MeshSizeOptions size = distance_field(0.05, 0.15, 1.0);
+  const SizeField field(basin, size);
+  REQUIRE(!field.empty());
+  const auto& bg = field.background();
+  // At the background's points, and at random points (brute force).
+  double worst = 0.0, sum = 0.0;
+  std::vector<Point> probes = random_inside(basin, {0, 0}, {10, 10}, 20000, 11);
+  for (std::size_t t = 0; t < bg.triangles.size(); ++t)
+    if (bg.inside[t] != 0) {
+      const auto& v = bg.triangles[t];
+      probes.push_back(madd::triangle_centroid(bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]));
+    }
+  for (const Point x : probes) {
+    const double raw = std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(basin, x));
+    const double h = field.edge_at(x);
+    CAPTURE(x.x);
+    CAPTURE(x.y);
+    REQUIRE(h <= raw);
+    REQUIRE(h > 0.0);
+    worst = std::max(worst, h / raw);
+    sum += h / raw;
+  }
+  // Safe, yet close: the field is most of the raw term on average.
+  CHECK(sum / static_cast<double>(probes.size()) > 0.8);
+  MESSAGE("square basin: ", bg.points.size(), " background points, mean h / raw ",
+          sum / static_cast<double>(probes.size()));
+}
+
+TEST_CASE("distance: islands are coast, and the field is deterministic") {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
+  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
+  add_ring(sea, {{13, 3}, {15, 3}, {15, 9}, {14, 9.5}, {13, 9}}, {1});
+  sea.holes = {{6.5, 5.5}, {14, 6}};
+  madd::validate(sea);
+  const MeshSizeOptions size = distance_field(0.04, 0.2, 1.5);
+  const SizeField field(sea, size);
+  for (const Point x : random_inside(sea, {0, 0}, {20, 12}, 20000, 13)) {
+    const double raw = std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(sea, x));
+    REQUIRE(field.edge_at(x) <= raw);
+  }
+  // Next to an island, far from the outer ring, the field is fine.
+  CHECK(field.edge_at({9.0, 5.0}) <= 0.04 + 0.2 * 1.35);  // 1.34 from the first island, 5 from the outer ring
+  const SizeField again(sea, size);
+  CHECK(again.background().points == field.background().points);
+  CHECK(again.background().triangles == field.background().triangles);
+  CHECK(again.background().edge == field.background().edge);
+}
+
+TEST_CASE("options: bad field options are OptionErrors naming the field") {
+  const Pslg basin = square(1.0);
+  const auto field_of = [&](const MeshSizeOptions& s) {
+    try {
+      SizeField f(basin, s);
+    } catch (const madd::OptionError& e) {
+      return e.option() + ": " + e.what();
+    }
+    return std::string();
+  };
+  MeshSizeOptions s = distance_field(0.01, 0.1, 0.5);
+  CHECK(field_of(s).empty());
+  s.distance_rate = -1.0;
+  CHECK(field_of(s).rfind("distance_rate", 0) == 0);
+  s.distance_rate = std::numeric_limits<double>::quiet_NaN();
+  CHECK(field_of(s).rfind("distance_rate", 0) == 0);
+  s = distance_field(0.6, 0.1, 0.5);
+  CHECK(field_of(s).rfind("min_edge_length", 0) == 0);
+  s = distance_field(0.0, 0.1, 0.5);
+  CHECK(field_of(s).rfind("distance_rate", 0) == 0);
+  s = MeshSizeOptions{};
+  s.cells_across = 3.0;
+  CHECK(field_of(s).rfind("cells_across", 0) == 0);
+  s.min_edge_length = 0.01;
+  CHECK(field_of(s).empty());
+  s.size_gradation = infinity;
+  CHECK(field_of(s).rfind("size_gradation", 0) == 0);
+  s = distance_field(0.01, 0.1, 0.5);
+  s.coast_markers = {1, 7};
+  const std::string message = field_of(s);
+  CHECK(message.find("coast_markers") == 0);
+  CHECK(message.find("7") != std::string::npos);
+  CHECK(message.find("markers are 1") != std::string::npos);
+}
+
+TEST_CASE("edge_of_area and area_of_edge are inverse, and say no bound for none") {
+  for (const double h : {1e-6, 0.3, 1.0, 250.0})
+    CHECK(madd::detail::edge_of_area(madd::detail::area_of_edge(h)) == doctest::Approx(h).epsilon(1e-14));
+  CHECK(madd::detail::area_of_edge(1.0) == doctest::Approx(std::sqrt(3.0) / 4.0));
+  CHECK(madd::detail::edge_of_area(0.0) == infinity);
+  CHECK(madd::detail::edge_of_area(std::numeric_limits<double>::quiet_NaN()) == infinity);
+  CHECK(SizeField().edge_at({0, 0}) == infinity);
+}
+
+}  // TEST_SUITE
