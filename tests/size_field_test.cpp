@@ -97,6 +97,27 @@ MeshSizeOptions distance_field(double hmin, double rate, double hmax) {
   return s;
 }
 
+// Whether the open segment xy crosses or touches a segment of p.
+bool blocked(const Pslg& p, Point x, Point y) {
+  for (const madd::Segment& s : p.segments) {
+    const Point a = p.points[s.a], b = p.points[s.b];
+    const double o1 = madd::orient2d(x, y, a), o2 = madd::orient2d(x, y, b);
+    const double o3 = madd::orient2d(a, b, x), o4 = madd::orient2d(a, b, y);
+    if (o1 * o2 <= 0 && o3 * o4 <= 0) return true;
+  }
+  return false;
+}
+
+// The gradient of the linear interpolant of f over triangle t of the background.
+double triangle_gradient(const madd::detail::SizeBackground& bg, std::size_t t) {
+  const auto& v = bg.triangles[t];
+  const Point p0 = bg.points[v[0]], p1 = bg.points[v[1]], p2 = bg.points[v[2]];
+  const double a1 = bg.edge[v[1]] - bg.edge[v[0]], a2 = bg.edge[v[2]] - bg.edge[v[0]];
+  const Point e1 = p1 - p0, e2 = p2 - p0;
+  const double det = madd::cross(e1, e2);
+  return std::hypot((a1 * e2.y - a2 * e1.y) / det, (a2 * e1.x - a1 * e2.x) / det);
+}
+
 }  // namespace
 
 TEST_SUITE("size field") {
@@ -206,6 +227,83 @@ TEST_CASE("distance: islands are coast, and the field is deterministic") {
   CHECK(again.background().points == field.background().points);
   CHECK(again.background().triangles == field.background().triangles);
   CHECK(again.background().edge == field.background().edge);
+}
+
+TEST_CASE("gradation: every inside triangle and every visible pair within the rate, never raised") {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
+  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
+  sea.holes = {{5, 4}};
+  madd::validate(sea);
+  // A steep distance term, and an area function with a tiny spot: both need limiting.
+  MeshSizeOptions size = distance_field(0.02, 0.6, 1.5);
+  // (The background samples the function at its points: the spot is wider than its cells there.)
+  size.triangle_area_function = [](double x, double y) { return std::hypot(x - 9.0, y - 2.0) < 1.0 ? 1e-3 : 1.0; };
+  MeshSizeOptions raw_size = size;
+  size.size_gradation = 0.2;
+  const SizeField raw(sea, raw_size), field(sea, size);
+  const auto& bg = field.background();
+  double steepest = 0.0;
+  for (std::size_t t = 0; t < bg.triangles.size(); ++t)
+    if (bg.inside[t] != 0) steepest = std::max(steepest, triangle_gradient(bg, t));
+  CHECK(steepest <= 0.2 * (1.0 + 1e-9));
+  CHECK(steepest > 0.15);  // the limiter binds somewhere: the test tests something
+  const std::vector<Point> probes = random_inside(sea, {0, 0}, {12, 8}, 4000, 17);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i + 1 < probes.size(); i += 2) {
+    const Point x = probes[i], y = probes[i + 1];
+    const double hx = field.edge_at(x), hy = field.edge_at(y);
+    CHECK(hx <= raw.edge_at(x) * (1.0 + 1e-12));  // only lowered
+    if (blocked(sea, x, y)) continue;
+    ++pairs;
+    CHECK(hx <= hy + 0.2 * madd::distance(x, y) * (1.0 + 1e-9) + 1e-12);
+  }
+  CHECK(pairs > 1000);
+  // The spot is in the background, and graded around it.
+  const double spot = madd::detail::edge_of_area(1e-3);
+  CHECK(field.edge_at({9.0, 2.0}) <= spot * 1.5);
+  CHECK(field.edge_at({9.0, 6.0}) <= field.edge_at({9.0, 2.0}) + 0.2 * 4.0 * (1.0 + 1e-9));
+  CHECK(raw.edge_at({9.0, 6.0}) > field.edge_at({9.0, 2.0}) + 0.2 * 4.0);
+}
+
+TEST_CASE("coast markers: a side that is not coast pulls nothing fine") {
+  Pslg box;
+  add_ring(box, {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {2, 1, 1, 1});  // the bottom side: marker 2, the open sea
+  madd::validate(box);
+  MeshSizeOptions size = distance_field(0.05, 0.15, 1.0);
+  const SizeField all(box, size);
+  size.coast_markers = {1};
+  const SizeField coast(box, size);
+  CHECK(all.edge_at({5.0, 0.1}) < 0.1);
+  CHECK(coast.edge_at({5.0, 0.1}) > 0.6);  // hmin + G 4.9 = 0.785 from the other sides
+  for (const Point x : random_inside(box, {0, 0}, {10, 10}, 5000, 19)) {
+    const double raw = std::min(1.0, 0.05 + 0.15 * coast_distance(box, x, {1}));
+    REQUIRE(coast.edge_at(x) <= raw);
+  }
+}
+
+TEST_CASE("feature size: a channel of width W gets h <= W / R along it") {
+  // A basin and a channel of width 1 running east from it, closed at its end.
+  const double w = 1.0, r = 3.0;
+  Pslg basin;
+  add_ring(basin, {{0, 0}, {20, 0}, {20, 9}, {40, 9}, {40, 9 + w}, {20, 9 + w}, {20, 20}, {0, 20}}, {1});
+  madd::validate(basin);
+  MeshSizeOptions size;
+  size.min_edge_length = 0.02;
+  size.max_edge_length = 3.0;
+  size.cells_across = r;
+  const SizeField field(basin, size);
+  // Along the axis and across the channel, from its mouth to its closed end.
+  for (double x = 20.0; x <= 40.0; x += 0.05)
+    for (const double y : {9.0 + 0.5 * w, 9.0 + 0.1 * w, 9.0 + 0.9 * w}) {
+      CAPTURE(x);
+      CAPTURE(y);
+      CHECK(field.edge_at({x, y}) <= w / r * (1.0 + 1e-9));
+    }
+  // Not pulled down in the basin away from the channel: the width there is
+  // the basin's (20 across: 2 * 10 / 3 > hmax).
+  CHECK(field.edge_at({6.0, 5.0}) == doctest::Approx(3.0));
+  CHECK(field.edge_at({10.0, 14.0}) > 2.0);
 }
 
 TEST_CASE("options: bad field options are OptionErrors naming the field") {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "kernel/stopwatch.hpp"
 #include "madd/error.hpp"
@@ -32,6 +33,27 @@ void check_length(const char* field, double value) {
 double cell_over_h(const MeshSizeOptions& size) {
   constexpr double k = 4.0;
   return size.distance_rate > 0.0 ? std::min(k, 0.5 / size.distance_rate) : k;
+}
+
+// The feature-size term at each point, taken down to the smallest raw term
+// of its inside neighbours (one ring). The chord jumps where a channel
+// opens into a basin (and at a channel's closed end, feature_width.hpp),
+// and a linear interpolant spreads a jump over a whole triangle, half into
+// the channel; after this step every corner of a triangle is at most the
+// raw term at each of its corners, so a triangle with one corner on a
+// channel's bank reads at most that bank's 2 width / R everywhere.
+std::vector<double> eroded_feature_term(const SizeBackground& bg, const std::vector<RawSample>& samples,
+                                        const MeshSizeOptions& size) {
+  std::vector<double> raw(samples.size()), out(samples.size(), infinity);
+  for (std::size_t v = 0; v < samples.size(); ++v)
+    raw[v] = std::max(size.min_edge_length, 2.0 * samples[v].width / size.cells_across);
+  for (std::size_t t = 0; t < bg.triangles.size(); ++t) {
+    if (bg.inside[t] == 0) continue;
+    const auto& v = bg.triangles[t];
+    const double least = std::min({raw[v[0]], raw[v[1]], raw[v[2]]});
+    for (const std::uint32_t i : v) out[i] = std::min(out[i], least);
+  }
+  return out;
 }
 
 }  // namespace
@@ -66,6 +88,10 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   background_ = std::move(built.background);
   report_.steiner_points = built.steiner_points;
   for (const std::uint8_t in : background_.inside) report_.inside_triangles += in;
+  if (size.cells_across > 0.0) {
+    const std::vector<double> feature = eroded_feature_term(background_, built.samples, size);
+    for (std::size_t v = 0; v < feature.size(); ++v) background_.edge[v] = std::min(background_.edge[v], feature[v]);
+  }
   const std::vector<double> safe =
       safe_distance_values(background_, built.samples, size.min_edge_length, size.distance_rate);
   for (std::size_t v = 0; v < safe.size(); ++v) {
