@@ -12,42 +12,56 @@ namespace madd::detail {
 
 namespace {
 
-// The inside edges and triangles around each point (CSR).
+// The inside edges and triangles around each point (CSR). Triangles wider
+// than 120 degrees are not checked: their edges are held to the slope that
+// makes them safe (a needle's gradient is steered by rounding-size value
+// differences, and flattening it corner by corner converges too slowly to
+// be worth it); the others are checked and flattened.
 struct Adjacency {
   std::vector<std::uint32_t> edge_start, edge_to, tri_start, tri;
-  std::vector<double> edge_slope;  // the fallback's slope limit per edge entry
+  std::vector<double> slope;       // the main pass's slope limit per edge entry
+  std::vector<double> safe_slope;  // the fallback's: rate cos(alpha / 2), alpha the widest angle at the edge
+  std::vector<double> triangle_safe;  // per triangle: rate cos(alpha / 2), alpha its widest angle
 };
 
 Adjacency adjacency(const SizeBackground& bg, double rate) {
+  struct Edge {
+    std::uint32_t to;
+    double slope, safe;
+  };
   const std::size_t n = bg.points.size();
-  Adjacency a;
-  std::vector<std::vector<std::pair<std::uint32_t, double>>> edges(n);
+  std::vector<std::vector<Edge>> edges(n);
   std::vector<std::vector<std::uint32_t>> tris(n);
+  Adjacency a;
+  a.triangle_safe.assign(bg.triangles.size(), rate);
   for (std::uint32_t t = 0; t < bg.triangles.size(); ++t) {
     if (bg.inside[t] == 0) continue;
     const auto& v = bg.triangles[t];
     const Point p[3] = {bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]};
     double widest = 0.0;
     for (int i = 0; i < 3; ++i) widest = std::max(widest, angle_at(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
-    const double slope = rate * std::cos(0.5 * widest);
+    const double safe = rate * std::cos(0.5 * widest);
+    a.triangle_safe[t] = safe;
+    const bool wide = widest > radians(120.0);
     for (int i = 0; i < 3; ++i) {
-      tris[v[i]].push_back(t);
-      edges[v[i]].push_back({v[(i + 1) % 3], slope});
-      edges[v[i]].push_back({v[(i + 2) % 3], slope});
+      if (!wide) tris[v[i]].push_back(t);
+      for (const std::uint32_t u : {v[(i + 1) % 3], v[(i + 2) % 3]}) edges[v[i]].push_back({u, wide ? safe : rate, safe});
     }
   }
   a.edge_start.push_back(0);
   a.tri_start.push_back(0);
   for (std::size_t i = 0; i < n; ++i) {
     auto& e = edges[i];
-    std::sort(e.begin(), e.end());
+    std::sort(e.begin(), e.end(), [](const Edge& x, const Edge& y) { return x.to < y.to; });
     for (std::size_t k = 0; k < e.size(); ++k) {
-      if (k > 0 && e[k].first == e[k - 1].first) {
-        a.edge_slope.back() = std::min(a.edge_slope.back(), e[k].second);  // the stricter of its two triangles
+      if (k > 0 && e[k].to == e[k - 1].to) {  // the stricter of its two triangles
+        a.slope.back() = std::min(a.slope.back(), e[k].slope);
+        a.safe_slope.back() = std::min(a.safe_slope.back(), e[k].safe);
         continue;
       }
-      a.edge_to.push_back(e[k].first);
-      a.edge_slope.push_back(e[k].second);
+      a.edge_to.push_back(e[k].to);
+      a.slope.push_back(e[k].slope);
+      a.safe_slope.push_back(e[k].safe);
     }
     a.edge_start.push_back(static_cast<std::uint32_t>(a.edge_to.size()));
     a.tri.insert(a.tri.end(), tris[i].begin(), tris[i].end());
@@ -108,9 +122,25 @@ void edge_limited(const SizeBackground& bg, const Adjacency& a, std::vector<doub
     if (value != f[v]) continue;
     for (std::uint32_t k = a.edge_start[v]; k < a.edge_start[v + 1]; ++k) {
       const std::uint32_t u = a.edge_to[k];
-      const double limit = f[v] + a.edge_slope[k] * (1.0 - 1e-9) * distance(bg.points[v], bg.points[u]);
+      const double limit = f[v] + a.safe_slope[k] * (1.0 - 1e-9) * distance(bg.points[v], bg.points[u]);
       if (limit < f[u]) f[u] = limit, queue.push({limit, u});
     }
+  }
+}
+
+// Holds the edges of triangle t to its safe slope from now on (it is then
+// within the rate whatever its corners become) and requeues its corners so
+// that the edges are enforced: the end of a triangle flattened too often.
+void hold_to_safe_slope(const SizeBackground& bg, Adjacency& a, std::uint32_t t, const std::vector<double>& f,
+                        Queue& queue) {
+  const auto& v = bg.triangles[t];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (i == j) continue;
+      for (std::uint32_t k = a.edge_start[v[i]]; k < a.edge_start[v[i] + 1]; ++k)
+        if (a.edge_to[k] == v[j]) a.slope[k] = std::min(a.slope[k], a.triangle_safe[t]);
+    }
+    queue.push({f[v[i]], v[i]});
   }
 }
 
@@ -118,9 +148,15 @@ void edge_limited(const SizeBackground& bg, const Adjacency& a, std::vector<doub
 
 GradationReport limit_gradation(SizeBackground& bg, double rate) {
   GradationReport report;
-  const Adjacency a = adjacency(bg, rate);
+  Adjacency a = adjacency(bg, rate);
+  // Flattening a needle can ping-pong with its neighbour across the short
+  // edge, each lowering the shared corners by a shrinking fraction: after
+  // this many flattenings a triangle is held to its safe slope instead.
+  constexpr std::uint8_t max_flattenings = 4;
+  std::vector<std::uint8_t> flattened(bg.triangles.size(), 0);
   std::vector<double>& f = bg.edge;
-  const double slope = rate * (1.0 - 1e-9);  // headroom against the rounding of a gradient
+  const double headroom = 1.0 - 1e-9;  // against the rounding of a gradient
+  const double slope = rate * headroom;
   Queue queue;
   for (std::uint32_t i = 0; i < f.size(); ++i)
     if (std::isfinite(f[i]) && a.edge_start[i + 1] > a.edge_start[i]) queue.push({f[i], i});
@@ -136,12 +172,23 @@ GradationReport limit_gradation(SizeBackground& bg, double rate) {
     if (value != f[v]) continue;  // lowered since it was queued
     for (std::uint32_t k = a.edge_start[v]; k < a.edge_start[v + 1]; ++k) {
       const std::uint32_t u = a.edge_to[k];
-      const double limit = f[v] + slope * distance(bg.points[v], bg.points[u]);
+      const double limit = f[v] + a.slope[k] * headroom * distance(bg.points[v], bg.points[u]);
       if (limit < f[u]) f[u] = limit, queue.push({limit, u});
     }
     for (std::uint32_t k = a.tri_start[v]; k < a.tri_start[v + 1]; ++k) {
-      const std::uint32_t lowered = flatten(bg, a.tri[k], f, slope);
+      const std::uint32_t t = a.tri[k];
+      if (flattened[t] > max_flattenings) continue;  // held to its safe slope
+      if (flattened[t] == max_flattenings) {
+        const auto& c = bg.triangles[t];
+        if (!std::isfinite(f[c[0]] + f[c[1]] + f[c[2]]) || length(gradient(bg, t, f).g) <= slope) continue;
+        ++flattened[t];
+        ++report.held_triangles;
+        hold_to_safe_slope(bg, a, t, f, queue);
+        continue;
+      }
+      const std::uint32_t lowered = flatten(bg, t, f, slope);
       if (lowered == no_index) continue;
+      ++flattened[t];
       ++report.triangle_fixes;
       queue.push({f[lowered], lowered});
     }

@@ -15,7 +15,11 @@
 // positive component along the gradient; lowering that corner removes it,
 // and what is left, the slope along the opposite edge, is at most G); that
 // corner is lowered exactly as far as needed and goes back into the queue.
-// Values only decrease, so the pass ends; should it take more than a fixed
+// Two needles sharing a short edge can take turns lowering its ends by ever
+// smaller amounts: a triangle flattened 4 times is instead held to the slope
+// below (its edges' limit lowered for good, so that it is within the rate
+// whatever its corners become). Values only decrease, so the pass ends;
+// should it take more than a fixed
 // number of steps, a Dijkstra pass with each edge's slope limited to
 // G cos(alpha / 2), alpha the largest angle of its inside triangles, ends
 // it (edges no steeper than that give a gradient of at most G in any
@@ -27,6 +31,7 @@ namespace madd::detail {
 struct GradationReport {
   std::size_t pops = 0;          // queue pops of the label-correcting pass
   std::size_t triangle_fixes = 0;
+  std::size_t held_triangles = 0;  // flattened too often: held to their safe slope
   bool fell_back = false;        // the edge-limited pass had to finish
 };
 

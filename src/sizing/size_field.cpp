@@ -106,6 +106,7 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
     const GradationReport g = limit_gradation(background_, size.size_gradation);
     report_.gradation_pops = g.pops;
     report_.gradation_fixes = g.triangle_fixes;
+    report_.gradation_held = g.held_triangles;
     report_.gradation_fell_back = g.fell_back;
   }
   locator_ = TriangleLocator(view());

@@ -35,6 +35,7 @@ struct SizeFieldReport {
   std::size_t floored_points = 0;       // distance values the safety bound would take to <= 0 (see size_field.cpp)
   std::size_t gradation_pops = 0;
   std::size_t gradation_fixes = 0;
+  std::size_t gradation_held = 0;       // triangles held to their safe slope (gradation.hpp)
   bool gradation_fell_back = false;
   double seconds = 0.0;                 // to build the whole field
 };

@@ -33,7 +33,7 @@ TriangleLocator::TriangleLocator(const TriangleView& view) {
   // even size (graded regions cost more steps: still few, measured in
   // tests/bench/bench_size_field.cpp).
   const double width = hi.x - lo.x, height = hi.y - lo.y;
-  const double count = static_cast<double>(view.triangles.size());
+  const double count = static_cast<double>(view.triangles.size()) * 4;
   double cell = std::max(std::sqrt(width * height / count), std::max(width, height) / count);
   if (!(cell > 0.0) || !std::isfinite(cell)) cell = std::max({width, height, 1.0});
   const auto cols = static_cast<std::uint32_t>(std::clamp(std::floor(width / cell) + 1.0, 1.0, count + 1.0));
@@ -56,6 +56,17 @@ Location TriangleLocator::locate(const TriangleView& view, Point p) const noexce
   return walk(view, p, start_[std::size_t{frame_.row_of(p.y)} * frame_.cols() + frame_.col_of(p.x)]);
 }
 
+// orient2d with its first, floating-point stage inline (the walk's hot
+// path: a call per edge test cost half the query); exact whenever that
+// stage cannot decide. |l| + |r| bounds Shewchuk's detsum, so the bound is
+// never looser than orient2d's own first stage.
+inline double orient(Point a, Point b, Point c) noexcept {
+  const double l = (a.x - c.x) * (b.y - c.y), r = (a.y - c.y) * (b.x - c.x), det = l - r;
+  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+  if (det > bound || -det > bound) return det;
+  return orient2d(a, b, c);
+}
+
 // A visibility walk: cross an edge p lies strictly beyond, chosen in an
 // order a linear congruential generator rotates (a fixed order may circle
 // in a constrained triangulation; this one ends with probability one, and
@@ -67,16 +78,17 @@ Location TriangleLocator::walk(const TriangleView& view, Point p, std::uint32_t 
   std::uint32_t came = no_index;
   std::uint32_t state = 12345u;
   for (std::size_t steps = 4 * view.triangles.size() + 64; steps > 0; --steps) {
+    const std::array<std::uint32_t, 3>& v = tv[t];
+    const std::array<std::uint32_t, 3>& n = tn[t];
+    const Point corner[3] = {P[v[0]], P[v[1]], P[v[2]]};
     state = state * 1103515245u + 12345u;
-    const std::uint32_t r = (state >> 16) % 3;
+    std::uint32_t i = (((state >> 16) & 0xffffu) * 3u) >> 16;  // 0, 1 or 2
     std::uint32_t next = no_index;
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      const std::uint32_t i = (r + k) % 3;
-      const std::uint32_t n = tn[t][i];
-      if (n == came && came != no_index) continue;  // p is on this side of the edge just crossed
-      if (orient2d(P[tv[t][i == 2 ? 0 : i + 1]], P[tv[t][i == 0 ? 2 : i - 1]], p) < 0) {
-        if (n == no_index) return {t, false};  // beyond a hull edge: outside the hull
-        next = n;
+    for (int k = 0; k < 3; ++k, i = i == 2 ? 0 : i + 1) {
+      if (n[i] == came && came != no_index) continue;  // p is on this side of the edge just crossed
+      if (orient(corner[i == 2 ? 0 : i + 1], corner[i == 0 ? 2 : i - 1], p) < 0) {
+        if (n[i] == no_index) return {t, false};  // beyond a hull edge: outside the hull
+        next = n[i];
         break;
       }
     }
