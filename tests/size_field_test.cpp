@@ -238,7 +238,7 @@ TEST_CASE("gradation: every inside triangle and every visible pair within the ra
   // A steep distance term, and an area function with a tiny spot: both need limiting.
   MeshSizeOptions size = distance_field(0.02, 0.6, 1.5);
   // (The background samples the function at its points: the spot is wider than its cells there.)
-  size.triangle_area_function = [](double x, double y) { return std::hypot(x - 9.0, y - 2.0) < 1.0 ? 1e-3 : 1.0; };
+  size.triangle_area_function = [](double x, double y) { return std::hypot(x - 9.0, y - 2.0) < 1.5 ? 1e-3 : 1.0; };
   MeshSizeOptions raw_size = size;
   size.size_gradation = 0.2;
   const SizeField raw(sea, raw_size), field(sea, size);

@@ -23,7 +23,7 @@
 
 #include "sizing/coast.hpp"
 #include "sizing/raw_field.hpp"
-#include "sizing/size_field.hpp"
+#include "sizing/size_background.hpp"
 
 namespace madd::detail {
 

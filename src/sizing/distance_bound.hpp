@@ -34,14 +34,25 @@
 #include <vector>
 
 #include "sizing/raw_field.hpp"
-#include "sizing/size_field.hpp"
+#include "sizing/size_background.hpp"
 
 namespace madd::detail {
 
+// delta_T of inside triangle t (in units of distance), and the centre and
+// radius of its smallest enclosing circle.
+struct TriangleBound {
+  double delta = 0.0;
+  Point centre;
+  double rho = 0.0;
+};
+TriangleBound triangle_bound(const SizeBackground& background, std::span<const RawSample> samples, std::uint32_t t);
+
 // Per point of `background`, the largest value the distance term may take
 // there (+infinity for points of no inside triangle, and without a distance
-// term). `samples` are the raw terms at the points.
+// term), over the inside triangles `exact` does not flag (those read the
+// exact distance instead, coast_candidates.hpp; empty: none is). `samples`
+// are the raw terms at the points.
 std::vector<double> safe_distance_values(const SizeBackground& background, std::span<const RawSample> samples,
-                                         double hmin, double rate);
+                                         double hmin, double rate, const std::vector<bool>& exact = {});
 
 }  // namespace madd::detail

@@ -24,7 +24,7 @@
 // G cos(alpha / 2), alpha the largest angle of its inside triangles, ends
 // it (edges no steeper than that give a gradient of at most G in any
 // triangle; provably, and only ever lower).
-#include "sizing/size_field.hpp"
+#include "sizing/size_background.hpp"
 
 namespace madd::detail {
 

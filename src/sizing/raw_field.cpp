@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sizing/feature_width.hpp"
-#include "sizing/size_field.hpp"
+#include "sizing/edge_length.hpp"
 
 namespace madd::detail {
 
@@ -39,11 +39,7 @@ RawSample RawField::at(Point x, Point inward) const {
   s.distance = nearest.distance;
   const std::uint32_t v = nearest_vertex_.nearest(x);
   if (v != no_index) s.vertex_distance = distance(x, coast_vertices_[v].at);
-  double h = size_.max_edge_length > 0.0 ? size_.max_edge_length : s.h;
-  if (size_.distance_rate > 0.0) {
-    s.distance_term = size_.min_edge_length + size_.distance_rate * s.distance;
-    h = std::min(h, s.distance_term);
-  }
+  double other = size_.max_edge_length > 0.0 ? size_.max_edge_length : s.h;
   if (size_.size_gradation > 0.0) {
     double area = size_.max_triangle_area > 0.0 ? size_.max_triangle_area : s.h;
     if (size_.triangle_area_function) {
@@ -51,14 +47,19 @@ RawSample RawField::at(Point x, Point inward) const {
       if (a > 0.0) area = std::min(area, a);  // false for NaN too: no bound
     }
     if (samples_) area = std::min(area, samples_->area_at(x));
-    h = std::min(h, edge_of_area(area));
+    other = std::min(other, edge_of_area(area));
   }
+  if (size_.distance_rate > 0.0) s.distance_term = size_.min_edge_length + size_.distance_rate * s.distance;
+  double h = std::min(other, s.distance_term);
   if (size_.cells_across > 0.0) {
     // A chord longer than R h gives a term above h: it cannot bind.
     const double t_max = std::isfinite(h) ? size_.cells_across * h : 4.0 * extent_ + 1.0;
     s.width = feature_width(coast_, x, nearest, inward, t_max, extent_);
-    h = std::min(h, std::max(size_.min_edge_length, 2.0 * s.width / size_.cells_across));
+    s.feature_term = std::max(size_.min_edge_length, 2.0 * s.width / size_.cells_across);
+    other = std::min(other, s.feature_term);
+    h = std::min(h, s.feature_term);
   }
+  s.other = other;
   s.h = h;
   return s;
 }

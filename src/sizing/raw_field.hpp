@@ -26,6 +26,8 @@ struct RawSample {
   double vertex_distance = std::numeric_limits<double>::infinity();  // to the nearest end of a coast piece
   double width = std::numeric_limits<double>::infinity();            // half-width of the water (when R > 0)
   double distance_term = std::numeric_limits<double>::infinity();    // hmin + G_d d (when G_d > 0)
+  double feature_term = std::numeric_limits<double>::infinity();     // max(hmin, 2 width / R) (when R > 0)
+  double other = std::numeric_limits<double>::infinity();            // the smallest term but the distance term
   double h = std::numeric_limits<double>::infinity();                // the smallest term
 };
 

@@ -77,6 +77,23 @@ SegmentIndex::Hit SegmentIndex::first_hit(Point from, Point u, double t_min, dou
   return best;
 }
 
+bool SegmentIndex::within(Point p, double radius, std::size_t cap, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  bool complete = true;
+  grid_.rings(
+      p,
+      [&](std::uint32_t s) {
+        if (!complete || std::find(out.begin(), out.end(), s) != out.end()) return;
+        double t = 0.0;
+        if (!(segment_distance(p, ends_[s][0], ends_[s][1], t) <= radius)) return;
+        if (out.size() == cap) complete = false;
+        else out.push_back(s);
+      },
+      [&](double lower) { return !complete || lower > radius; });
+  std::sort(out.begin(), out.end());
+  return complete;
+}
+
 bool SegmentIndex::odd_crossings(Point p) const noexcept {
   if (ends_.empty()) return false;
   const std::uint32_t row = grid_.row_of(p.y), c0 = grid_.col_of(p.x);

@@ -39,6 +39,9 @@ public:
   // The first segment the ray from + t u (u a unit vector) meets with t in
   // (t_min, t_max]; ties to the lowest index. Parallel segments are never met.
   Hit first_hit(Point from, Point u, double t_min, double t_max) const noexcept;
+  // The segments within `radius` of p (distance <= radius), in `out`,
+  // ascending; false (out incomplete) when there are more than `cap`.
+  bool within(Point p, double radius, std::size_t cap, std::vector<std::uint32_t>& out) const;
   // Parity of the number of segments the ray p + (t, 0), t > 0, crosses
   // (half-open in y, so a vertex on the ray counts once). Meant for points
   // not on any segment: those of a closed boundary give "inside" when odd.

@@ -107,10 +107,10 @@ void run_one(const std::string& path, const Settings& s) {
     random_ns.push_back(ns_per_query(field, shuffled));
     sorted_ns.push_back(ns_per_query(field, sorted));
   }
-  std::printf("%s: hmin %.4g, background %zu points (%zu quadtree), %zu triangles (%zu inside); build %.3f s; "
+  std::printf("%s: hmin %.4g, background %zu points (%zu quadtree), %zu triangles (%zu inside, %zu exact, %.1f pieces each); build %.3f s; "
               "edge_at %.1f ns random, %.1f ns sorted; gradation %zu pops %zu fixes %zu held%s; floored %zu\n",
               path.c_str(), size.min_edge_length, bg.points.size(), rep.steiner_points, bg.triangles.size(),
-              rep.inside_triangles, median(build), median(random_ns), median(sorted_ns), rep.gradation_pops,
+              rep.inside_triangles, rep.exact_triangles, static_cast<double>(rep.coast_candidates) / std::max<double>(1.0, static_cast<double>(rep.exact_triangles)), median(build), median(random_ns), median(sorted_ns), rep.gradation_pops,
               rep.gradation_fixes, rep.gradation_held, rep.gradation_fell_back ? " (fell back)" : "", rep.floored_points);
   if (s.mesh_n <= 0) return;
   double t_field = 0, t_raw = 0;
