@@ -202,8 +202,8 @@ TEST_CASE("distance: a square basin's field never exceeds hmin + G d, d exact") 
     worst = std::max(worst, h / raw);
     sum += h / raw;
   }
-  // Safe, yet close: the field is most of the raw term on average.
-  CHECK(sum / static_cast<double>(probes.size()) > 0.8);
+  // Exact, in fact: the distance term is read with the exact distance.
+  CHECK(sum / static_cast<double>(probes.size()) > 0.999);
   MESSAGE("square basin: ", bg.points.size(), " background points, mean h / raw ",
           sum / static_cast<double>(probes.size()));
 }
@@ -227,6 +227,65 @@ TEST_CASE("distance: islands are coast, and the field is deterministic") {
   CHECK(again.background().points == field.background().points);
   CHECK(again.background().triangles == field.background().triangles);
   CHECK(again.background().edge == field.background().edge);
+}
+
+TEST_CASE("distance: graded below its rate, the lowered linear term still never exceeds hmin + G d") {
+  // The gradation (0.1) is below the distance rate (0.3): the distance term
+  // is graded with the rest, through its point values lowered by the
+  // safety bound (distance_bound.hpp).
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {1});
+  add_ring(sea, {{3, 2}, {5, 2.5}, {4, 4}}, {1});
+  sea.holes = {{4, 2.8}};
+  madd::validate(sea);
+  MeshSizeOptions size = distance_field(0.03, 0.3, 1.0);
+  size.size_gradation = 0.1;
+  const SizeField field(sea, size);
+  double sum = 0.0;
+  const std::vector<Point> probes = random_inside(sea, {0, 0}, {10, 6}, 20000, 23);
+  for (const Point x : probes) {
+    const double raw = std::min(1.0, 0.03 + 0.3 * coast_distance(sea, x));
+    const double h = field.edge_at(x);
+    REQUIRE(h <= raw);
+    REQUIRE(h > 0.0);
+    sum += h / std::min(1.0, 0.03 + 0.1 * coast_distance(sea, x));
+  }
+  // Within the gradation's own cone (hmin + 0.1 d) on average, not far below.
+  MESSAGE("graded distance: mean h / (hmin + 0.1 d) ", sum / static_cast<double>(probes.size()));
+  CHECK(sum / static_cast<double>(probes.size()) > 0.7);
+  CHECK(field.report().floored_points == 0);
+}
+
+TEST_CASE("gradation: with the exact distance term, visible pairs within the rate") {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
+  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
+  sea.holes = {{5, 4}};
+  madd::validate(sea);
+  MeshSizeOptions size = distance_field(0.02, 0.15, 1.5);
+  size.triangle_area_function = [](double x, double y) { return std::hypot(x - 9.0, y - 2.0) < 1.5 ? 1e-3 : 1.0; };
+  size.size_gradation = 0.2;
+  const SizeField field(sea, size);
+  CHECK(field.report().exact_triangles == field.report().inside_triangles);
+  const std::vector<Point> probes = random_inside(sea, {0, 0}, {12, 8}, 6000, 29);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i + 1 < probes.size(); i += 2) {
+    const Point x = probes[i], y = probes[i + 1];
+    CHECK(field.edge_at(x) <= 0.02 + 0.15 * coast_distance(sea, x));
+    if (blocked(sea, x, y)) continue;
+    ++pairs;
+    CHECK(field.edge_at(x) <= field.edge_at(y) + 0.2 * madd::distance(x, y) * (1.0 + 1e-9) + 1e-12);
+  }
+  CHECK(pairs > 1500);
+  // Short steps too, where a jump between triangles would show.
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const Point x : probes) {
+    const Point y{x.x + 0.01 * unit(rng), x.y + 0.01 * unit(rng)};
+    if (!in_domain(sea, y) || blocked(sea, x, y)) continue;
+    CHECK(field.edge_at(x) <= field.edge_at(y) + 0.2 * madd::distance(x, y) * (1.0 + 1e-9) + 1e-12);
+  }
+  CHECK(field.edge_at({9.0, 2.0}) <= madd::detail::edge_of_area(1e-3) * 1.5);
 }
 
 TEST_CASE("gradation: every inside triangle and every visible pair within the rate, never raised") {

@@ -31,8 +31,14 @@ void check_length(const char* field, double value) {
 // terms and the gradation, and this trades its size against the time of a
 // query (the coast pieces a triangle keeps grow with it). Measured on the
 // real coastlines at the settings (docs/mesh.md, "Size field"):
-// 6 gives a background of 2-5% of the mesh's triangles.
-constexpr double cell_over_h = 6.0;
+// 6 gives a background of 2-5% of the mesh's triangles. When the distance
+// term is linear (graded below its rate), its safety bound lowers it by up
+// to G rho at the coast, rho ~ 0.7 cell: the cells there shrink to 0.5 / G
+// h, so that the bound takes at most about a third of hmin.
+double cell_over_h(const MeshSizeOptions& size, bool exact_distance) {
+  constexpr double k = 6.0;
+  return exact_distance || !(size.distance_rate > 0.0) ? k : std::min(k, 0.5 / size.distance_rate);
+}
 
 // The feature-size term at each point, taken down to the smallest raw term
 // of its inside neighbours (one ring). The chord jumps where a channel
@@ -89,8 +95,12 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   Stopwatch clock;
   const Coast coast = trace_coast(domain, size.coast_markers);
   const RawField raw(coast, size);
+  // The exact distance (coast_candidates.hpp), unless the gradation is
+  // below the distance rate: the distance term must then be graded too,
+  // which only its point values can be.
+  const bool exact = size.distance_rate > 0.0 && (size.size_gradation == 0.0 || size.distance_rate <= size.size_gradation);
   BackgroundOptions options;
-  options.cell_over_h = cell_over_h;
+  options.cell_over_h = cell_over_h(size, exact);
   BackgroundBuild built = build_background(coast, raw, options);
   background_ = std::move(built.background);
   report_.steiner_points = built.steiner_points;
@@ -98,10 +108,7 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   hmin_ = size.min_edge_length;
   rate_ = size.distance_rate;
   background_.edge = other_terms(background_, built.samples);
-  // The exact distance (coast_candidates.hpp), unless the gradation is
-  // below the distance rate: the distance term must then be graded too,
-  // which only its point values can be.
-  if (rate_ > 0.0 && (size.size_gradation == 0.0 || rate_ <= size.size_gradation)) {
+  if (exact) {
     exact_ = CoastCandidates(background_, built.samples, coast);
     report_.exact_triangles = exact_.exact_triangles();
     report_.coast_candidates = exact_.candidates();
