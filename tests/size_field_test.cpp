@@ -193,7 +193,8 @@ TEST_CASE("distance: a square basin's field never exceeds hmin + G d, d exact") 
       probes.push_back(madd::triangle_centroid(bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]));
     }
   for (const Point x : probes) {
-    const double raw = std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(basin, x));
+    const double raw =
+        std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(basin, x));
     const double h = field.edge_at(x);
     CAPTURE(x.x);
     CAPTURE(x.y);
@@ -218,7 +219,8 @@ TEST_CASE("distance: islands are coast, and the field is deterministic") {
   const MeshSizeOptions size = distance_field(0.04, 0.2, 1.5);
   const SizeField field(sea, size);
   for (const Point x : random_inside(sea, {0, 0}, {20, 12}, 20000, 13)) {
-    const double raw = std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(sea, x));
+    const double raw =
+        std::min(size.max_edge_length, size.min_edge_length + size.distance_rate * coast_distance(sea, x));
     REQUIRE(field.edge_at(x) <= raw);
   }
   // Next to an island, far from the outer ring, the field is fine.

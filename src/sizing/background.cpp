@@ -65,7 +65,8 @@ void quadtree_points(const Coast& coast, const RawField& raw, const BackgroundOp
                          out.at.size() - first + next.size() + 4 <= options.budget;
       if (split) {
         const double half = 0.5 * c.size;
-        for (const Point corner : {c.lo, Point{m.x, c.lo.y}, Point{c.lo.x, m.y}, m}) next.push_back({corner, half, inside});
+        for (const Point corner : {c.lo, Point{m.x, c.lo.y}, Point{c.lo.x, m.y}, m})
+          next.push_back({corner, half, inside});
       } else if ((inside || (clearance >= options.keep_away * c.size && coast.contains(m))) &&
                  isolated.count({m.x, m.y}) == 0) {
         out.add(m, s);
@@ -140,7 +141,8 @@ std::vector<std::uint8_t> flood_inside(const Triangulation& tri, const std::vect
 
 BackgroundBuild build_background(const Coast& coast, const RawField& raw, const BackgroundOptions& options) {
   Points points;
-  for (std::size_t v = 0; v < coast.points.size(); ++v) points.add(coast.points[v], raw.at(coast.points[v], coast.inward[v]));
+  for (std::size_t v = 0; v < coast.points.size(); ++v)
+    points.add(coast.points[v], raw.at(coast.points[v], coast.inward[v]));
   Pslg pslg;
   pslg.segments = split_pieces(coast, raw, options, points);
   const std::size_t before = points.at.size();

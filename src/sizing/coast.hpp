@@ -27,12 +27,12 @@ struct Coast {
   std::vector<Point> inward;
   // Per piece: the unit normal pointing into the domain (a boundary piece's).
   std::vector<Point> piece_inward;
-  std::vector<Point> coast_vertices;  // the ends of the coast pieces, each once
-  SegmentIndex coast_index;           // the coast pieces
+  std::vector<Point> coast_vertices;          // the ends of the coast pieces, each once
+  SegmentIndex coast_index;                   // the coast pieces
   std::vector<std::uint32_t> coast_piece;     // per segment of coast_index: its piece
-  SegmentIndex boundary_index;        // the boundary pieces, coast or not
+  SegmentIndex boundary_index;                // the boundary pieces, coast or not
   std::vector<std::uint32_t> boundary_piece;  // per segment of boundary_index: its piece
-  SegmentIndex interior_index;        // the interior pieces
+  SegmentIndex interior_index;                // the interior pieces
 
   bool is_boundary(std::uint32_t k) const noexcept { return sides[k] == 1 || sides[k] == 2; }
   // The distance from p to the nearest segment of any kind.

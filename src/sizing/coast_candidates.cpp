@@ -31,8 +31,8 @@ void CoastCandidates::prune(const SizeBackground& bg, std::uint32_t t, std::vect
     double gap = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
       const Point a = p[i], b = p[(i + 1) % 3];
-      gap = std::min({gap, segment_distance(a, e[0], e[1], u), segment_distance(e[0], a, b, u),
-                      segment_distance(e[1], a, b, u)});
+      gap = std::min(
+          {gap, segment_distance(a, e[0], e[1], u), segment_distance(e[0], a, b, u), segment_distance(e[1], a, b, u)});
     }
     return gap > bound;
   });
@@ -56,7 +56,8 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     double reach = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
       const Point p = bg.points[v[i]];
-      const double longest = std::max(madd::distance(p, bg.points[v[(i + 1) % 3]]), madd::distance(p, bg.points[v[(i + 2) % 3]]));
+      const double longest =
+          std::max(madd::distance(p, bg.points[v[(i + 1) % 3]]), madd::distance(p, bg.points[v[(i + 2) % 3]]));
       reach = std::min(reach, samples[v[i]].distance + longest);
     }
     // A relative margin over the rounding of the distances and the circle.

@@ -54,8 +54,8 @@ public:
 
 private:
   void prune(const SizeBackground& bg, std::uint32_t t, std::vector<std::uint32_t>& near) const;
-  std::vector<std::uint32_t> start_;  // per triangle + 1: offsets into piece_ (equal: not exact)
-  std::vector<std::uint32_t> piece_;  // indices into ends_
+  std::vector<std::uint32_t> start_;        // per triangle + 1: offsets into piece_ (equal: not exact)
+  std::vector<std::uint32_t> piece_;        // indices into ends_
   std::vector<std::array<Point, 2>> ends_;  // the coast pieces' ends
   // The same, for the query: a start, the vector to the end and 1 / its
   // squared length (a multiplication where the query would divide).

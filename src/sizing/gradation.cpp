@@ -19,8 +19,8 @@ namespace {
 // be worth it); the others are checked and flattened.
 struct Adjacency {
   std::vector<std::uint32_t> edge_start, edge_to, tri_start, tri;
-  std::vector<double> slope;       // the main pass's slope limit per edge entry
-  std::vector<double> safe_slope;  // the fallback's: rate cos(alpha / 2), alpha the widest angle at the edge
+  std::vector<double> slope;          // the main pass's slope limit per edge entry
+  std::vector<double> safe_slope;     // the fallback's: rate cos(alpha / 2), alpha the widest angle at the edge
   std::vector<double> triangle_safe;  // per triangle: rate cos(alpha / 2), alpha its widest angle
 };
 
@@ -45,7 +45,8 @@ Adjacency adjacency(const SizeBackground& bg, double rate) {
     const bool wide = widest > radians(120.0);
     for (int i = 0; i < 3; ++i) {
       if (!wide) tris[v[i]].push_back(t);
-      for (const std::uint32_t u : {v[(i + 1) % 3], v[(i + 2) % 3]}) edges[v[i]].push_back({u, wide ? safe : rate, safe});
+      for (const std::uint32_t u : {v[(i + 1) % 3], v[(i + 2) % 3]})
+        edges[v[i]].push_back({u, wide ? safe : rate, safe});
     }
   }
   a.edge_start.push_back(0);

@@ -29,10 +29,10 @@
 namespace madd::detail {
 
 struct GradationReport {
-  std::size_t pops = 0;          // queue pops of the label-correcting pass
+  std::size_t pops = 0;  // queue pops of the label-correcting pass
   std::size_t triangle_fixes = 0;
   std::size_t held_triangles = 0;  // flattened too often: held to their safe slope
-  bool fell_back = false;        // the edge-limited pass had to finish
+  bool fell_back = false;          // the edge-limited pass had to finish
 };
 
 // Limits background.edge (over the inside triangles) to gradation `rate`.

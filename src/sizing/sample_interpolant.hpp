@@ -39,7 +39,7 @@ private:
   std::span<const ValuedPoint> samples_;
   NearestSample nearest_;
   bool linear_ = true;
-  Triangulation delaunay_;     // of the kept samples
+  Triangulation delaunay_;      // of the kept samples
   std::vector<double> values_;  // per point of delaunay_: its area, +infinity for "no bound"
   TriangleLocator locator_;
   double nearest_value(Point p) const noexcept;

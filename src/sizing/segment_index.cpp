@@ -35,9 +35,8 @@ SegmentIndex::SegmentIndex(const std::vector<Point>& points, const std::vector<S
   const auto rows = static_cast<std::uint32_t>(std::clamp(std::floor(height / cell) + 1.0, 1.0, count + 1.0));
   grid_ = UniformGrid(lo, cell, cell, cols, rows);
   const double tol = 1e-9 * cell;  // far above the rounding of the cell arithmetic
-  grid_.fill(static_cast<std::uint32_t>(ends_.size()), UniformGrid::Index::by_cell, [&](std::uint32_t i, auto&& add) {
-    grid_.segment_cells(ends_[i][0], ends_[i][1], tol, tol, add);
-  });
+  grid_.fill(static_cast<std::uint32_t>(ends_.size()), UniformGrid::Index::by_cell,
+             [&](std::uint32_t i, auto&& add) { grid_.segment_cells(ends_[i][0], ends_[i][1], tol, tol, add); });
 }
 
 SegmentIndex::Nearest SegmentIndex::nearest(Point p) const noexcept {

@@ -19,13 +19,13 @@ namespace madd::detail {
 class SegmentIndex {
 public:
   struct Nearest {
-    double distance = 0.0;              // +infinity when there is no segment
+    double distance = 0.0;                // +infinity when there is no segment
     std::uint32_t segment = 0xffffffffu;  // lowest index among the nearest
-    Point at;                           // the nearest point of that segment
-    double t = 0.0;                     // its parameter along the segment, in [0, 1]
+    Point at;                             // the nearest point of that segment
+    double t = 0.0;                       // its parameter along the segment, in [0, 1]
   };
   struct Hit {
-    double t = 0.0;                     // along the ray (its direction is a unit vector): the distance
+    double t = 0.0;                       // along the ray (its direction is a unit vector): the distance
     std::uint32_t segment = 0xffffffffu;  // no_index: none in range
   };
 

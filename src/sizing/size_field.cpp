@@ -52,8 +52,7 @@ std::vector<double> eroded_feature_term(const SizeBackground& bg, const std::vec
   for (std::size_t t = 0; t < bg.triangles.size(); ++t) {
     if (bg.inside[t] == 0) continue;
     const auto& v = bg.triangles[t];
-    const double least =
-        std::min({samples[v[0]].feature_term, samples[v[1]].feature_term, samples[v[2]].feature_term});
+    const double least = std::min({samples[v[0]].feature_term, samples[v[1]].feature_term, samples[v[2]].feature_term});
     for (const std::uint32_t i : v) out[i] = std::min(out[i], least);
   }
   return out;
@@ -98,7 +97,8 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   // The exact distance (coast_candidates.hpp), unless the gradation is
   // below the distance rate: the distance term must then be graded too,
   // which only its point values can be.
-  const bool exact = size.distance_rate > 0.0 && (size.size_gradation == 0.0 || size.distance_rate <= size.size_gradation);
+  const bool exact =
+      size.distance_rate > 0.0 && (size.size_gradation == 0.0 || size.distance_rate <= size.size_gradation);
   BackgroundOptions options;
   options.cell_over_h = cell_over_h(size, exact);
   BackgroundBuild built = build_background(coast, raw, options);

@@ -19,16 +19,16 @@ namespace madd::detail {
 
 // What building a field did (for benchmarks and tests; not part of a result).
 struct SizeFieldReport {
-  std::size_t steiner_points = 0;       // quadtree points of the background
+  std::size_t steiner_points = 0;  // quadtree points of the background
   std::size_t inside_triangles = 0;
-  std::size_t exact_triangles = 0;      // reading the exact distance (coast_candidates.hpp)
-  std::size_t coast_candidates = 0;     // coast pieces kept by them, in all
-  std::size_t floored_points = 0;       // distance values the safety bound would take to <= 0 (see size_field.cpp)
+  std::size_t exact_triangles = 0;   // reading the exact distance (coast_candidates.hpp)
+  std::size_t coast_candidates = 0;  // coast pieces kept by them, in all
+  std::size_t floored_points = 0;    // distance values the safety bound would take to <= 0 (see size_field.cpp)
   std::size_t gradation_pops = 0;
   std::size_t gradation_fixes = 0;
-  std::size_t gradation_held = 0;       // triangles held to their safe slope (gradation.hpp)
+  std::size_t gradation_held = 0;  // triangles held to their safe slope (gradation.hpp)
   bool gradation_fell_back = false;
-  double seconds = 0.0;                 // to build the whole field
+  double seconds = 0.0;  // to build the whole field
 };
 
 // The ranges of the field's options, without the domain: every length and
@@ -60,7 +60,7 @@ public:
 
 private:
   SizeBackground background_;
-  TriangleLocator locator_;  // a grid of start triangles for a walk
+  TriangleLocator locator_;     // a grid of start triangles for a walk
   CoastCandidates exact_;       // the coast pieces near each triangle: d exactly
   std::vector<double> graded_;  // per point: the linear part (every term but an exact distance term)
   double hmin_ = 0.0, rate_ = 0.0;
@@ -68,9 +68,7 @@ private:
   // Less a hair against the rounding of d, computed here and by any checker.
   double exact_term(double d) const noexcept { return (hmin_ + rate_ * d) * (1.0 - 1e-12); }
   SizeFieldReport report_;
-  TriangleView view() const noexcept {
-    return {background_.points, background_.triangles, background_.neighbours};
-  }
+  TriangleView view() const noexcept { return {background_.points, background_.triangles, background_.neighbours}; }
 };
 
 }  // namespace madd::detail

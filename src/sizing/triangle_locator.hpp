@@ -42,7 +42,7 @@ public:
 
 private:
   Location walk(const TriangleView& view, Point p, std::uint32_t t) const noexcept;
-  UniformGrid frame_;                // only its cells' frame: col_of, row_of
+  UniformGrid frame_;                 // only its cells' frame: col_of, row_of
   std::vector<std::uint32_t> start_;  // per cell (row-major): a triangle near its centre
 };
 

@@ -107,26 +107,39 @@ void run_one(const std::string& path, const Settings& s) {
     random_ns.push_back(ns_per_query(field, shuffled));
     sorted_ns.push_back(ns_per_query(field, sorted));
   }
-  std::printf("%s: hmin %.4g, background %zu points (%zu quadtree), %zu triangles (%zu inside, %zu exact, %.1f pieces each); build %.3f s; "
+  std::printf("%s: hmin %.4g, background %zu points (%zu quadtree), %zu triangles (%zu inside, %zu exact, %.1f pieces "
+              "each); build %.3f s; "
               "edge_at %.1f ns random, %.1f ns sorted; gradation %zu pops %zu fixes %zu held%s; floored %zu\n",
               path.c_str(), size.min_edge_length, bg.points.size(), rep.steiner_points, bg.triangles.size(),
-              rep.inside_triangles, rep.exact_triangles, static_cast<double>(rep.coast_candidates) / std::max<double>(1.0, static_cast<double>(rep.exact_triangles)), median(build), median(random_ns), median(sorted_ns), rep.gradation_pops,
-              rep.gradation_fixes, rep.gradation_held, rep.gradation_fell_back ? " (fell back)" : "", rep.floored_points);
+              rep.inside_triangles, rep.exact_triangles,
+              static_cast<double>(rep.coast_candidates) /
+                  std::max<double>(1.0, static_cast<double>(rep.exact_triangles)),
+              median(build), median(random_ns), median(sorted_ns), rep.gradation_pops, rep.gradation_fixes,
+              rep.gradation_held, rep.gradation_fell_back ? " (fell back)" : "", rep.floored_points);
   if (s.mesh_n <= 0) return;
   double t_field = 0, t_raw = 0;
   const std::size_t with_field = mesh_with(
-      domain, s, [&](double x, double y) { return madd::detail::area_of_edge(field.edge_at({x, y})); }, t_field);
+      domain, s,
+      [&](double x, double y) {
+        return madd::detail::area_of_edge(field.edge_at({x, y}));
+      },
+      t_field);
   // The raw terms exactly, without the gradation (there is no exact form of it).
   madd::MeshSizeOptions raw_size = size;
   raw_size.size_gradation = 0.0;
   const madd::detail::Coast coast = madd::detail::trace_coast(domain, {});
   const madd::detail::RawField raw(coast, raw_size);
   const std::size_t with_raw = mesh_with(
-      domain, s, [&](double x, double y) { return madd::detail::area_of_edge(raw.at({x, y}).h); }, t_raw);
+      domain, s,
+      [&](double x, double y) {
+        return madd::detail::area_of_edge(raw.at({x, y}).h);
+      },
+      t_raw);
   std::printf("  mesh -n %d -q 30: %zu triangles with the field (%.2f s; background inside %.2f%% of it), "
               "%zu with the raw terms exactly (%.2f s): field / raw %.3f\n",
-              s.mesh_n, with_field, t_field, 100.0 * static_cast<double>(rep.inside_triangles) / static_cast<double>(with_field), with_raw,
-              t_raw, static_cast<double>(with_field) / static_cast<double>(with_raw));
+              s.mesh_n, with_field, t_field,
+              100.0 * static_cast<double>(rep.inside_triangles) / static_cast<double>(with_field), with_raw, t_raw,
+              static_cast<double>(with_field) / static_cast<double>(with_raw));
 }
 
 int run(int argc, char** argv) {
