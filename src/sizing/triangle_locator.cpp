@@ -56,21 +56,23 @@ Location TriangleLocator::locate(const TriangleView& view, Point p) const noexce
   return walk(view, p, start_[std::size_t{frame_.row_of(p.y)} * frame_.cols() + frame_.col_of(p.x)]);
 }
 
-// orient2d with its first, floating-point stage inline (the walk's hot
-// path: a call per edge test cost half the query); exact whenever that
-// stage cannot decide. |l| + |r| bounds Shewchuk's detsum, so the bound is
-// never looser than orient2d's own first stage.
-inline double orient(Point a, Point b, Point c) noexcept {
-  const double l = (a.x - c.x) * (b.y - c.y), r = (a.y - c.y) * (b.x - c.x), det = l - r;
+// (b - p) x (c - p), the sign exact: orient2d(b, c, p) computed the same
+// way up to its first filter, which is inline here (the walk's hot path);
+// orient2d itself decides when that stage cannot. |l| + |r| bounds
+// Shewchuk's detsum, so the filter is never looser than orient2d's.
+inline double side(Point db, Point dc, Point b, Point c, Point p) noexcept {
+  const double l = db.x * dc.y, r = db.y * dc.x, det = l - r;
   const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
   if (det > bound || -det > bound) return det;
-  return orient2d(a, b, c);
+  return orient2d(b, c, p);
 }
 
-// A visibility walk: cross an edge p lies strictly beyond, chosen in an
-// order a linear congruential generator rotates (a fixed order may circle
-// in a constrained triangulation; this one ends with probability one, and
-// the step bound only limits bad luck: a scan then decides).
+// A visibility walk: cross an edge p lies strictly beyond, chosen, when
+// there are two, by a linear congruential generator (a fixed rule may
+// circle in a constrained triangulation; this one ends with probability
+// one, and the step bound only limits bad luck: a scan then decides). The
+// three sides of p are computed at once from p's offsets to the corners:
+// in the last triangle they are p's barycentric weights.
 Location TriangleLocator::walk(const TriangleView& view, Point p, std::uint32_t t) const noexcept {
   const Point* P = view.points.data();
   const auto* tv = view.triangles.data();
@@ -80,26 +82,32 @@ Location TriangleLocator::walk(const TriangleView& view, Point p, std::uint32_t 
   for (std::size_t steps = 4 * view.triangles.size() + 64; steps > 0; --steps) {
     const std::array<std::uint32_t, 3>& v = tv[t];
     const std::array<std::uint32_t, 3>& n = tn[t];
-    const Point corner[3] = {P[v[0]], P[v[1]], P[v[2]]};
-    state = state * 1103515245u + 12345u;
-    std::uint32_t i = (((state >> 16) & 0xffffu) * 3u) >> 16;  // 0, 1 or 2
-    std::uint32_t next = no_index;
-    for (int k = 0; k < 3; ++k, i = i == 2 ? 0 : i + 1) {
-      if (n[i] == came && came != no_index) continue;  // p is on this side of the edge just crossed
-      if (orient(corner[i == 2 ? 0 : i + 1], corner[i == 0 ? 2 : i - 1], p) < 0) {
-        if (n[i] == no_index) return {t, false};  // beyond a hull edge: outside the hull
-        next = n[i];
-        break;
-      }
+    const Point a = P[v[0]], b = P[v[1]], c = P[v[2]];
+    const Point da = a - p, db = b - p, dc = c - p;
+    Location here{t, true, {side(db, dc, b, c, p), side(dc, da, c, a, p), side(da, db, a, b, p)}};
+    // The edges p is strictly beyond, less the one just crossed (p is on its inner side).
+    unsigned beyond = (here.weight[0] < 0 ? 1u : 0u) | (here.weight[1] < 0 ? 2u : 0u) | (here.weight[2] < 0 ? 4u : 0u);
+    for (int i = 0; i < 3; ++i)
+      if (n[i] == came && came != no_index) beyond &= ~(1u << i);
+    if (beyond == 0) return here;
+    int i = beyond == 1 ? 0 : beyond == 2 ? 1 : beyond == 4 ? 2 : -1;
+    if (i < 0) {  // two edges: choose at random
+      state = state * 1103515245u + 12345u;
+      const bool second = (state >> 16) & 1u;
+      const int first = (beyond & 1u) ? 0 : 1, other = (beyond & 4u) ? 2 : 1;
+      i = second ? other : first;
     }
-    if (next == no_index) return {t, true};
+    if (n[i] == no_index) return {t, false};  // beyond a hull edge: outside the hull
     came = t;
-    t = next;
+    t = n[i];
   }
   for (std::uint32_t u = 0; u < view.triangles.size(); ++u) {
     bool in = true;
     for (std::uint32_t i = 0; i < 3 && in; ++i) in = orient2d(P[tv[u][(i + 1) % 3]], P[tv[u][(i + 2) % 3]], p) >= 0;
-    if (in) return {u, true};
+    if (in) {
+      const Point a = P[tv[u][0]] - p, b = P[tv[u][1]] - p, c = P[tv[u][2]] - p;
+      return {u, true, {cross(b, c), cross(c, a), cross(a, b)}};
+    }
   }
   return {t, false};
 }
@@ -107,9 +115,11 @@ Location TriangleLocator::walk(const TriangleView& view, Point p, std::uint32_t 
 double interpolate(const TriangleView& view, std::span<const double> values, Location at, Point p) noexcept {
   if (at.triangle == no_index) return std::numeric_limits<double>::quiet_NaN();
   const auto& v = view.triangles[at.triangle];
-  const Point a = view.points[v[0]], b = view.points[v[1]], c = view.points[v[2]];
-  double w0 = cross(b - p, c - p), w1 = cross(c - p, a - p), w2 = cross(a - p, b - p);
-  if (!at.inside) w0 = std::max(w0, 0.0), w1 = std::max(w1, 0.0), w2 = std::max(w2, 0.0);
+  double w0 = at.weight[0], w1 = at.weight[1], w2 = at.weight[2];
+  if (!at.inside) {
+    const Point a = view.points[v[0]] - p, b = view.points[v[1]] - p, c = view.points[v[2]] - p;
+    w0 = std::max(cross(b, c), 0.0), w1 = std::max(cross(c, a), 0.0), w2 = std::max(cross(a, b), 0.0);
+  }
   const double sum = w0 + w1 + w2;
   if (!(sum > 0.0)) return std::min({values[v[0]], values[v[1]], values[v[2]]});  // p on a corner, rounded
   const double h = (w0 * values[v[0]] + w1 * values[v[1]] + w2 * values[v[2]]) / sum;

@@ -30,6 +30,10 @@ struct TriangleView {
 struct Location {
   std::uint32_t triangle = 0xffffffffu;  // no_index: no triangles at all
   bool inside = false;                   // p is in the triangle's closure (else outside the hull, beyond it)
+  // When inside: twice the signed areas of p with each edge (the edge
+  // opposite corner i): p's barycentric weights, unnormalised, which the
+  // walk computed anyway.
+  double weight[3] = {0.0, 0.0, 0.0};
 };
 
 class TriangleLocator {
