@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "madd/error.hpp"
@@ -365,6 +366,35 @@ TEST_CASE("feature size: a channel of width W gets h <= W / R along it") {
   // the basin's (20 across: 2 * 10 / 3 > hmax).
   CHECK(field.edge_at({6.0, 5.0}) == doctest::Approx(3.0));
   CHECK(field.edge_at({10.0, 14.0}) > 2.0);
+}
+
+TEST_CASE("edge_at: the same from several threads at once as from one") {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
+  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
+  sea.holes = {{6.5, 5.5}};
+  madd::validate(sea);
+  MeshSizeOptions size = distance_field(0.04, 0.15, 1.5);
+  size.cells_across = 3.0;
+  size.size_gradation = 0.2;
+  const SizeField field(sea, size);
+  const std::vector<Point> probes = random_inside(sea, {0, 0}, {20, 12}, 20000, 37);
+  std::vector<double> alone(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) alone[i] = field.edge_at(probes[i]);
+  std::vector<std::vector<double>> together(4, std::vector<double>(probes.size()));
+  std::vector<std::thread> threads;
+  for (std::size_t k = 0; k < together.size(); ++k)
+    threads.emplace_back([&, k] {
+      for (std::size_t i = 0; i < probes.size(); ++i) {
+        const std::size_t j = (i * 7919 + k * 1237) % probes.size();  // each thread in its own order
+        together[k][j] = field.edge_at(probes[j]);
+      }
+    });
+  for (std::thread& t : threads) t.join();
+  for (const auto& run : together) CHECK(run == alone);
+  // A copy reads the same (the locator keeps no view of the background).
+  const SizeField copy = field;
+  for (std::size_t i = 0; i < probes.size(); i += 97) CHECK(copy.edge_at(probes[i]) == alone[i]);
 }
 
 TEST_CASE("options: bad field options are OptionErrors naming the field") {

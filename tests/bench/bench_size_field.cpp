@@ -76,9 +76,14 @@ std::size_t mesh_with(const madd::Pslg& domain, const Settings& s, std::function
   o.size.min_triangle_angle_deg = 30;
   o.size.triangle_area_function = std::move(area);
   const double start = madd::bench::now_seconds();
-  const madd::Mesh m = madd::mesh(domain, o);
-  seconds = madd::bench::now_seconds() - start;
-  return m.triangle_count();
+  try {
+    const madd::Mesh m = madd::mesh(domain, o);
+    seconds = madd::bench::now_seconds() - start;
+    return m.triangle_count();
+  } catch (const std::exception& e) {
+    std::printf("  mesh failed: %s\n", e.what());
+    return 0;
+  }
 }
 
 void run_one(const std::string& path, const Settings& s) {
