@@ -16,8 +16,10 @@
 
 #include "madd/error.hpp"
 #include "madd/mesh.hpp"
+#include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"
+#include "madd/triangulation.hpp"
 #include "sizing/nearest_sample.hpp"
 #include "sizing/sample_interpolant.hpp"
 #include "sizing/size_field.hpp"
@@ -208,6 +210,50 @@ TEST_CASE("distance: a square basin's field never exceeds hmin + G d, d exact") 
   CHECK(sum / static_cast<double>(probes.size()) > 0.999);
   MESSAGE("square basin: ", bg.points.size(), " background points, mean h / raw ",
           sum / static_cast<double>(probes.size()));
+}
+
+TEST_CASE("distance: on every bundled domain, never above hmin + G d, in both readings of the term") {
+  // Holes, interior segments, spirals, combs, a thin annulus: the domain's
+  // own triangulation (madd::triangulate) gives the points and the boundary
+  // edges, independently of the field's code.
+  for (const char* name :
+       {"archipelago", "comb", "estuary", "key", "l_shape", "near_collinear", "pipe", "spiral", "thin_annulus"}) {
+    CAPTURE(name);
+    const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/" + name + ".poly");
+    const madd::Triangulation tri = madd::triangulate(domain);
+    std::vector<std::pair<Point, Point>> boundary;
+    for (std::size_t t = 0; t < tri.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i)
+        if (tri.neighbours[t][i] == madd::no_index)
+          boundary.push_back({tri.points[tri.triangles[t][(i + 1) % 3]], tri.points[tri.triangles[t][(i + 2) % 3]]});
+    double x0 = infinity, x1 = -infinity, y0 = infinity, y1 = -infinity;
+    for (const Point p : domain.points)
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    const double hmin = std::max(x1 - x0, y1 - y0) / 400.0;
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const double gradation : {0.25, 0.1}) {  // the exact term, then the lowered linear one
+      MeshSizeOptions size = distance_field(hmin, 0.2, 40.0 * hmin);
+      size.cells_across = 3.0;
+      size.size_gradation = gradation;
+      const SizeField field(domain, size);
+      CHECK(field.report().floored_points == 0);
+      for (int q = 0; q < 3000; ++q) {
+        const auto& v = tri.triangles[rng() % tri.triangles.size()];
+        double a = unit(rng), b = unit(rng);
+        if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
+        const Point o = tri.points[v[0]];
+        const Point x = o + a * (tri.points[v[1]] - o) + b * (tri.points[v[2]] - o);
+        double d = infinity;
+        for (const auto& [p, r] : boundary) d = std::min(d, segment_distance(x, p, r));
+        const double h = field.edge_at(x);
+        CAPTURE(x.x);
+        CAPTURE(x.y);
+        REQUIRE(h <= std::min(40.0 * hmin, hmin + 0.2 * d));
+        REQUIRE(h > 0.0);
+      }
+    }
+  }
 }
 
 TEST_CASE("distance: islands are coast, and the field is deterministic") {
