@@ -281,7 +281,7 @@ TEST_CASE("distance: islands are coast, and the field is deterministic") {
 TEST_CASE("distance: graded below its rate, the lowered linear term still never exceeds hmin + G d") {
   // The gradation (0.1) is below the distance rate (0.3): the distance term
   // is graded with the rest, through its point values lowered by the
-  // safety bound (distance_bound.hpp).
+  // safety bound (src/sizing/distance_bound.hpp).
   Pslg sea;
   add_ring(sea, {{0, 0}, {10, 0}, {10, 6}, {0, 6}}, {1});
   add_ring(sea, {{3, 2}, {5, 2.5}, {4, 4}}, {1});

@@ -60,8 +60,8 @@ void quadtree_points(const Coast& coast, const RawField& raw, const BackgroundOp
           inside = true;
         }
       }
-      const RawSample s = raw.at(m);
-      const bool split = c.size > options.cell_over_h * s.h && c.size > smallest &&
+      const RawSample sample = raw.at(m);
+      const bool split = c.size > options.cell_over_h * sample.edge && c.size > smallest &&
                          out.at.size() - first + next.size() + 4 <= options.budget;
       if (split) {
         const double half = 0.5 * c.size;
@@ -69,7 +69,7 @@ void quadtree_points(const Coast& coast, const RawField& raw, const BackgroundOp
           next.push_back({corner, half, inside});
       } else if ((inside || (clearance >= options.keep_away * c.size && coast.contains(m))) &&
                  isolated.count({m.x, m.y}) == 0) {
-        out.add(m, s);
+        out.add(m, sample);
       }
     }
     std::swap(level, next);
@@ -94,7 +94,7 @@ std::vector<Segment> split_pieces(const Coast& coast, const RawField& raw, const
     while (!stack.empty()) {
       const Part p = stack.back();
       stack.pop_back();
-      const double h = std::min(out.samples[p.a].h, out.samples[p.b].h);
+      const double h = std::min(out.samples[p.a].edge, out.samples[p.b].edge);
       if (!((p.t1 - p.t0) * len > options.cell_over_h * h) || p.t1 - p.t0 < 0x1p-30) {
         chains.push_back({p.a, p.b, piece.marker});
         continue;
@@ -157,7 +157,7 @@ BackgroundBuild build_background(const Coast& coast, const RawField& raw, const 
   out.background.triangles = std::move(tri.triangles);
   out.background.neighbours = std::move(tri.neighbours);
   out.background.edge.resize(points.samples.size());
-  for (std::size_t v = 0; v < points.samples.size(); ++v) out.background.edge[v] = points.samples[v].h;
+  for (std::size_t v = 0; v < points.samples.size(); ++v) out.background.edge[v] = points.samples[v].edge;
   out.samples = std::move(points.samples);
   out.steiner_points = out.samples.size() - before;
   return out;

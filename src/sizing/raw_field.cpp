@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sizing/feature_width.hpp"
 #include "sizing/edge_length.hpp"
@@ -10,6 +11,8 @@
 namespace madd::detail {
 
 namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
 
 std::vector<ValuedPoint> valued(const std::vector<Point>& points) {
   std::vector<ValuedPoint> out;
@@ -34,14 +37,14 @@ RawField::RawField(const Coast& coast, const MeshSizeOptions& size)
 }
 
 RawSample RawField::at(Point x, Point inward) const {
-  RawSample s;
+  RawSample out;
   const SegmentIndex::Nearest nearest = coast_.coast_index.nearest(x);
-  s.distance = nearest.distance;
+  out.distance = nearest.distance;
   const std::uint32_t v = nearest_vertex_.nearest(x);
-  if (v != no_index) s.vertex_distance = distance(x, coast_vertices_[v].at);
-  double other = size_.max_edge_length > 0.0 ? size_.max_edge_length : s.h;
+  if (v != no_index) out.vertex_distance = distance(x, coast_vertices_[v].at);
+  double other = size_.max_edge_length > 0.0 ? size_.max_edge_length : infinity;
   if (size_.size_gradation > 0.0) {
-    double area = size_.max_triangle_area > 0.0 ? size_.max_triangle_area : s.h;
+    double area = size_.max_triangle_area > 0.0 ? size_.max_triangle_area : infinity;
     if (size_.triangle_area_function) {
       const double a = size_.triangle_area_function(x.x, x.y);
       if (a > 0.0) area = std::min(area, a);  // false for NaN too: no bound
@@ -49,19 +52,19 @@ RawSample RawField::at(Point x, Point inward) const {
     if (samples_) area = std::min(area, samples_->area_at(x));
     other = std::min(other, edge_of_area(area));
   }
-  if (size_.distance_rate > 0.0) s.distance_term = size_.min_edge_length + size_.distance_rate * s.distance;
-  double h = std::min(other, s.distance_term);
+  if (size_.distance_rate > 0.0) out.distance_term = size_.min_edge_length + size_.distance_rate * out.distance;
+  double h = std::min(other, out.distance_term);
   if (size_.cells_across > 0.0) {
     // A chord longer than R h gives a term above h: it cannot bind.
     const double t_max = std::isfinite(h) ? size_.cells_across * h : 4.0 * extent_ + 1.0;
-    s.width = feature_width(coast_, x, nearest, inward, t_max, extent_);
-    s.feature_term = std::max(size_.min_edge_length, 2.0 * s.width / size_.cells_across);
-    other = std::min(other, s.feature_term);
-    h = std::min(h, s.feature_term);
+    out.width = feature_width(coast_, x, nearest, inward, t_max, extent_);
+    out.feature_term = std::max(size_.min_edge_length, 2.0 * out.width / size_.cells_across);
+    other = std::min(other, out.feature_term);
+    h = std::min(h, out.feature_term);
   }
-  s.other = other;
-  s.h = h;
-  return s;
+  out.other = other;
+  out.edge = h;
+  return out;
 }
 
 }  // namespace madd::detail

@@ -28,7 +28,7 @@ struct RawSample {
   double distance_term = std::numeric_limits<double>::infinity();    // hmin + G_d d (when G_d > 0)
   double feature_term = std::numeric_limits<double>::infinity();     // max(hmin, 2 width / R) (when R > 0)
   double other = std::numeric_limits<double>::infinity();            // the smallest term but the distance term
-  double h = std::numeric_limits<double>::infinity();                // the smallest term
+  double edge = std::numeric_limits<double>::infinity();             // h: the smallest term
 };
 
 // Keeps references to `coast` and `size`, which must outlive it; neither

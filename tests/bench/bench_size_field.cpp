@@ -137,7 +137,7 @@ void run_one(const std::string& path, const Settings& s) {
   const std::size_t with_raw = mesh_with(
       domain, s,
       [&](double x, double y) {
-        return madd::detail::area_of_edge(raw.at({x, y}).h);
+        return madd::detail::area_of_edge(raw.at({x, y}).edge);
       },
       t_raw);
   std::printf("  mesh -n %d -q 30: %zu triangles with the field (%.2f s; background inside %.2f%% of it), "
