@@ -44,7 +44,8 @@ constexpr const char* decompose_exit_codes =
 const CommandOptions& decompose_options = options_of("decompose");
 
 // The command line; its decomposition options are line.mesh.decomposition,
-// the discretisation of the outputs (--max-area, --size-fn) line.mesh.size.
+// the discretisation of the outputs (--max-area, --size-fn, --sizes, the
+// size field) line.mesh.size.
 struct DecomposeArgs {
   std::string input;
   CommandLine line;
@@ -140,14 +141,13 @@ void write_outputs(const DecomposeArgs& args, const Decomposition& d, const Metr
 }
 
 // Runs f(), restating an OptionError of the library (a domain-dependent
-// check, an area function's value) with the CLI's option names.
+// check: an area function's value, the coast markers) with the CLI's option names.
 template <class F>
 auto with_cli_option_names(const CommandLine& line, F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const OptionError& e) {
-    const std::string message = cli_message(e, Scope::decomposition, decompose_options, line, false);
-    throw OptionError(e.option(), e.requirement(), message);
+    throw OptionError(e.option(), e.requirement(), cli_message(e, decompose_options, line));
   }
 }
 
@@ -158,7 +158,8 @@ int decompose_body(void* context) {
   std::vector<PhaseTime> times;
   auto start = std::chrono::steady_clock::now();
   progress.say("reading " + args.input);
-  DecomposeOptions options = with_background_files(line).decomposition;
+  const MeshOptions read = with_background_files(line);
+  DecomposeOptions options = read.decomposition;
   if (progress.enabled())
     options.progress = [&progress](std::uint32_t done, std::uint32_t target) { progress.count(done, target); };
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
@@ -189,8 +190,8 @@ int decompose_body(void* context) {
   writing_outputs = 1;
   // For external meshers: every segment split once to the size bound and the
   // local feature size, so that meshers keeping boundary segments join up.
-  if (line.mesh.size.has_size_bound()) {
-    write_outputs(args, discretise(d, domain, line.mesh.size), m);
+  if (read.size.has_size_bound()) {
+    write_outputs(args, with_cli_option_names(line, [&] { return discretise(d, domain, read.size); }), m);
   } else {
     write_outputs(args, d, m);
   }
@@ -230,6 +231,16 @@ std::string option_problem(const CommandLine& line) {
     check_options(line.svg);
   } catch (const OptionError& e) {
     return cli_message(e, Scope::svg, decompose_options, line);
+  }
+  MeshOptions mesh = line.mesh;  // the discretisation of the outputs
+  if (!line.sizes_file.empty()) mesh.size.triangle_area_samples = {{{0, 0}, 1.0}};
+  try {
+    check_options(mesh);
+  } catch (const OptionError& e) {
+    std::string message = cli_message(e, Scope::mesh_size, decompose_options, line);
+    // --gradation was the grading factor here until it became the size field's.
+    if (e.option() == "size_gradation") message += " (grading by weights is --weight-gradation)";
+    return message;
   }
   return {};
 }

@@ -52,7 +52,13 @@ int mesh_body(void* context) {
   }
   const Pslg domain = read_domain(args.input);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
-  const MeshRun run = mesh_with_report(domain, options);
+  const MeshRun run = [&] {
+    try {
+      return mesh_with_report(domain, options);
+    } catch (const OptionError& e) {  // a check that needs the domain (the coast markers), said with the flags
+      throw OptionError(e.option(), e.requirement(), cli_message(e, mesh_options(), line));
+    }
+  }();
   const Mesh& m = run.mesh;
   const MeshReport& report = run.report;
   progress.say("writing");

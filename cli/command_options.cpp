@@ -23,10 +23,11 @@ constexpr OptionUse decompose_uses[] = {
     {"smoothing", "smoothing iterations, Sec. 5.1 (default 1; 0 = off)"},
     {"rebalance", "re-split subdomains above X x the mean area with their\n"
                   "neighbours (default 1.2; 0 = off; uniform or --weights runs)"},
-    {"gradation",
+    {"weight-gradation",
      "grade by the boundary density weights (vertex attribute 1):\n"
      "a subdomain weighs r * area + A * weight (default 0 = uniform)\n"
-     "(-a A is deprecated here: madd mesh's -a is the largest triangle area)",
+     "(was --gradation, now the size field's; -a A is deprecated here:\n"
+     "madd mesh's -a is the largest triangle area)",
      deprecated},
     {"adaptive-refine", "graded by boundary weights: heavier edges get up to L times\n"
                         "more refinement points (default 4; 1 = uniform; 1 <= L <= 64)"},
@@ -47,6 +48,17 @@ constexpr OptionUse decompose_uses[] = {
      "files, meshed one by one by `triangle -pq30Y`, join up",
      none},
     {"size-fn", "the same, the largest area at (x, y) given by EXPR"},
+    {"sizes", "the same, the largest area at background nodes (.node,\n"
+              "attribute 1), linear between them"},
+    {"sizes-nearest", "read --sizes by the nearest node's value instead"},
+    {"hmin", "the same, by madd mesh's size field in edge lengths h:\n"
+             "h at the coast (--distance-rate), least h of --cells-across"},
+    {"hmax", "largest h anywhere"},
+    {"distance-rate", "h <= hmin + G x the distance to the coast"},
+    {"cells-across", "at least R triangles across every channel and strait"},
+    {"gradation", "h(x) <= h(y) + G |x - y| (was the decomposition's\n"
+                  "grading factor: that is --weight-gradation now)"},
+    {"coast-markers", "the boundary markers that are coast (default: all)"},
     {"no-verify", "skip the self-check (verify_decomposition) before writing"},
     {nullptr, ""},
     {nullptr, "outputs (none by default; see docs/formats.md):"},
@@ -79,11 +91,22 @@ constexpr OptionUse mesh_uses[] = {
     {"max-area", "largest triangle area (default none)"},
     {"size-fn", "largest triangle area at (x, y), an expression in x and y"},
     {"sizes", "largest triangle area at background nodes (.node, attribute 1;\n"
-              "the nearest node's value applies)"},
+              "linear over the nodes' Delaunay triangulation)"},
+    {"sizes-nearest", "read --sizes by the nearest node's value instead"},
     {"balance", "what the decomposition balances: the expected triangle\n"
                 "count of each subdomain (work, default) or its area"},
     {"no-off-centres", "insert circumcentres only (more triangles)"},
     {"no-verify", "skip the self-check (verify_mesh) before writing"},
+    {nullptr, "size field, in edge lengths h (area bound sqrt(3)/4 h^2; 0 = off):"},
+    {"hmin", "h at the coast (--distance-rate), least h of --cells-across"},
+    {"hmax", "largest h anywhere"},
+    {"distance-rate", "h <= hmin + G x the distance to the coast (needs --hmin)"},
+    {"cells-across", "at least R triangles across every channel, strait and gap:\n"
+                     "h <= 2 x the local half-width of the water / R"},
+    {"gradation", "h(x) <= h(y) + G |x - y|: sizes grow by at most G per unit\n"
+                  "length (needs another size bound)"},
+    {"coast-markers", "the boundary markers that are coast for --distance-rate and\n"
+                      "--cells-across (default: every boundary segment)"},
     {nullptr, "decomposition:"},
     {"subdomains", "number of subdomains (default: the thread count x 4)"},
     {"min-angle", "Phi0, the smallest angle a separator makes (default 60)"},

@@ -22,8 +22,11 @@ std::string option_problem(const CommandLine& line) {
   } catch (const OptionError& e) {
     return cli_message(e, Scope::decomposition, mesh_options(), line);
   }
+  MeshOptions mesh = line.mesh;
+  // The --sizes file is read later; its presence is what a check needs (a size bound to grade).
+  if (!line.sizes_file.empty()) mesh.size.triangle_area_samples = {{{0, 0}, 1.0}};
   try {
-    check_options(line.mesh);
+    check_options(mesh);
   } catch (const OptionError& e) {
     return cli_message(e, Scope::mesh_size, mesh_options(), line);
   }

@@ -162,4 +162,10 @@ std::string cli_message(const OptionError& error, Scope scope, const CommandOpti
   return message;
 }
 
+std::string cli_message(const OptionError& error, const CommandOptions& command, const CommandLine& line) {
+  for (const Scope scope : {Scope::decomposition, Scope::mesh_size, Scope::svg})
+    if (row_setting(error.option(), scope, command) != nullptr) return cli_message(error, scope, command, line, false);
+  return cli_message(error, Scope::decomposition, command, line, false);
+}
+
 }  // namespace madd::cli

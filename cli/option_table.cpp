@@ -4,9 +4,15 @@
 // by cli_message (cli/option_parse.cpp).
 #include "option_table.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <functional>
 #include <limits>
 #include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
 
 #include "option_values.hpp"
 #include "madd/expression.hpp"
@@ -87,6 +93,29 @@ std::string area(Text value, Flag flag, double& target) {
   return {};
 }
 
+// A comma-separated list of whole numbers, signs allowed ("1,-2,3"), each
+// one an int holds; the list replaces an earlier one.
+std::string markers(Text value, Flag flag, std::vector<int>& target) {
+  std::vector<int> list;
+  const std::string_view all = value;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t comma = std::min(all.find(',', from), all.size());
+    const std::string_view item = all.substr(from, comma - from);
+    int marker = 0;
+    const char* begin = item.data();
+    const char* end = begin + item.size();
+    const auto [stop, error] = std::from_chars(begin, end, marker);
+    if (item.empty() || error != std::errc() || stop != end)
+      return refused(flag, "needs whole numbers separated by commas", value);
+    list.push_back(marker);
+    if (comma == all.size()) break;
+    from = comma + 1;
+  }
+  target = std::move(list);
+  return {};
+}
+
 // Megabytes to bytes: a value a size_t holds.
 std::string megabytes(Text value, Flag flag, std::size_t& target) {
   double x = 0;
@@ -139,7 +168,8 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text v, Flag f) { return count(v, f, l.mesh.decomposition.smoothing_iterations); }},
     {"rebalance", 0, required, "X", decomposition, "repair_balance_above",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.decomposition.repair_balance_above); }},
-    {"gradation", 'a', required, "A", decomposition, "gradation",
+    // The paper's grading factor a; --gradation is the size field's (below).
+    {"weight-gradation", 'a', required, "A", decomposition, "gradation",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.decomposition.gradation); }},
     {"adaptive-refine", 0, required, "L", decomposition, "adaptive_boundary_refinement",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.decomposition.adaptive_boundary_refinement); }},
@@ -169,6 +199,24 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text v, Flag f) { return function(v, f, l.mesh.size.triangle_area_function); }},
     {"sizes", 0, required, "FILE", mesh_size, "triangle_area_samples",
      [](CommandLine& l, Text v, Flag) { return text(v, l.sizes_file); }},
+    {"sizes-nearest", 0, none, nullptr, mesh_size, "sample_interpolation",
+     [](CommandLine& l, Text, Flag) {
+       l.mesh.size.sample_interpolation = MeshSizeOptions::SampleInterpolation::nearest;
+       return std::string();
+     }},
+    // The size field (docs/mesh.md), in edge lengths.
+    {"hmin", 0, required, "LEN", mesh_size, "min_edge_length",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.min_edge_length); }},
+    {"hmax", 0, required, "LEN", mesh_size, "max_edge_length",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.max_edge_length); }},
+    {"distance-rate", 0, required, "G", mesh_size, "distance_rate",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.distance_rate); }},
+    {"cells-across", 0, required, "R", mesh_size, "cells_across",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.cells_across); }},
+    {"gradation", 0, required, "G", mesh_size, "size_gradation",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.size_gradation); }},
+    {"coast-markers", 0, required, "M,...", mesh_size, "coast_markers",
+     [](CommandLine& l, Text v, Flag f) { return markers(v, f, l.mesh.size.coast_markers); }},
     {"balance", 0, required, "area|work", front_end, nullptr,
      [](CommandLine& l, Text v, Flag f) { return balance(v, f, l.mesh.balance_by_work); }},
     {"no-off-centres", 0, none, nullptr, front_end, nullptr,

@@ -89,4 +89,10 @@ std::string parse_command_line(const CommandOptions& command, int argc, char** a
 std::string cli_message(const OptionError& error, Scope scope, const CommandOptions& command, const CommandLine& line,
                         bool with_value = true);
 
+// The same for an OptionError thrown from inside a run (a check that needs
+// the domain: an area function's values, the coast markers), where the
+// check's scope is not known: the first scope in which one of the command's
+// rows sets the field it names; without the value typed.
+std::string cli_message(const OptionError& error, const CommandOptions& command, const CommandLine& line);
+
 }  // namespace madd::cli

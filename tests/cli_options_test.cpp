@@ -91,10 +91,11 @@ TEST_CASE("an option out of its range is a usage error naming the flag, and noth
       {"-r 0", "-r must be"},
       {"--refine 0", "--refine must be"},
       {"-a -1", "-a must be"},  // the deprecated letter still works, and is named as typed
-      {"--gradation -1", "--gradation must be"},
+      {"--weight-gradation -1", "--weight-gradation must be"},
+      {"--gradation -1", "--gradation must be finite and >= 0, got '-1'"},  // the size field's now
       {"--time-limit -1", "--time-limit"},
       {"--svg-mark-angles 200", "--svg-mark-angles"},
-      {"-p 0.5", "-p only applies to boundary weights (--gradation > 0"},
+      {"-p 0.5", "-p only applies to boundary weights (--weight-gradation > 0"},
       {"--interpolation 0.5", "--interpolation only applies to boundary weights"},
       {"--weight-fn 1 --weights w.node", "--weights cannot be combined with --weight-fn"},
       {"--area-fn 1 --areas a.node", "--areas cannot be combined with --area-fn"},
@@ -174,12 +175,21 @@ TEST_CASE("-j has one limit, the library's max_threads, said alike by decompose 
 TEST_CASE("every option decompose and mesh share is taken by both commands") {
   const CliSandbox box;
   // A value on key.poly for each shared option (a new shared option needs one here).
-  const std::map<std::string, std::string> value = {
-      {"subdomains", " 3"},    {"min-angle", " 50"},  {"threads", " 2"},
-      {"seed", " 7"},          {"rebalance", " 1.5"}, {"time-limit", " 60"},
-      {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
-      {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
-      {"quiet", ""},           {"help", ""}};
+  std::map<std::string, std::string> value = {{"subdomains", " 3"},    {"min-angle", " 50"},  {"threads", " 2"},
+                                              {"seed", " 7"},          {"rebalance", " 1.5"}, {"time-limit", " 60"},
+                                              {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
+                                              {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
+                                              {"quiet", ""},           {"help", ""}};
+  // The size field's, with what they need: --distance-rate a --hmin, --gradation a bound to grade.
+  value.insert({{"sizes", " s.node"},
+                {"sizes-nearest", " --sizes s.node"},
+                {"hmin", " 0.1"},
+                {"hmax", " 0.5"},
+                {"distance-rate", " 0.3 --hmin 0.1"},
+                {"cells-across", " 3"},
+                {"gradation", " 0.3 --hmax 0.5"},
+                {"coast-markers", " 1"}});
+  std::ofstream(box.path("s.node")) << "4 2 1 0\n1 -2 -2 0.05\n2 8 -2 0.05\n3 8 2 0.05\n4 -2 2 0.02\n";
   const madd::cli::CommandOptions& mesh = madd::cli::options_of("mesh");
   int shared = 0;
   for (const madd::cli::OptionUse& use : madd::cli::options_of("decompose").uses) {
@@ -218,14 +228,51 @@ TEST_CASE("every command's --help lists every option it takes, as the table has 
   const std::string decompose = box.run("decompose --help").output;  // the letters mesh took over, said once
   CHECK(contains(decompose, "-q is deprecated here"));
   CHECK(contains(decompose, "-a A is deprecated here"));
+  CHECK(contains(decompose, "(was --gradation, now the size field's"));  // the rename, said where it was
+}
+
+TEST_CASE("the size field's options: a bad value or combination is a usage error naming the flag, in mesh and "
+          "decompose, and nothing is written") {
+  const CliSandbox box;
+  struct Bad {
+    const char* arguments;
+    const char* says;
+  };
+  const Bad cases[] = {
+      {"--hmin -1", "--hmin must be finite and >= 0, got '-1'"},
+      {"--hmax x", "--hmax needs a number, got 'x'"},
+      {"--hmin 0.2 --hmax 0.1", "--hmax must be >= --hmin, got '0.1'"},
+      {"--distance-rate 0.15", "--distance-rate needs --hmin > 0"},
+      {"--cells-across -3", "--cells-across must be finite and >= 0, got '-3'"},
+      {"--gradation 0.2", "--gradation needs a size bound to grade"},
+      {"--gradation nan --hmax 1", "--gradation needs a number, got 'nan'"},
+      {"--coast-markers 1,x", "--coast-markers needs whole numbers separated by commas, got '1,x'"},
+      {"--coast-markers=", "--coast-markers needs whole numbers separated by commas, got ''"},
+  };
+  for (const Bad& c : cases) {
+    CAPTURE(c.arguments);
+    const CliRun decompose = box.run(key_poly + " -n 4 -o out.poly --split parts " + c.arguments);
+    CHECK(decompose.status == 2);
+    CHECK_MESSAGE(problem_of(decompose.output, "decompose").rfind(c.says, 0) == 0, decompose.output);
+    const CliRun mesh = box.run("mesh " + key_poly + " -n 4 -o m " + c.arguments);
+    CHECK(mesh.status == 2);
+    CHECK_MESSAGE(problem_of(mesh.output, "mesh").rfind(c.says, 0) == 0, mesh.output);
+  }
+  // --gradation was decompose's grading factor: the refusal says where that went.
+  const CliRun old = box.run(key_poly + " -n 4 -o out.poly --gradation 3");
+  CHECK(old.status == 2);
+  CHECK_MESSAGE(contains(old.output, "(grading by weights is --weight-gradation)"), old.output);
+  CHECK_FALSE(fs::exists(box.path("out.poly")));
+  CHECK_FALSE(fs::exists(box.path("parts")));
+  CHECK_FALSE(fs::exists(box.path("m.ele")));
 }
 
 TEST_CASE("grading options that would be ignored are refused") {
   const CliSandbox box;
   // key.poly has no vertex weights: -a has nothing to grade by.
-  const CliRun r = box.run(key_poly + " -n 8 --gradation 3 -o out.poly");
+  const CliRun r = box.run(key_poly + " -n 8 --weight-gradation 3 -o out.poly");
   CHECK(r.status == 2);
-  CHECK_MESSAGE(contains(r.output, "--gradation grades by the domain's vertex weights"), r.output);
+  CHECK_MESSAGE(contains(r.output, "--weight-gradation grades by the domain's vertex weights"), r.output);
   CHECK_MESSAGE(contains(box.run(key_poly + " -n 8 -a 3 -o out.poly").output, "-a grades by"), r.output);
   CHECK_FALSE(fs::exists(box.path("out.poly")));
 }

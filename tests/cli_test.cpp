@@ -386,6 +386,35 @@ TEST_CASE("check describes a PSLG; decompose and mesh refuse it with a located e
   CHECK(has(crossing.err, "crosses"));
 }
 
+// Issue 26's fuzz finding: vertex 5 lies inside boundary segment 1 and ends
+// no segment. `check` called it a valid domain while decompose and mesh
+// failed their self-checks (exit 70); every command now takes it, and every
+// piece of --split is a valid domain of its own.
+TEST_CASE("check, decompose, mesh and --split take a domain with a vertex on no segment inside a boundary segment") {
+  const Scratch dir("vertex-on-segment");
+  const std::string file = "'" MADD_SOURCE_DIR "/fuzz/corpus/fuzz_mesh/vertex_on_boundary_segment'";
+  const Result check = run_madd(dir, "check " + file);
+  REQUIRE_MESSAGE(check.code == 0, check.err);
+  CHECK(has(check.out, "valid domain"));
+  CHECK(has(check.out, "1 vertices on segments"));
+  CHECK(has(check.out, "isolated vertices 0"));
+  const Result decompose = run_madd(dir, file + " -n 5 --min-angle 45 -o d.poly");
+  CHECK_MESSAGE(decompose.code == 0, decompose.err);
+  const Result mesh = run_madd(dir, "mesh " + file + " -n 2 -o m");
+  CHECK_MESSAGE(mesh.code == 0, mesh.err);
+  const Result split = run_madd(dir, file + " -n 3 --split parts");
+  REQUIRE_MESSAGE(split.code == 0, split.err);
+  std::size_t pieces = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "parts")) {
+    CAPTURE(entry.path().string());
+    const Result piece = run_madd(dir, "check '" + entry.path().string() + "'");
+    CHECK_MESSAGE(piece.code == 0, piece.err);
+    CHECK(has(piece.out, "valid domain"));
+    ++pieces;
+  }
+  CHECK(pieces == 3);
+}
+
 TEST_CASE("the progress line counts subdomains and time on a terminal, and is cleared") {
   const Scratch dir("progress");
   if (exit_status(std::system("script -qec true /dev/null > /dev/null 2>&1")) != 0) {

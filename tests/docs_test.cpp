@@ -437,11 +437,11 @@ const std::vector<QuotedRun> quoted_runs = {
      "minimum new angle 70.2°, median 94.3°, largest area / mean 1.16",
      {"angle_min", "angle_median", "max_area_over_mean"}},
     {"docs/grading.md",
-     "madd docs/img/grading-key-weights.poly -n 64 --gradation 3 -p 0.5 --svg docs/img/grading-boundary.svg",
+     "madd docs/img/grading-key-weights.poly -n 64 --weight-gradation 3 -p 0.5 --svg docs/img/grading-boundary.svg",
      "— area max/mean 2.45, weight max/mean 1.84, min angle 63.3°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
-     "madd data/pipe.poly -n 64 --weights docs/img/grading-pipe-weights.node --gradation 20 --svg "
+     "madd data/pipe.poly -n 64 --weights docs/img/grading-pipe-weights.node --weight-gradation 20 --svg "
      "docs/img/grading-background-weights.svg",
      "— area max/mean 2.68, weight max/mean 1.13, min angle 65.9°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},

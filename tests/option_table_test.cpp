@@ -13,6 +13,7 @@
 #include "cli/command_line.hpp"
 #include "cli/option_table.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 
 namespace {
 
@@ -37,9 +38,11 @@ std::string fingerprint(const CommandLine& l) {
       << d.gradation << ' ' << d.adaptive_boundary_refinement << ' ' << d.interpolation << ' '
       << bool(d.weight_function) << ' ' << bool(d.subdomain_area_function) << ' ' << d.subdomain_area_ratio << ' '
       << d.time_limit_seconds << ' ' << d.max_memory_bytes << " | " << s.min_triangle_angle_deg << ' '
-      << s.max_triangle_area << ' ' << bool(s.triangle_area_function) << ' ' << l.mesh.balance_by_work
-      << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report << l.report_file << ' ' << l.quiet
-      << l.verbose << l.help << l.subdomains_given;
+      << s.max_triangle_area << ' ' << bool(s.triangle_area_function) << ' ' << l.sizes_file << ' '
+      << static_cast<int>(s.sample_interpolation) << ' ' << s.min_edge_length << ' ' << s.max_edge_length << ' '
+      << s.distance_rate << ' ' << s.cells_across << ' ' << s.size_gradation << ' ' << s.coast_markers.size() << ' '
+      << l.mesh.balance_by_work << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report
+      << l.report_file << ' ' << l.quiet << l.verbose << l.help << l.subdomains_given;
   return out.str();
 }
 
@@ -106,7 +109,7 @@ TEST_CASE("madd mesh keeps Triangle's letters; decompose's -q and -a still parse
   REQUIRE(parse("decompose", {"-q", "-a", "2", "in.poly"}, decompose).empty());
   CHECK(decompose.quiet);
   CHECK(decompose.mesh.decomposition.gradation == 2);
-  CHECK(decompose.typed.at("gradation").flag == "-a");
+  CHECK(decompose.typed.at("weight-gradation").flag == "-a");
   CHECK(decompose.operands == std::vector<std::string>{"in.poly"});
 }
 
@@ -128,6 +131,99 @@ TEST_CASE("an option decompose and mesh share sets the same thing in both") {
     CHECK(fingerprint(a) != fingerprint(CommandLine{}));  // and it did set something
   }
   CHECK(shared >= 13);  // -n, --min-angle, -j, --seed, --rebalance, --time-limit, --max-memory, --max-area, ...
+}
+
+TEST_CASE("the size field's flags set their fields, in mesh and decompose alike") {
+  for (const char* command : {"mesh", "decompose"}) {
+    CAPTURE(command);
+    CommandLine line;
+    REQUIRE(parse(command,
+                  {"--hmin", "0.1", "--hmax", "2.5", "--distance-rate", "0.15", "--cells-across", "3", "--gradation",
+                   "0.2", "--coast-markers", "1,-2,30", "--sizes", "s.node", "--sizes-nearest", "in.poly"},
+                  line)
+                .empty());
+    const madd::MeshSizeOptions& s = line.mesh.size;
+    CHECK(s.min_edge_length == 0.1);
+    CHECK(s.max_edge_length == 2.5);
+    CHECK(s.distance_rate == 0.15);
+    CHECK(s.cells_across == 3);
+    CHECK(s.size_gradation == 0.2);
+    CHECK(s.coast_markers == std::vector<int>{1, -2, 30});
+    CHECK(line.sizes_file == "s.node");
+    CHECK(s.sample_interpolation == madd::MeshSizeOptions::SampleInterpolation::nearest);
+    CHECK(line.mesh.decomposition.gradation == 0);  // --gradation is not the decomposition's
+    CHECK_NOTHROW(madd::check_options(line.mesh));
+    CommandLine plain;  // without --sizes-nearest, --sizes is read linearly
+    REQUIRE(parse(command, {"--sizes", "s.node", "--coast-markers", "4", "--coast-markers", "5", "in.poly"}, plain)
+                .empty());
+    CHECK(plain.mesh.size.sample_interpolation == madd::MeshSizeOptions::SampleInterpolation::linear);
+    CHECK(plain.mesh.size.coast_markers == std::vector<int>{5});  // the last list given, as for any option
+  }
+}
+
+TEST_CASE("--gradation is the size field's; the decomposition's grading factor is --weight-gradation (or -a)") {
+  for (const std::vector<std::string>& words :
+       {std::vector<std::string>{"--weight-gradation", "3"}, std::vector<std::string>{"-a", "3"}}) {
+    CommandLine line;
+    REQUIRE(parse("decompose", words, line).empty());
+    CHECK(line.mesh.decomposition.gradation == 3);
+    CHECK(line.mesh.size.size_gradation == 0);
+  }
+  CommandLine size;
+  REQUIRE(parse("decompose", {"--gradation", "0.5"}, size).empty());
+  CHECK(size.mesh.size.size_gradation == 0.5);
+  CHECK(size.mesh.decomposition.gradation == 0);
+  CommandLine mesh;  // madd mesh grades the size field only; -a is its largest area
+  CHECK(parse("mesh", {"--weight-gradation", "3"}, mesh) == "unknown option '--weight-gradation'");
+  // The decomposition's errors about its factor name --weight-gradation in decompose.
+  const madd::OptionError factor("gradation", "must be a finite number >= 0");
+  CommandLine typed;
+  REQUIRE(parse("decompose", {"--weight-gradation", "-1"}, typed).empty());
+  CHECK(cli_message(factor, Scope::decomposition, options_of("decompose"), typed) ==
+        "--weight-gradation must be a finite number >= 0, got '-1'");
+}
+
+TEST_CASE("a bad size field value names the flag as typed; so do the library's size checks") {
+  CommandLine line;
+  CHECK(parse("mesh", {"--hmin", "x"}, line) == "--hmin needs a number, got 'x'");
+  CHECK(parse("decompose", {"--distance-rate", "inf"}, line) == "--distance-rate needs a number, got 'inf'");
+  CHECK(parse("mesh", {"--gradation", "0.1.2"}, line) == "--gradation needs a number, got '0.1.2'");
+  for (const char* list : {"", "x", "1,", ",1", "1,,2", "1.5", "1, 2", "+1", "99999999999", "1;2"}) {
+    CAPTURE(list);
+    CommandLine markers;
+    CHECK(parse("mesh", {"--coast-markers", list}, markers) ==
+          std::string("--coast-markers needs whole numbers separated by commas, got '") + list + "'");
+    CHECK(parse("decompose", {"--coast-markers", list}, markers) ==
+          std::string("--coast-markers needs whole numbers separated by commas, got '") + list + "'");
+  }
+  // The library's refusals, in the words of the command.
+  const auto said = [](const char* command, std::vector<std::string> words) {
+    CommandLine l;
+    REQUIRE(parse(command, std::move(words), l).empty());
+    try {
+      madd::check_options(l.mesh);
+    } catch (const madd::OptionError& e) {
+      return cli_message(e, Scope::mesh_size, options_of(command), l);
+    }
+    return std::string();
+  };
+  CHECK(said("mesh", {"--hmin", "-1"}) == "--hmin must be finite and >= 0, got '-1'");
+  CHECK(said("mesh", {"--hmin", "0.2", "--hmax", "0.1"}) == "--hmax must be >= --hmin, got '0.1'");
+  CHECK(said("decompose", {"--cells-across", "-2"}) == "--cells-across must be finite and >= 0, got '-2'");
+  const std::string rate = said("mesh", {"--distance-rate", "0.15"});
+  CHECK_MESSAGE(rate.rfind("--distance-rate needs --hmin > 0", 0) == 0, rate);
+  const std::string grade = said("mesh", {"--gradation", "0.2"});
+  CHECK_MESSAGE(grade.rfind("--gradation needs a size bound to grade (--hmax, --distance-rate, --cells-across, "
+                            "--max-area, --size-fn or --sizes)",
+                            0) == 0,
+                grade);
+  CHECK(said("mesh", {"--gradation", "0.2", "--hmax", "1"}).empty());
+  // A check made inside a run (the coast markers against the domain) finds its flag without a scope.
+  const madd::OptionError markers("coast_markers", "must name boundary markers of the domain");
+  CHECK(cli_message(markers, options_of("mesh"), CommandLine{}) ==
+        "--coast-markers must name boundary markers of the domain");
+  CHECK(cli_message(madd::OptionError("separator_angle_deg", "must be right"), options_of("decompose"), line) ==
+        "--min-angle must be right");
 }
 
 TEST_CASE("a bad value names the flag as typed; the library's errors too, in the scope that threw") {

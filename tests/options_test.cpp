@@ -13,6 +13,7 @@
 #include "madd/bisect.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 #include "madd/metrics.hpp"
 #include "madd/output.hpp"
 
@@ -233,6 +234,69 @@ TEST_CASE("split to a required area, N is a maximum, and the result says how far
   CHECK(f.subdomain_area_ratio == 0.0);
   CHECK(madd::expected_subdomain_count(f, 5) == 5);
   CHECK(madd::format_report_json(madd::metrics(f)).find("area_bound") == std::string::npos);
+}
+
+TEST_CASE("the size field's terms: negative or not finite, hmax below hmin, a rate without hmin, a gradation of "
+          "nothing are refused, naming the field") {
+  struct SizeCase {
+    const char* field;
+    std::function<void(madd::MeshSizeOptions&)> set;
+  };
+  const std::vector<SizeCase> bad = {
+      {"min_edge_length", [](madd::MeshSizeOptions& s) { s.min_edge_length = -0.1; }},
+      {"min_edge_length", [](madd::MeshSizeOptions& s) { s.min_edge_length = infinity; }},
+      {"max_edge_length", [](madd::MeshSizeOptions& s) { s.max_edge_length = not_a_number; }},
+      {"max_edge_length", [](madd::MeshSizeOptions& s) { s.max_edge_length = -1; }},
+      {"distance_rate", [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.1, s.distance_rate = -0.2; }},
+      {"distance_rate", [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.1, s.distance_rate = infinity; }},
+      {"cells_across", [](madd::MeshSizeOptions& s) { s.cells_across = -3; }},
+      {"cells_across", [](madd::MeshSizeOptions& s) { s.cells_across = not_a_number; }},
+      {"size_gradation", [](madd::MeshSizeOptions& s) { s.max_edge_length = 1, s.size_gradation = -0.2; }},
+      {"size_gradation", [](madd::MeshSizeOptions& s) { s.max_edge_length = 1, s.size_gradation = infinity; }},
+      // hmax below hmin, both set.
+      {"max_edge_length", [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.2, s.max_edge_length = 0.1; }},
+      // A distance rate grows from hmin: without it there is nothing to grow from.
+      {"distance_rate", [](madd::MeshSizeOptions& s) { s.distance_rate = 0.15; }},
+      {"distance_rate", [](madd::MeshSizeOptions& s) { s.max_edge_length = 1, s.distance_rate = 0.15; }},
+      // Gradation only lowers a field: alone, or with hmin alone, it has nothing to grade.
+      {"size_gradation", [](madd::MeshSizeOptions& s) { s.size_gradation = 0.2; }},
+      {"size_gradation", [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.1, s.size_gradation = 0.2; }},
+  };
+  for (const SizeCase& c : bad) {
+    CAPTURE(c.field);
+    madd::MeshOptions o;
+    c.set(o.size);
+    CHECK(refused_field([&] { madd::check_options(o); }) == c.field);
+    CHECK(refused_field([&] { (void)madd::mesh(square(), o); }) == c.field);  // before any work
+  }
+  // The same values in the combinations that make sense pass.
+  const std::vector<std::function<void(madd::MeshSizeOptions&)>> good = {
+      [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.1, s.max_edge_length = 0.1; },  // hmax = hmin
+      [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.2; },  // a floor of nothing: taken, as 0 terms are
+      [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.01, s.distance_rate = 0.15; },
+      [](madd::MeshSizeOptions& s) { s.cells_across = 3, s.size_gradation = 0.2; },
+      [](madd::MeshSizeOptions& s) { s.max_edge_length = 0.5, s.size_gradation = 0.2; },
+      [](madd::MeshSizeOptions& s) { s.max_triangle_area = 0.01, s.size_gradation = 0.2; },
+      [](madd::MeshSizeOptions& s) {
+        s.triangle_area_function = [](double, double) { return 0.01; };
+        s.size_gradation = 1;
+      },
+      [](madd::MeshSizeOptions& s) {
+        s.triangle_area_samples = {{{0.5, 0.5}, 0.01}};
+        s.size_gradation = 0.2;
+      },
+      [](madd::MeshSizeOptions& s) { s.min_edge_length = 0.01, s.distance_rate = 0.15, s.size_gradation = 0.2; },
+      [](madd::MeshSizeOptions& s) {
+        s.coast_markers = {1, -2};
+        s.cells_across = 2;
+      },
+  };
+  for (std::size_t i = 0; i < good.size(); ++i) {
+    CAPTURE(i);
+    madd::MeshOptions o;
+    good[i](o.size);
+    CHECK(refused_field([&] { madd::check_options(o); }).empty());
+  }
 }
 
 TEST_CASE("bisection, partition and picture options are refused as OptionError too") {

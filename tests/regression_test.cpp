@@ -6,9 +6,12 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/pslg.hpp"
 #include "decomposition_check.hpp"
+#include "vertex_on_segment.hpp"
 
 namespace {
 
@@ -46,6 +49,23 @@ TEST_CASE("star with two needles: the per-face point cap keeps each split small,
 // decomposition is required (no error is acceptable).
 TEST_CASE("cdt find_exit hang: segment insertion during a split terminates") {
   madd::test::checked_decomposition(madd::read_domain(corpus("fuzz_decompose", "cdt_find_exit_hang")), 5, 45.0);
+}
+
+// fuzz_mesh finding (issue 26): vertex 5 (1, 0) of this quadrilateral lies
+// exactly inside boundary segment 1 from (0, 0) to (1.2, 0) and ends no
+// segment. The search for vertices inside segments compared segments only,
+// so the decomposition took the vertex for an isolated point inside the
+// domain: verify_decomposition failed ("interior point ... is not strictly
+// inside it") at every N, and the mesh had a tear along the segment. The
+// segment is now split there, as a segment's end inside it would split it.
+TEST_CASE("a vertex on no segment lying inside a boundary segment splits it: decomposed and meshed, kept there") {
+  const madd::Pslg domain = madd::read_domain(corpus("fuzz_mesh", "vertex_on_boundary_segment"));
+  REQUIRE(madd::test::vertices_on_segments(domain).size() == 1);
+  CHECK(madd::summarize_pslg(domain).isolated_vertices == 0);
+  CHECK(madd::domain_area(domain) == doctest::Approx(1.1).epsilon(1e-15));
+  for (const double phi : {45.0, 60.0, 70.0})
+    for (const std::uint32_t n : {1u, 2u, 3u, 5u, 8u}) madd::test::checked_on_segments(domain, n, phi);
+  for (const std::uint32_t n : {1u, 2u, 3u, 5u}) madd::test::meshed_on_segments(domain, n);
 }
 
 }  // TEST_SUITE("regression")

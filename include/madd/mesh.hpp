@@ -173,9 +173,12 @@ struct MeshRun {
 };
 
 // The ranges of the mesh options (min_triangle_angle_deg in [0, 60),
-// max_triangle_area finite and >= 0, area samples finite with areas > 0); throws OptionError
-// naming the field. mesh() calls it; the decomposition options are checked by
-// decompose().
+// max_triangle_area finite and >= 0, area samples finite with areas > 0, the
+// size field's terms finite and >= 0, max_edge_length >= min_edge_length when
+// both are set) and their combinations (distance_rate needs min_edge_length,
+// size_gradation another size bound); throws OptionError naming the field.
+// mesh() calls it; the decomposition options are checked by decompose(), the
+// coast markers against the domain by the size field.
 void check_options(const MeshOptions& options);
 
 // The largest allowed area at p under `size` (+infinity when unbounded).

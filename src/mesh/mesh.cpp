@@ -11,6 +11,7 @@
 #include <mutex>
 #include <thread>
 #include <unordered_map>
+#include <utility>
 
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
@@ -39,6 +40,27 @@ void check_options(const MeshOptions& options) {
     if (!(v.value > 0) || !std::isfinite(v.value) || !std::isfinite(v.at.x) || !std::isfinite(v.at.y))
       throw OptionError("triangle_area_samples", "every sample must have finite coordinates and a finite area > 0");
   }
+  // The size field's terms (each 0 = off).
+  const std::pair<const char*, double> field_terms[] = {{"min_edge_length", s.min_edge_length},
+                                                        {"max_edge_length", s.max_edge_length},
+                                                        {"distance_rate", s.distance_rate},
+                                                        {"cells_across", s.cells_across},
+                                                        {"size_gradation", s.size_gradation}};
+  for (const auto& [field, value] : field_terms)
+    if (!(value >= 0) || !std::isfinite(value)) throw OptionError(field, "must be finite and >= 0");
+  if (s.min_edge_length > 0 && s.max_edge_length > 0 && s.max_edge_length < s.min_edge_length)
+    throw OptionError("max_edge_length", "must be >= min_edge_length");
+  if (s.distance_rate > 0 && s.min_edge_length == 0)
+    throw OptionError("distance_rate",
+                      "needs min_edge_length > 0: the edge length at the coast, which grows by distance_rate per unit "
+                      "of distance from it");
+  // Gradation only lowers a field some other bound sets.
+  const bool other_bound = s.max_triangle_area > 0 || s.triangle_area_function || !s.triangle_area_samples.empty() ||
+                           s.max_edge_length > 0 || s.distance_rate > 0 || s.cells_across > 0;
+  if (s.size_gradation > 0 && !other_bound)
+    throw OptionError("size_gradation",
+                      "needs a size bound to grade (max_edge_length, distance_rate, cells_across, max_triangle_area, "
+                      "triangle_area_function or triangle_area_samples)");
 }
 
 namespace {

@@ -103,7 +103,7 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound
 std::vector<double> expected_triangles(const Decomposition& d, const AreaBound& size) {
   std::vector<double> out;
   out.reserve(d.subdomains.size());
-  const bool uniform = !size.options().triangle_area_function && size.options().triangle_area_samples.empty();
+  const bool uniform = size.uniform();
   const RegionView regions = region_view(d);
   for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
     const Subdomain& s = d.subdomains[sub];
@@ -208,7 +208,7 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
   // (boundary_refinement x area) counts the interior exactly, and the samples are put in
   // its units (kappa A per triangle). With a varying bound the interior is
   // sampled too, and everything is scaled to drown the area term.
-  const bool uniform = !size.options().triangle_area_function && size.options().triangle_area_samples.empty();
+  const bool uniform = size.uniform();
   std::vector<ValuedPoint> samples;
   double boundary = 0;
   for (std::uint32_t j = 0; j < domain.segments.size(); ++j) {

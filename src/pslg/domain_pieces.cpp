@@ -11,7 +11,7 @@ namespace madd::detail {
 bool has_vertex_inside_segment(const Pslg& pslg) {
   if (pslg.segments.empty()) return false;
   const SegmentGrid grid(pslg.points, pslg.segments);
-  return find_segment_conflict(pslg, grid, true).has_value();
+  return find_segment_conflict(pslg, grid, true).has_value() || lone_vertex_on_segment(pslg, grid);
 }
 
 DomainPieces trace_domain_pieces(const Pslg& domain, bool split_at_vertices) {

@@ -324,9 +324,10 @@ void validate(const Pslg& pslg, const SourceMap& source, const ValidateOptions& 
   check_duplicates(pslg, r);
   check_zero_length(pslg, r);
   const detail::SegmentGrid grid(pslg.points, pslg.segments);
-  // Crossings and overlaps are errors; a vertex inside a segment splits it.
+  // Crossings and overlaps are errors; a vertex inside a segment splits it,
+  // whether it ends another segment or is on none.
   const auto conflict = detail::find_segment_conflict(pslg, grid, true);
-  const bool touches = conflict && conflict->contact.kind == Contact::touch;
+  const bool touches = conflict ? conflict->contact.kind == Contact::touch : detail::lone_vertex_on_segment(pslg, grid);
   if (conflict && !touches) check_intersections(pslg, grid, r);
   if (touches) check_pslg_intersections(pslg, grid, r);
   check_holes_on_segments(pslg, grid, r);

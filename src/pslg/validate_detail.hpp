@@ -44,6 +44,11 @@ std::vector<SegmentConflict> all_segment_contacts(const Pslg& pslg, const Segmen
 // First segment (by index) that a point lies on, endpoints included.
 std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& grid, Point p);
 
+// True when a vertex on no segment lies on one: the segment pair search
+// above only compares segments, so it never sees such a vertex, yet the
+// segment is split there all the same (as a segment's end inside another).
+bool lone_vertex_on_segment(const Pslg& pslg, const SegmentGrid& grid);
+
 // The faces of the planar graph of segments. Precondition: no crossings,
 // overlaps, duplicate points or zero-length segments. Half-edge 2s runs a->b
 // of segment s, 2s+1 runs b->a; each ring is the boundary walk of the face on
@@ -87,8 +92,9 @@ struct DomainPieces {
 // are taken as they are, saving the search).
 DomainPieces trace_domain_pieces(const Pslg& domain, bool split_at_vertices);
 
-// True when some vertex lies inside a segment (a touch): what
-// trace_domain_pieces must be told. Precondition as find_segment_conflict.
+// True when some vertex lies inside a segment (a touch, or a vertex on no
+// segment lying on one): what trace_domain_pieces must be told.
+// Precondition as find_segment_conflict.
 bool has_vertex_inside_segment(const Pslg& pslg);
 
 }  // namespace madd::detail

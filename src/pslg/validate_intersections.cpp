@@ -205,4 +205,12 @@ std::optional<std::uint32_t> segment_under(const Pslg& pslg, const SegmentGrid& 
   return std::nullopt;
 }
 
+bool lone_vertex_on_segment(const Pslg& pslg, const SegmentGrid& grid) {
+  std::vector<std::uint8_t> on_some(pslg.points.size(), 0);
+  for (const Segment& s : pslg.segments) on_some[s.a] = on_some[s.b] = 1;
+  for (std::uint32_t v = 0; v < pslg.points.size(); ++v)
+    if (!on_some[v] && segment_under(pslg, grid, pslg.points[v])) return true;
+  return false;
+}
+
 }  // namespace madd::detail

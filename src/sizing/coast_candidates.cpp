@@ -1,0 +1,103 @@
+// The coast pieces near each background triangle close to the coast
+// (coast_candidates.hpp).
+#include "sizing/coast_candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+
+#include "sizing/distance_bound.hpp"
+
+namespace madd::detail {
+
+// Keeps of `near` the pieces that can be nearest somewhere in triangle p.
+// Each piece s bounds d on T from above by max over the corners of d_s (a
+// convex function is largest at a corner); a piece farther from T than the
+// least of those bounds is never nearest there. T crosses no coast piece
+// (they are constrained edges of the background), so the distance between
+// a piece and T is that between a corner of one and an edge of the other.
+namespace {
+
+double to_segment_distance(Point p, Point a, Point b) noexcept {
+  double t = 0.0;
+  return segment_distance(p, a, b, t);
+}
+
+}  // namespace
+
+void CoastCandidates::prune(const Point (&p)[3], std::vector<std::uint32_t>& near) const {
+  if (near.empty()) return;
+  // The bound from the pieces nearest to the centroid (any piece gives one;
+  // these give about the least), then the cheap test of a piece's distance
+  // to the centroid less the centroid's reach, then the exact one.
+  const Point g = triangle_centroid(p[0], p[1], p[2]);
+  const double reach = std::max({madd::distance(g, p[0]), madd::distance(g, p[1]), madd::distance(g, p[2])});
+  std::vector<std::pair<double, std::uint32_t>> by_centre;
+  by_centre.reserve(near.size());
+  for (const std::uint32_t s : near) by_centre.push_back({to_segment_distance(g, ends_[s][0], ends_[s][1]), s});
+  const std::size_t few = std::min<std::size_t>(4, by_centre.size());
+  std::partial_sort(by_centre.begin(), by_centre.begin() + static_cast<std::ptrdiff_t>(few), by_centre.end());
+  double bound = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < few; ++k) {
+    const auto& e = ends_[by_centre[k].second];
+    bound = std::min(bound, std::max({to_segment_distance(p[0], e[0], e[1]), to_segment_distance(p[1], e[0], e[1]),
+                                      to_segment_distance(p[2], e[0], e[1])}));
+  }
+  const double scale = std::max({std::abs(p[0].x), std::abs(p[0].y), bound});
+  bound = bound * (1.0 + 1e-9) + 1e-12 * scale;  // over the rounding of both sides
+  const double margin = 1e-9 * (reach + bound) + 1e-12 * scale;
+  near.clear();
+  for (const auto& [to_centre, s] : by_centre) {
+    if (to_centre - reach > bound + margin) continue;  // every point of T is within `reach` of g
+    const auto& e = ends_[s];
+    double gap = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const Point a = p[i], b = p[(i + 1) % 3];
+      gap = std::min(
+          {gap, to_segment_distance(a, e[0], e[1]), to_segment_distance(e[0], a, b), to_segment_distance(e[1], a, b)});
+    }
+    if (gap <= bound) near.push_back(s);
+  }
+  std::sort(near.begin(), near.end());
+}
+
+CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSample> samples, const Coast& coast) {
+  const auto n = static_cast<std::uint32_t>(bg.triangles.size());
+  for (std::uint32_t s = 0; s < coast.coast_index.size(); ++s) {
+    const std::array<Point, 2>& e = coast.coast_index.ends(s);
+    ends_.push_back(e);
+    const Point ab = e[1] - e[0];
+    pieces_.push_back({e[0], ab, 1.0 / dot(ab, ab)});  // pieces have length > 0 (validate)
+  }
+  start_.assign(std::size_t{n} + 1, 0);
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t t = 0; t < n; ++t) {
+    start_[t] = static_cast<std::uint32_t>(piece_.size());
+    if (bg.inside[t] == 0) continue;
+    const auto& v = bg.triangles[t];
+    const TriangleBound bound = triangle_bound(bg, samples, t);
+    double reach = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const Point p = bg.points[v[i]];
+      const double longest =
+          std::max(madd::distance(p, bg.points[v[(i + 1) % 3]]), madd::distance(p, bg.points[v[(i + 2) % 3]]));
+      reach = std::min(reach, samples[v[i]].distance + longest);
+    }
+    // A relative margin over the rounding of the distances and the circle.
+    const double radius = (reach + bound.rho) * (1.0 + 1e-9) + 1e-12 * length(bound.centre);
+    coast.coast_index.within(bound.centre, radius, ends_.size(), near);
+    const Point c[3] = {bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]};
+    prune(c, near);
+    piece_.insert(piece_.end(), near.begin(), near.end());
+  }
+  start_[n] = static_cast<std::uint32_t>(piece_.size());
+}
+
+std::size_t CoastCandidates::exact_triangles() const noexcept {
+  std::size_t count = 0;
+  for (std::uint32_t t = 0; t + 1 < start_.size(); ++t) count += exact(t) ? 1 : 0;
+  return count;
+}
+
+}  // namespace madd::detail
