@@ -180,13 +180,13 @@ TEST_CASE("every option decompose and mesh share is taken by both commands") {
                                               {"max-memory", " 4000"}, {"max-area", " 0.05"}, {"size-fn", " 0.05+x*x"},
                                               {"output", " o"},        {"report", "=r.json"}, {"no-verify", ""},
                                               {"quiet", ""},           {"help", ""}};
-  // The size field's, with what they need: --distance-rate a --hmin, --gradation a bound to grade.
+  // The size field's, with what they need: --distance-rate and --cells-across a --hmin, --gradation a bound to grade.
   value.insert({{"sizes", " s.node"},
                 {"sizes-nearest", " --sizes s.node"},
                 {"hmin", " 0.1"},
                 {"hmax", " 0.5"},
                 {"distance-rate", " 0.3 --hmin 0.1"},
-                {"cells-across", " 3"},
+                {"cells-across", " 3 --hmin 0.1"},
                 {"gradation", " 0.3 --hmax 0.5"},
                 {"coast-markers", " 1"}});
   std::ofstream(box.path("s.node")) << "4 2 1 0\n1 -2 -2 0.05\n2 8 -2 0.05\n3 8 2 0.05\n4 -2 2 0.02\n";

@@ -676,6 +676,7 @@ TEST_CASE("one size bound: the mesher's refinement and verify_mesh ask the same 
   }
   for (int i = 0; i <= 8; ++i)
     for (int j = 0; j <= 4; ++j) size.triangle_area_samples.push_back({{0.5 * i, 0.5 * j}, 0.01 + 0.0025 * i});
+  size.sample_interpolation = madd::MeshSizeOptions::SampleInterpolation::nearest;  // the rule scan_nearest restates
   const madd::detail::AreaBound mesher(size), verifier(size);
   for (int q = 0; q < 20000; ++q) {
     Point p{5.0 * unit(rng) - 0.5, 3.0 * unit(rng) - 0.5};

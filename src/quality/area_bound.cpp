@@ -37,9 +37,7 @@ double constant_bound(const MeshSizeOptions& size) {
 }  // namespace
 
 AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain)
-    : size_(size),
-      constant_(constant_bound(size)),
-      samples_(size.triangle_area_samples, size.sample_interpolation),
+    : size_(size), constant_(constant_bound(size)), samples_(size.triangle_area_samples, size.sample_interpolation),
       field_(domain ? SizeField(*domain, size) : no_field(size)) {}
 
 bool AreaBound::uniform() const noexcept {
