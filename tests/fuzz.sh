@@ -12,6 +12,7 @@ cmake --build build-fuzz -j"$(nproc 2>/dev/null || echo 2)"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 status=0
+failed=
 for target in build-fuzz/fuzz/fuzz_*; do
   [ -x "$target" ] || continue
   name=$(basename "$target")
@@ -23,8 +24,14 @@ for target in build-fuzz/fuzz/fuzz_*; do
   if ! "$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
        -artifact_prefix="$scratch/$name-" "$scratch/$name" $seeds; then
     echo "fuzz target $name found a problem:"; ls "$scratch" | grep "$name-" || true
-    for f in "$scratch/$name"-*; do [ -f "$f" ] && { echo "--- $f"; head -c 2000 "$f" | od -c | head -40; }; done
+    # Kept out of the scratch dir, and said again at the end (CI shows the tail of the output).
+    mkdir -p build-fuzz/findings && cp "$scratch/$name"-* build-fuzz/findings/ 2>/dev/null || true
+    failed="$failed $name"
     status=1
   fi
+done
+for name in $failed; do
+  echo "== finding of $name (also in build-fuzz/findings/):"
+  for f in "$scratch/$name"-*; do [ -f "$f" ] && { echo "--- $f"; head -c 2000 "$f" | od -c | head -40; }; done
 done
 exit $status
