@@ -20,6 +20,7 @@
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/merge.hpp"
+#include "kernel/box.hpp"
 #include "mesh/subdomain_regions.hpp"
 
 namespace madd::detail {
@@ -34,36 +35,46 @@ constexpr double beta = 0.98;    // triangles per sqrt(A) of domain boundary
 constexpr double min_boundary_share = 0.02;
 // Boundary work is placed in pieces this many sqrt(A) long (granularity of the samples).
 constexpr double piece_in_sizes = 4.0;
+// The samples are merged per cell of a grid this many cells across
+// (cluster_samples). With one area bound only the boundary layer is
+// sampled, and 64 is enough; a graded field varies over much shorter
+// distances, and 128 cuts the largest subdomain's excess by half or more on
+// real coastlines (docs/mesh.md, "Balance by work").
+constexpr int uniform_cluster_cells = 64;
+constexpr int graded_cluster_cells = 128;
+// A graded field's interior is integrated over pieces of the domain's
+// triangulation at most 1/128 of its extent long (add_interior_samples).
+constexpr double interior_pieces_across = 128;
 
 // The decomposition sums the samples inside each face by a point-in-face
 // test per sample, so 10^5 samples (one per boundary piece of a coastline)
-// cost seconds: samples are merged per cell of a 64 x 64 grid, each cell's
+// cost seconds: samples are merged per cell of a cells x cells grid, each cell's
 // sum placed at its member nearest the cell's weighted centroid (a real
 // sample, so inside the domain). Faces of a decomposition span many cells,
 // so their sums barely change.
-std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples) {
-  if (samples.size() <= 4096) return samples;
+std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples, int cells) {
+  if (samples.size() <= static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells)) return samples;
   Point lo = samples[0].at, hi = lo;
   for (const ValuedPoint& s : samples) {
     lo = {std::min(lo.x, s.at.x), std::min(lo.y, s.at.y)};
     hi = {std::max(hi.x, s.at.x), std::max(hi.y, s.at.y)};
   }
-  constexpr int cells = 64;
   const double w = std::max((hi.x - lo.x) / cells, 1e-300), h = std::max((hi.y - lo.y) / cells, 1e-300);
   const auto cell_of = [&](Point p) {
     const int i = std::clamp(static_cast<int>((p.x - lo.x) / w), 0, cells - 1);
     const int j = std::clamp(static_cast<int>((p.y - lo.y) / h), 0, cells - 1);
     return static_cast<std::size_t>(j * cells + i);
   };
-  std::vector<double> sum(cells * cells, 0.0), sx(cells * cells, 0.0), sy(cells * cells, 0.0);
+  const auto n_cells = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
+  std::vector<double> sum(n_cells, 0.0), sx(n_cells, 0.0), sy(n_cells, 0.0);
   for (const ValuedPoint& s : samples) {
     const std::size_t c = cell_of(s.at);
     sum[c] += s.value;
     sx[c] += s.value * s.at.x;
     sy[c] += s.value * s.at.y;
   }
-  std::vector<std::size_t> best(cells * cells, samples.size());
-  std::vector<double> best_d(cells * cells, 0.0);
+  std::vector<std::size_t> best(n_cells, samples.size());
+  std::vector<double> best_d(n_cells, 0.0);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const std::size_t c = cell_of(samples[i].at);
     const Point centre = sum[c] > 0 ? Point{sx[c] / sum[c], sy[c] / sum[c]} : samples[i].at;
@@ -158,35 +169,37 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
   }
 }
 
-// The interior's work under a varying size bound: the integral of
-// 1 / (kappa A), as one sample per cell of a grid over the domain, at each
-// cell centre inside it (found by the cells each triangle of the domain's
-// triangulation covers, exact orientation tests).
+// One triangle's share of the interior's work under a varying size bound,
+// the integral of 1 / (kappa A) over it: split in four while its longest
+// side is above `longest`, then one sample per piece at its centroid
+// (strictly inside the domain: the piece is inside a domain triangle).
+void integrate_triangle(Point a, Point b, Point c, double longest, const AreaBound& size,
+                        std::vector<ValuedPoint>& samples) {
+  const double side = std::max({distance(a, b), distance(b, c), distance(c, a)});
+  if (side > longest) {
+    const Point ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+    integrate_triangle(a, ab, ca, longest, size, samples);
+    integrate_triangle(ab, b, bc, longest, size, samples);
+    integrate_triangle(ca, bc, c, longest, size, samples);
+    integrate_triangle(ab, bc, ca, longest, size, samples);
+    return;
+  }
+  const Point g = triangle_centroid(a, b, c);
+  const double bound = size.area_at(g);
+  if (std::isfinite(bound) && bound > 0) samples.push_back({g, triangle_area(a, b, c) / (kappa * bound)});
+}
+
+// The interior's work under a varying size bound: the domain's own
+// triangulation, whose triangles are as fine as the boundary's vertices are
+// dense (where graded fields vary most), its large triangles split to
+// 1/interior_pieces_across of the domain's extent.
 void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::vector<ValuedPoint>& samples) {
-  Point lo = tri.points[0], hi = lo;
-  for (const Point& p : tri.points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  constexpr int cells = 128;
-  const double w = (hi.x - lo.x) / cells, h = (hi.y - lo.y) / cells;
-  if (!(w > 0) || !(h > 0)) return;
-  for (const auto& t : tri.triangles) {
-    const Point a = tri.points[t[0]], b = tri.points[t[1]], c = tri.points[t[2]];
-    const int i0 = std::max(0, static_cast<int>(std::floor((std::min({a.x, b.x, c.x}) - lo.x) / w - 0.5)));
-    const int i1 = std::min(cells - 1, static_cast<int>(std::ceil((std::max({a.x, b.x, c.x}) - lo.x) / w - 0.5)));
-    const int j0 = std::max(0, static_cast<int>(std::floor((std::min({a.y, b.y, c.y}) - lo.y) / h - 0.5)));
-    const int j1 = std::min(cells - 1, static_cast<int>(std::ceil((std::max({a.y, b.y, c.y}) - lo.y) / h - 0.5)));
-    for (int i = i0; i <= i1; ++i) {
-      for (int j = j0; j <= j1; ++j) {
-        const Point q{lo.x + (i + 0.5) * w, lo.y + (j + 0.5) * h};
-        // Half-open ownership: a centre on an edge belongs to one triangle only.
-        if (!(orient2d(a, b, q) > 0 && orient2d(b, c, q) > 0 && orient2d(c, a, q) > 0)) continue;
-        const double bound = size.area_at(q);
-        if (std::isfinite(bound) && bound > 0) samples.push_back({q, w * h / (kappa * bound)});
-      }
-    }
-  }
+  Box box;
+  for (const Point& p : tri.points) box.add(p);
+  const double longest = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y) / interior_pieces_across;
+  if (!(longest > 0)) return;
+  for (const auto& t : tri.triangles)
+    integrate_triangle(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]], longest, size, samples);
 }
 
 }  // namespace
@@ -240,7 +253,7 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
     if (!(total > 0)) return;
     for (ValuedPoint& v : samples) v.value *= 100.0 * area / total;
   }
-  options.weight_samples = cluster_samples(samples);
+  options.weight_samples = cluster_samples(samples, uniform ? uniform_cluster_cells : graded_cluster_cells);
   options.gradation = options.boundary_refinement;
 }
 
