@@ -72,6 +72,10 @@ int mesh_body(void* context) {
   std::string json;
   if (line.report) {
     std::vector<RunFigure> figures_of_run = run_figures(report);
+    std::vector<double> triangles_per_subdomain;
+    for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
+      triangles_per_subdomain.push_back(m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k]);
+    figures_of_run.push_back({"subdomain_triangles", triangles_per_subdomain});
     figures_of_run.push_back({"seconds", seconds_since(start)});
     json = format_mesh_report_json(figures, figures_of_run);
   }

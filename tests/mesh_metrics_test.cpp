@@ -118,6 +118,8 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
                         "thread_imbalance",
                         "thread_seconds",
                         "phase_seconds",
+                        "predicted_triangles",
+                        "subdomain_predicted_triangles",
                         "seconds"};
   std::size_t previous = 0;
   for (const char* key : keys) {

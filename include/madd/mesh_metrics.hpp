@@ -64,7 +64,9 @@ struct RunFigure {
 
 // The figures of one call of mesh(): "threads", "thread_imbalance" (the
 // busiest thread's seconds over the mean, 0 when none was busy),
-// "thread_seconds" and "phase_seconds".
+// "thread_seconds", "phase_seconds", "predicted_triangles" (the work
+// estimate of the whole mesh) and "subdomain_predicted_triangles" (of each
+// subdomain; docs/mesh.md, "Balance by work").
 std::vector<RunFigure> run_figures(const MeshReport& report);
 
 }  // namespace madd

@@ -62,10 +62,14 @@ std::vector<RunFigure> run_figures(const MeshReport& report) {
     busy += s;
   }
   const auto threads = static_cast<double>(report.thread_seconds.size());
+  double predicted = 0;
+  for (const double t : report.expected_triangles) predicted += t;
   return {{"threads", threads},
           {"thread_imbalance", busy > 0 ? busiest * threads / busy : 0.0},
           {"thread_seconds", report.thread_seconds},
-          {"phase_seconds", report.phases}};
+          {"phase_seconds", report.phases},
+          {"predicted_triangles", predicted},
+          {"subdomain_predicted_triangles", report.expected_triangles}};
 }
 
 }  // namespace madd
