@@ -103,3 +103,26 @@ TEST_CASE("the same mesh on one thread and on three") {
   CHECK(one.triangles == three.triangles);
 }
 }
+
+TEST_SUITE("balance by the work the field makes") {
+TEST_CASE("the predicted triangles of the whole mesh and of each subdomain are near the actual counts") {
+  // docs/mesh.md, "Balance by work": the integral of 1 / (kappa A) over each
+  // subdomain. Within 10% in all and 25% per subdomain here (real coastlines:
+  // 1-6% in all).
+  madd::MeshOptions o = field_options(2);
+  o.decomposition.subdomains = 8;
+  const madd::MeshRun run = madd::mesh_with_report(channel_domain(), o);
+  const madd::Mesh& m = run.mesh;
+  REQUIRE(run.report.expected_triangles.size() == m.subdomain_count());
+  double predicted = 0;
+  for (std::uint32_t k = 0; k < m.subdomain_count(); ++k) {
+    const double actual = m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k];
+    CAPTURE(k);
+    CHECK(run.report.expected_triangles[k] > 0.75 * actual);
+    CHECK(run.report.expected_triangles[k] < 1.25 * actual);
+    predicted += run.report.expected_triangles[k];
+  }
+  CHECK(predicted > 0.9 * static_cast<double>(m.triangles.size()));
+  CHECK(predicted < 1.1 * static_cast<double>(m.triangles.size()));
+}
+}
