@@ -114,7 +114,8 @@ void integrate_triangle(Point a, Point b, Point c, double longest, const AreaBou
   const double side = std::max({distance(a, b), distance(b, c), distance(c, a)});
   const Point g = triangle_centroid(a, b, c);
   const double bound = size.area_at(g);
-  const double limit = piece_in_triangle_sides * piece_in_triangle_sides * bound;
+  // No bound here (infinite) or none usable: only the length rule splits.
+  const double limit = bound > 0 ? piece_in_triangle_sides * piece_in_triangle_sides * bound : HUGE_VAL;
   if (depth < max_piece_depth && (side > longest || side * side > limit)) {
     const Point ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
     integrate_triangle(a, ab, ca, longest, size, samples, depth + 1);
