@@ -19,8 +19,8 @@
 #include "madd/mesh.hpp"
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
-#include "mesh/merge.hpp"
 #include "kernel/box.hpp"
+#include "mesh/merge.hpp"
 #include "mesh/subdomain_regions.hpp"
 
 namespace madd::detail {
@@ -45,10 +45,10 @@ constexpr int graded_cluster_cells = 128;
 // A graded field's interior is integrated over pieces of the domain's
 // triangulation at most 1/128 of its extent long (add_interior_samples).
 constexpr double interior_pieces_across = 128;
-// A subdomain's own estimate splits its triangles to 1/8 of its extent: on
-// Vanern (coast_sizes.py field, N = 64) the total is then 1.8% above the
-// actual count and every subdomain within 0.92-1.08 of its own; finer
-// pieces change that by less than 2% and cost seconds of area_at queries.
+// A subdomain's own estimate splits its triangles to 1/8 of its extent
+// (with the rule below, totals within 1-6% of the actual count on real
+// coastlines: docs/mesh.md); splitting by length alone to 1/128 of each
+// subdomain cost seconds of area_at queries.
 constexpr double subdomain_pieces_across = 8;
 // ... and wherever the field is finer, to pieces at most 4 triangle sides
 // (sqrt of the area bound) long, at most 12 halvings deep.
@@ -115,7 +115,8 @@ void integrate_triangle(Point a, Point b, Point c, double longest, const AreaBou
   const Point g = triangle_centroid(a, b, c);
   const double bound = size.area_at(g);
   // No bound here (infinite) or none usable: only the length rule splits.
-  const double limit = bound > 0 ? piece_in_triangle_sides * piece_in_triangle_sides * bound : HUGE_VAL;
+  const double limit =
+      bound > 0 ? piece_in_triangle_sides * piece_in_triangle_sides * bound : std::numeric_limits<double>::infinity();
   if (depth < max_piece_depth && (side > longest || side * side > limit)) {
     const Point ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
     integrate_triangle(a, ab, ca, longest, size, samples, depth + 1);
@@ -211,7 +212,7 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
 void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::vector<ValuedPoint>& samples) {
   Box box;
   for (const Point& p : tri.points) box.add(p);
-  const double longest = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y) / interior_pieces_across;
+  const double longest = std::max(box.width(), box.height()) / interior_pieces_across;
   if (!(longest > 0)) return;
   for (const auto& t : tri.triangles)
     integrate_triangle(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]], longest, size, samples);
