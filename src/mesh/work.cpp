@@ -50,10 +50,15 @@ constexpr double interior_pieces_across = 128;
 // coastlines: docs/mesh.md); splitting by length alone to 1/128 of each
 // subdomain cost seconds of area_at queries.
 constexpr double subdomain_pieces_across = 8;
-// ... and wherever the field is finer, to pieces at most 4 triangle sides
-// (sqrt of the area bound) long, at most 12 halvings deep.
-constexpr double piece_in_triangle_sides = 4;
-constexpr int max_piece_depth = 12;
+// ... and wherever the field is finer, to pieces at most this many triangle
+// sides (sqrt of the area bound) long: 4 for the decomposition's weights (one
+// pass over the domain; 8 there made the largest subdomain 1.26 x the mean
+// instead of 1.16 on Vanern), 8 for the subdomains' own estimates (a pass per
+// subdomain before refinement; 4 cost 0.8 s of 6 on the Maine coast's 1.3 M
+// triangles, for totals 1-3% closer). At most 24 halvings deep.
+constexpr double weight_piece_sides = 4;
+constexpr double estimate_piece_sides = 8;
+constexpr int max_piece_depth = 24;
 
 // The decomposition sums the samples inside each face by a point-in-face
 // test per sample, so 10^5 samples (one per boundary piece of a coastline)
@@ -100,29 +105,44 @@ std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples
   return out;
 }
 
+// How finely integrate_triangle cuts: pieces at most `longest` long, and at
+// most `sides` triangle sides (sqrt of the area bound at their centroid).
+struct Pieces {
+  double longest;
+  double sides;
+};
+
 // One triangle's share of the interior's work under a varying size bound,
 // the integral of 1 / (kappa A) over it, one sample per piece at its
 // centroid (strictly inside the domain: the piece is inside a domain
-// triangle). A piece is split in four while its longest side is above
-// `longest` or above piece_in_triangle_sides triangle sides at its centroid:
-// 1 / A is convex where a distance term grades the field, so a centroid
-// under-counts a piece the field varies across (by 10-14% on real
-// coastlines at N = 64 with pieces of 1/8 of a subdomain). The pieces are
-// then about 1/16 of the mesh's triangles; `depth` bounds the recursion.
-void integrate_triangle(Point a, Point b, Point c, double longest, const AreaBound& size,
+// triangle). A piece is halved across its longest side while that side is
+// above `pieces.longest` or above `pieces.sides` triangle sides at its
+// centroid: 1 / A is convex where a distance term grades the field, so a
+// centroid under-counts a piece the field varies across (by 10-14% on real
+// coastlines at N = 64 with pieces of 1/8 of a subdomain). Halving the
+// longest side (not splitting in four) keeps the long slivers of a
+// coastline's triangulation to a number of pieces linear in their length.
+// `depth` bounds the recursion.
+void integrate_triangle(Point a, Point b, Point c, Pieces pieces, const AreaBound& size,
                         std::vector<ValuedPoint>& samples, int depth = 0) {
-  const double side = std::max({distance(a, b), distance(b, c), distance(c, a)});
+  // Rotate so that a-b is the longest side.
+  const double ab = distance(a, b), bc = distance(b, c), ca = distance(c, a);
+  if (bc > ab && bc >= ca) {
+    std::swap(a, b);
+    std::swap(b, c);  // (b, c, a)
+  } else if (ca > ab && ca > bc) {
+    std::swap(a, c);
+    std::swap(b, c);  // (c, a, b)
+  }
+  const double side = distance(a, b);
   const Point g = triangle_centroid(a, b, c);
   const double bound = size.area_at(g);
   // No bound here (infinite) or none usable: only the length rule splits.
-  const double limit =
-      bound > 0 ? piece_in_triangle_sides * piece_in_triangle_sides * bound : std::numeric_limits<double>::infinity();
-  if (depth < max_piece_depth && (side > longest || side * side > limit)) {
-    const Point ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-    integrate_triangle(a, ab, ca, longest, size, samples, depth + 1);
-    integrate_triangle(ab, b, bc, longest, size, samples, depth + 1);
-    integrate_triangle(ca, bc, c, longest, size, samples, depth + 1);
-    integrate_triangle(ab, bc, ca, longest, size, samples, depth + 1);
+  const double limit = bound > 0 ? pieces.sides * pieces.sides * bound : std::numeric_limits<double>::infinity();
+  if (depth < max_piece_depth && (side > pieces.longest || side * side > limit)) {
+    const Point m = midpoint(a, b);
+    integrate_triangle(a, m, c, pieces, size, samples, depth + 1);
+    integrate_triangle(m, b, c, pieces, size, samples, depth + 1);
     return;
   }
   if (std::isfinite(bound) && bound > 0) samples.push_back({g, triangle_area(a, b, c) / (kappa * bound)});
@@ -136,12 +156,12 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound
   const Triangulation tri = triangulate(local.pslg);
   Box box;
   for (const Point& p : tri.points) box.add(p);
-  const double longest = std::max(box.width(), box.height()) / subdomain_pieces_across;
-  std::vector<ValuedPoint> pieces;
+  const Pieces pieces{std::max(box.width(), box.height()) / subdomain_pieces_across, estimate_piece_sides};
+  std::vector<ValuedPoint> samples;
   for (const auto& v : tri.triangles)
-    integrate_triangle(tri.points[v[0]], tri.points[v[1]], tri.points[v[2]], longest, size, pieces);
+    integrate_triangle(tri.points[v[0]], tri.points[v[1]], tri.points[v[2]], pieces, size, samples);
   double t = 0;
-  for (const ValuedPoint& p : pieces) t += p.value;
+  for (const ValuedPoint& p : samples) t += p.value;
   return t;
 }
 
@@ -212,10 +232,10 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
 void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::vector<ValuedPoint>& samples) {
   Box box;
   for (const Point& p : tri.points) box.add(p);
-  const double longest = std::max(box.width(), box.height()) / interior_pieces_across;
-  if (!(longest > 0)) return;
+  const Pieces pieces{std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
+  if (!(pieces.longest > 0)) return;
   for (const auto& t : tri.triangles)
-    integrate_triangle(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]], longest, size, samples);
+    integrate_triangle(tri.points[t[0]], tri.points[t[1]], tri.points[t[2]], pieces, size, samples);
 }
 
 }  // namespace
