@@ -59,6 +59,11 @@ constexpr double subdomain_pieces_across = 8;
 constexpr double weight_piece_sides = 4;
 constexpr double estimate_piece_sides = 8;
 constexpr int max_piece_depth = 24;
+// A size bound far below the domain's scale (a size function of 1e-30)
+// must not make the estimate itself exhaust memory before refinement's own
+// limits can refuse the mesh: past this many pieces (48 MB) the rest are
+// counted at their centroids, unsplit.
+constexpr std::size_t max_pieces = std::size_t{1} << 21;
 
 // The decomposition sums the samples inside each face by a point-in-face
 // test per sample, so 10^5 samples (one per boundary piece of a coastline)
@@ -139,7 +144,7 @@ void integrate_triangle(Point a, Point b, Point c, Pieces pieces, const AreaBoun
   const double bound = size.area_at(g);
   // No bound here (infinite) or none usable: only the length rule splits.
   const double limit = bound > 0 ? pieces.sides * pieces.sides * bound : std::numeric_limits<double>::infinity();
-  if (depth < max_piece_depth && (side > pieces.longest || side * side > limit)) {
+  if (depth < max_piece_depth && samples.size() < max_pieces && (side > pieces.longest || side * side > limit)) {
     const Point m = midpoint(a, b);
     integrate_triangle(a, m, c, pieces, size, samples, depth + 1);
     integrate_triangle(m, b, c, pieces, size, samples, depth + 1);
