@@ -9,7 +9,10 @@
 // layer: they are split to the size bound and the triangles on both sides
 // are of that size. Fitted on 320 subdomains of five real coastlines (N = 64,
 // A = area / 300000): mean error 2%, largest 22%, against 2.6% and 38% for
-// the area alone.
+// the area alone. Under a varying bound (a size function, samples, the size
+// field) the first term is the integral of 1 / (kappa A) instead
+// (integrate_triangle): totals within 1-5% of the actual counts on six real
+// coastlines.
 #include "mesh/work.hpp"
 
 #include <algorithm>
