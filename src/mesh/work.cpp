@@ -162,8 +162,7 @@ void integrate_triangle(Point a, Point b, Point c, Pieces pieces, const AreaBoun
 double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound& size) {
   const LocalDomain local = local_domain(d, k);
   const Triangulation tri = triangulate(local.pslg);
-  Box box;
-  for (const Point& p : tri.points) box.add(p);
+  const Box box = bounding_box(tri.points);
   const Pieces pieces{std::max(box.width(), box.height()) / subdomain_pieces_across, estimate_piece_sides};
   std::vector<ValuedPoint> samples;
   for (const auto& v : tri.triangles)
@@ -238,8 +237,7 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
 // dense (where graded fields vary most), its large triangles split to
 // 1/interior_pieces_across of the domain's extent.
 void add_interior_samples(const Triangulation& tri, const AreaBound& size, std::vector<ValuedPoint>& samples) {
-  Box box;
-  for (const Point& p : tri.points) box.add(p);
+  const Box box = bounding_box(tri.points);
   const Pieces pieces{std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
   if (!(pieces.longest > 0)) return;
   for (const auto& t : tri.triangles)
