@@ -11,6 +11,8 @@
 
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
+#include "mesh/narrow_gaps.hpp"
+#include "sizing/edge_length.hpp"
 
 namespace {
 
@@ -124,5 +126,53 @@ TEST_CASE("the predicted triangles of the whole mesh and of each subdomain are n
   }
   CHECK(predicted > 0.9 * static_cast<double>(m.triangles.size()));
   CHECK(predicted < 1.1 * static_cast<double>(m.triangles.size()));
+}
+}
+
+TEST_SUITE("balance by the work the field makes") {
+TEST_CASE("narrow gap: a channel far narrower than the bound costs what refinement makes of it, a wedge does not") {
+  // A 10 x 10 basin and a channel 0.01 wide and 8 long; the bound (a size
+  // function, so the estimate integrates) asks for triangles of side ~0.3
+  // everywhere. Refinement fills the channel at about gap_edge_fraction x
+  // its width whatever the bound; the estimate must count that.
+  madd::Pslg d;
+  const double w = 0.01;
+  d.points = {{0, 0}, {10, 0}, {10, 5 - w / 2}, {18, 5 - w / 2}, {18, 5 + w / 2}, {10, 5 + w / 2}, {10, 10}, {0, 10}};
+  for (std::uint32_t i = 0; i < 8; ++i) d.segments.push_back({i, (i + 1) % 8, 1});
+  const madd::detail::NarrowGaps gaps(d);
+  const double bound = 0.04;
+  const double in_gap = madd::detail::area_of_edge(madd::detail::gap_edge_fraction * w);
+  CHECK(gaps.area_at({12, 5}, bound) == doctest::Approx(in_gap).epsilon(1e-6));
+  CHECK(gaps.area_at({12, 5 + w / 4}, bound) == doctest::Approx(in_gap).epsilon(1e-6));
+  CHECK(gaps.area_at({5, 5}, bound) == bound);             // the basin: wider than the bound's triangles
+  CHECK(gaps.area_at({12, 5}, in_gap / 2) == in_gap / 2);  // a finer bound binds first
+  // The wedge between the basin's south side and the channel's: they meet
+  // at (10, 4.995) at 90 degrees, and near that corner the chord from one
+  // side ends on the other. Not a gap.
+  CHECK(gaps.area_at({9.999, 4.994}, bound) == bound);
+
+  madd::MeshOptions o;
+  o.decomposition.subdomains = 2;
+  o.decomposition.threads = 2;
+  o.size.min_triangle_angle_deg = 30;
+  o.size.triangle_area_function = [](double x, double) { return 0.04 * (1.0 + 0.01 * x); };
+  const madd::MeshRun run = madd::mesh_with_report(d, o);
+  const madd::Mesh& m = run.mesh;
+  // The channel's triangles alone, counted from the outside, against the
+  // estimate's share for it: the integral over the channel of 1 / (kappa A)
+  // with A the gap's area.
+  std::size_t channel = 0;
+  for (const auto& t : m.triangles) {
+    const double cx = (m.points[t[0]].x + m.points[t[1]].x + m.points[t[2]].x) / 3;
+    channel += cx > 10;
+  }
+  double predicted = 0;
+  for (const double t : run.report.expected_triangles) predicted += t;
+  const auto total = static_cast<double>(m.triangles.size());
+  // The channel is a fifth of the mesh (the bound alone gives it a few
+  // triangles): an estimate blind to it is 20% short.
+  CHECK(static_cast<double>(channel) > 0.2 * total);
+  CHECK(predicted > 0.9 * total);
+  CHECK(predicted < 1.1 * total);
 }
 }

@@ -21,6 +21,7 @@ using madd::detail::ring_signed_area;
 using madd::detail::RingLocation;
 using madd::detail::RingView;
 using madd::detail::winding_number;
+using madd::detail::WindingIndex;
 
 namespace {
 
@@ -293,4 +294,38 @@ TEST_CASE("rings: signs are exact for points a few ulps from an edge and nearly 
   // The nudged points really straddle the edge.
   CHECK(counts[0] > 200);
   CHECK(counts[2] > 200);
+}
+
+TEST_CASE("rings: the winding index gives winding_number's answer for a face with holes, on edges and vertices too") {
+  // A face and two holes as index cycles, queried on a half grid (so many
+  // points lie at the height of a vertex or on an edge, where the half-open
+  // rule decides) and at random points: the sum over the rings, exactly.
+  std::mt19937 rng(11);
+  const std::vector<Point> queries = half_grid(10);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Ring outer = random_star_polygon(rng, 10, 6 + trial);
+    std::vector<Point> points = outer;
+    std::vector<std::vector<std::uint32_t>> rings(1);
+    for (std::uint32_t k = 0; k < outer.size(); ++k) rings[0].push_back(k);
+    // Two small holes, clockwise, wherever they fall (the sum is what is compared).
+    for (const Point c : {Point{3, 4}, Point{6, 5}}) {
+      std::vector<std::uint32_t> hole;
+      for (const Point d : {Point{0, 0}, Point{0, 1}, Point{1, 1}, Point{1, 0}}) {
+        hole.push_back(static_cast<std::uint32_t>(points.size()));
+        points.push_back(c + d);
+      }
+      rings.push_back(hole);
+    }
+    const WindingIndex index(points, rings);
+    std::uniform_real_distribution<double> coordinate(-1.0, 11.0);
+    std::vector<Point> all = queries;
+    for (int k = 0; k < 500; ++k) all.push_back({coordinate(rng), coordinate(rng)});
+    for (const Point p : all) {
+      int expected = 0;
+      for (const auto& ring : rings) expected += winding_number(RingView(points, ring), p);
+      CAPTURE(p.x);
+      CAPTURE(p.y);
+      CHECK(index.winding(p) == expected);
+    }
+  }
 }

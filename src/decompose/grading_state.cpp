@@ -1,9 +1,11 @@
 // The driver's grading state between rounds (Sec. 5.2).
 #include <numeric>
+#include <optional>
 
 #include "decompose/grading.hpp"
 
 #include "kernel/box.hpp"
+#include "kernel/rings.hpp"
 
 namespace madd::detail {
 
@@ -34,15 +36,17 @@ FaceSamples GradingState::samples(const Subdivision& sub, std::uint32_t face) co
   if (options_.weight_function || options_.subdomain_area_function) out = function_samples(sub, face, options_);
   FaceSamples bg = background_samples(options_, weights_inside_[face], areas_inside_[face]);
   // The first face holds every point, some perhaps outside the domain: filter them.
-  const bool filter = sub.faces.size() == 1;
+  std::optional<WindingIndex> filter;
+  if (sub.faces.size() == 1 && (!bg.weights.empty() || !bg.areas.empty()))
+    filter.emplace(sub.points, sub.faces[face].rings);
   if (!options_.weight_function) {
     for (const ValuedPoint& p : bg.weights) {
-      if (!filter || point_in_face(sub, face, p.at)) out.weights.push_back(p);
+      if (!filter || filter->winding(p.at) != 0) out.weights.push_back(p);
     }
   }
   if (!options_.subdomain_area_function) {
     for (const ValuedPoint& p : bg.areas) {
-      if (!filter || point_in_face(sub, face, p.at)) out.areas.push_back(p);
+      if (!filter || filter->winding(p.at) != 0) out.areas.push_back(p);
     }
   }
   return out;
@@ -82,19 +86,32 @@ void GradingState::after_commit(const Subdivision& sub, std::uint32_t face, std:
   weights_inside_.resize(sub.faces.size());
   areas_inside_.resize(sub.faces.size());
   // Each point goes to exactly one side: the face it is in, else the other.
+  // The side with fewer ring vertices is tested (a winding number costs one
+  // step per vertex, and a coast's rings have thousands), after its outer
+  // ring's bounding box. The first split also drops the points outside the
+  // domain, so there both sides are tested.
+  const bool first = sub.faces.size() == 2;
+  const bool face_smaller = sub.ring_vertex_count(face) <= sub.ring_vertex_count(added);
+  const std::uint32_t tested = face_smaller ? face : added, other = face_smaller ? added : face;
+  Box box;
+  for (const std::uint32_t v : sub.faces[tested].rings[0]) box.add(sub.points[v]);
+  const WindingIndex in_tested_face(sub.points, sub.faces[tested].rings);
+  std::optional<WindingIndex> in_other_face;
+  if (first) in_other_face.emplace(sub.points, sub.faces[other].rings);
   for (auto* lists : {&weights_inside_, &areas_inside_}) {
     const auto& pts = lists == &weights_inside_ ? options_.weight_samples : options_.subdomain_area_samples;
-    std::vector<std::uint32_t> keep, moved;
-    const bool first = sub.faces.size() == 2;
+    std::vector<std::uint32_t> in_tested, in_other;
     for (std::uint32_t i : (*lists)[face]) {
-      if (point_in_face(sub, face, pts[i].at)) {
-        keep.push_back(i);
-      } else if (!first || point_in_face(sub, added, pts[i].at)) {
-        moved.push_back(i);
+      const Point p = pts[i].at;
+      const bool in_box = p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y;
+      if (in_box && in_tested_face.winding(p) != 0) {
+        in_tested.push_back(i);
+      } else if (!first || in_other_face->winding(p) != 0) {
+        in_other.push_back(i);
       }
     }
-    (*lists)[face] = std::move(keep);
-    (*lists)[added] = std::move(moved);
+    (*lists)[tested] = std::move(in_tested);
+    (*lists)[other] = std::move(in_other);
   }
 }
 
@@ -109,9 +126,10 @@ std::vector<ValuedPoint> GradingState::weights_in(const Subdivision& sub, std::u
   Box box;
   for (const std::uint32_t v : sub.faces[face].rings[0]) box.add(sub.points[v]);
   std::vector<ValuedPoint> out;
+  const WindingIndex in_face(sub.points, sub.faces[face].rings);
   for (const ValuedPoint& p : options_.weight_samples) {
     if (p.at.x < box.lo.x || p.at.x > box.hi.x || p.at.y < box.lo.y || p.at.y > box.hi.y) continue;
-    if (point_in_face(sub, face, p.at)) out.push_back(p);
+    if (in_face.winding(p.at) != 0) out.push_back(p);
   }
   return out;
 }
@@ -133,8 +151,10 @@ FaceDensity GradingState::density_from_scratch(const Subdivision& sub, std::uint
 
 void GradingState::reassign(const Subdivision& sub) {
   std::vector<Box> boxes(sub.faces.size());
+  std::vector<WindingIndex> faces;
   for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
     for (const std::uint32_t v : sub.faces[f].rings[0]) boxes[f].add(sub.points[v]);
+    faces.emplace_back(sub.points, sub.faces[f].rings);
   }
   for (auto* lists : {&weights_inside_, &areas_inside_}) {
     const auto& pts = lists == &weights_inside_ ? options_.weight_samples : options_.subdomain_area_samples;
@@ -145,7 +165,7 @@ void GradingState::reassign(const Subdivision& sub) {
       for (std::uint32_t f = 0; f < sub.faces.size(); ++f) {
         const Box& b = boxes[f];
         if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y) continue;
-        if (point_in_face(sub, f, p)) {
+        if (faces[f].winding(p) != 0) {
           (*lists)[f].push_back(i);
           break;
         }

@@ -2,6 +2,7 @@
 // location that every stage uses.
 #include "kernel/rings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "kernel/containment.hpp"
@@ -99,6 +100,61 @@ Orientation ring_orientation(RingView ring) noexcept {
 int winding_number(RingView ring, Point p) noexcept {
   int winding = 0;
   for (std::size_t k = 0; k < ring.size(); ++k) winding += crossing(ring[k], ring.after(k), p);
+  return winding;
+}
+
+WindingIndex::WindingIndex(std::span<const Point> points, std::span<const std::vector<std::uint32_t>> rings) {
+  std::size_t edges = 0;
+  bool any = false;
+  for (const auto& ring : rings) {
+    edges += ring.size();
+    for (const std::uint32_t v : ring) {
+      y0_ = any ? std::min(y0_, points[v].y) : points[v].y;
+      y1_ = any ? std::max(y1_, points[v].y) : points[v].y;
+      any = true;
+    }
+  }
+  // About two edges a row; coast edges span a row or two.
+  rows_ = std::clamp<std::size_t>(edges / 2, 1, std::size_t{1} << 16);
+  row_height_ = y1_ > y0_ ? (y1_ - y0_) / static_cast<double>(rows_) : 1.0;
+  // Two passes: count each row's edges, then file them. row_of is
+  // monotone in y, so an edge filed in rows row_of(lower end) to
+  // row_of(upper end) is in the row of every height it spans.
+  std::vector<std::uint32_t> count(rows_ + 1, 0);
+  const auto each_edge = [&](auto&& f) {
+    for (const auto& ring : rings) {
+      const RingView view(points, ring);
+      for (std::size_t k = 0; k < view.size(); ++k) f(view[k], view.after(k));
+    }
+  };
+  each_edge([&](Point a, Point b) {
+    for (std::size_t r = row_of(std::min(a.y, b.y)); r <= row_of(std::max(a.y, b.y)); ++r) ++count[r + 1];
+  });
+  first_.assign(rows_ + 1, 0);
+  for (std::size_t r = 0; r < rows_; ++r) first_[r + 1] = first_[r] + count[r + 1];
+  edges_.resize(2 * static_cast<std::size_t>(first_[rows_]));
+  std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
+  each_edge([&](Point a, Point b) {
+    for (std::size_t r = row_of(std::min(a.y, b.y)); r <= row_of(std::max(a.y, b.y)); ++r) {
+      edges_[2 * static_cast<std::size_t>(fill[r])] = a;
+      edges_[2 * static_cast<std::size_t>(fill[r]) + 1] = b;
+      ++fill[r];
+    }
+  });
+}
+
+std::size_t WindingIndex::row_of(double y) const noexcept {
+  const double r = std::floor((y - y0_) / row_height_);
+  if (!(r > 0.0)) return 0;
+  return std::min(rows_ - 1, static_cast<std::size_t>(r));
+}
+
+int WindingIndex::winding(Point p) const noexcept {
+  // Every edge counted spans p's height (half-open): none outside [y0, y1].
+  if (!(p.y >= y0_ && p.y <= y1_)) return 0;
+  const std::size_t r = row_of(p.y);
+  int winding = 0;
+  for (std::size_t e = first_[r]; e < first_[r + 1]; ++e) winding += crossing(edges_[2 * e], edges_[2 * e + 1], p);
   return winding;
 }
 

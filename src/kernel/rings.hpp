@@ -70,6 +70,25 @@ Orientation ring_orientation(RingView ring) noexcept;
 // to tell points on the ring apart.
 int winding_number(RingView ring, Point p) noexcept;
 
+// The winding number of many points about the same rings (a face and its
+// holes: the sum over its rings), as winding_number gives it, edge for edge
+// the same crossing rule, but each point meets only the edges whose span in
+// y holds its height: the edges are filed by rows of y. For the samples of
+// a graded decomposition, tested against faces of thousands of coast
+// vertices on every split.
+class WindingIndex {
+public:
+  WindingIndex(std::span<const Point> points, std::span<const std::vector<std::uint32_t>> rings);
+  int winding(Point p) const noexcept;
+
+private:
+  std::size_t row_of(double y) const noexcept;
+  double y0_ = 0.0, y1_ = 0.0, row_height_ = 1.0;
+  std::size_t rows_ = 1;
+  std::vector<std::uint32_t> first_;  // per row: where its edges start in edges_ (rows_ + 1)
+  std::vector<Point> edges_;          // the ends of each filed edge, a then b
+};
+
 enum class RingLocation : std::int8_t { outside, on_ring, inside };
 
 // Exact: on_ring when p lies on a vertex or an edge, else inside when the

@@ -188,7 +188,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Psl
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   Decomposition d = detail::discretise(decomposition, field, false);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, field);
+  report.expected_triangles = detail::expected_triangles(d, domain, field);
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };

@@ -219,7 +219,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
   Decomposition d = detail::discretise(decomposition, field, false);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, field);
+  report.expected_triangles = detail::expected_triangles(d, domain, field);
 
   part.share = share;
   part.shares = shares;

@@ -10,9 +10,9 @@
 
 namespace madd::detail {
 
-// Per subdomain of the discretised decomposition `d`: the triangles its mesh
-// is expected to have.
-std::vector<double> expected_triangles(const Decomposition& d, const AreaBound& size);
+// Per subdomain of the discretised decomposition `d` of `domain`: the
+// triangles its mesh is expected to have.
+std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size);
 
 // Sets the decomposition's weights so that it balances expected triangles
 // rather than areas (when the options carry no weights of their own).
