@@ -151,6 +151,22 @@ void add_vertices(MedialGraph& g, const Triangulation& tri, std::span<const Boun
   }
 }
 
+// Whether edge i of triangle t (a chord between boundary points) runs a hair
+// from the boundary along its middle: from the triangle's third corner, or
+// from one of its other sides that is a boundary edge (an edge no refinement
+// point divides, which a third corner alone would not show).
+bool hugs_boundary(const Triangulation& tri, std::uint32_t t, int i) {
+  const auto& v = tri.triangles[t];
+  const Point a = tri.points[v[(i + 1) % 3]], b = tri.points[v[(i + 2) % 3]], c = tri.points[v[i]];
+  if (hugs_separator(a, b, c, c)) return true;
+  for (const int k : {(i + 1) % 3, (i + 2) % 3}) {
+    if (tri.neighbours[t][k] != no_index) continue;  // inside: not the boundary
+    const Point p = tri.points[v[(k + 1) % 3]], q = tri.points[v[(k + 2) % 3]];
+    if (hugs_separator(a, b, p, q)) return true;
+  }
+  return false;
+}
+
 // Algorithm 1, lines 9-10, plus the spokes inside junction triangles.
 std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::span<const BoundaryLinks> links,
                               const MedialOptions& options, const std::vector<JunctionTest>& tests) {
@@ -176,7 +192,10 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
       const double a = end_angle(tri, links, e.from, tri.points[e.to]);
       const double b = end_angle(tri, links, e.to, tri.points[e.from]);
       e.smallest_angle_deg = std::min(a, b);
-      e.acceptable = tri.segment_of[t][i] == no_index && e.smallest_angle_deg >= bound;
+      // The two triangles on it hold the boundary nearest it on either side:
+      // their third corners, and their sides that are boundary edges.
+      const bool clear = !hugs_boundary(tri, t, i) && !hugs_boundary(tri, n, j);
+      e.acceptable = tri.segment_of[t][i] == no_index && e.smallest_angle_deg >= bound && clear;
       g.edges.push_back(e);
       double w = distance(tri.points[e.from], tri.points[e.to]);
       if (options.smooth) w *= static_cast<double>(links[e.from].bonus) * static_cast<double>(links[e.to].bonus);
@@ -190,7 +209,12 @@ std::vector<double> add_edges(MedialGraph& g, const Triangulation& tri, std::spa
       e.left = g.first_vertex[t] + static_cast<std::uint32_t>((k + 2) % 3);
       e.right = g.first_vertex[t] + static_cast<std::uint32_t>((k + 1) % 3);
       e.smallest_angle_deg = tests[t].spoke_angle[k];
-      e.acceptable = tests[t].spoke_ok[k];
+      // A flat junction triangle's centre lies near its long side, and the
+      // spokes to that side's ends run along it, a hair from the third corner.
+      const Point centre = g.points[e.from], end = tri.points[e.to];
+      const Point p1 = tri.points[v[(k + 1) % 3]], p2 = tri.points[v[(k + 2) % 3]];
+      e.acceptable =
+          tests[t].spoke_ok[k] && !hugs_separator(centre, end, p1, p1) && !hugs_separator(centre, end, p2, p2);
       g.edges.push_back(e);
       double w = distance(g.points[e.from], tri.points[e.to]);
       if (options.smooth) w *= static_cast<double>(links[e.to].bonus);
@@ -277,6 +301,28 @@ void set_vertex_weights(MedialGraph& graph, std::vector<double> weights) {
   std::fill(coarse.begin(), coarse.end(), 0.0);
   for (std::size_t v = 0; v < weights.size(); ++v) coarse[graph.coarse[v]] += weights[v];
   graph.gd.vertex_weights = std::move(weights);
+}
+
+namespace {
+
+double point_segment_distance(Point p, Point a, Point b) {
+  const Point ab = b - a;
+  const double length2 = ab.x * ab.x + ab.y * ab.y;
+  const double t = length2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2, 0.0, 1.0) : 0.0;
+  return distance(p, lerp(a, b, t));
+}
+
+}  // namespace
+
+bool hugs_separator(Point a, Point b, Point p, Point q) {
+  // Near its ends a separator meets the boundary it ends on: only its middle counts.
+  constexpr double clearance_end = 0.1;
+  const double limit = separator_clearance * distance(a, b);
+  const Point m0 = lerp(a, b, clearance_end), m1 = lerp(a, b, 1.0 - clearance_end);
+  // Two segments that do not cross are nearest at an end of one of them.
+  if (orient2d(m0, m1, p) * orient2d(m0, m1, q) < 0.0 && orient2d(p, q, m0) * orient2d(p, q, m1) < 0.0) return true;
+  return std::min({point_segment_distance(p, m0, m1), point_segment_distance(q, m0, m1),
+                   point_segment_distance(m0, p, q), point_segment_distance(m1, p, q)}) < limit;
 }
 
 std::vector<BoundaryLinks> boundary_links(const Triangulation& tri) {

@@ -6,8 +6,9 @@
 // only when every angle stays >= Phi0, no point of the split lies in the
 // swept triangle (c, p, x) (so nothing is crossed and the sides' interior
 // points stay put), no other cut separator ends at x, and the balance stays
-// within the acceptable imbalance, and a separator is not shortened below
-// EndSmoothing::min_length (short separators are the artifact smoothing is for).
+// within the acceptable imbalance, a separator is not shortened below
+// EndSmoothing::min_length (short separators are the artifact smoothing is for),
+// and the moved one keeps clear of the boundary (hugs_separator).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -68,6 +69,10 @@ bool swept_empty(const MedialGraph& g, const FaceDomain& fd, std::uint32_t c, co
   for (std::uint32_t v = 0; v < g.points.size(); ++v) {
     if (v == c || std::find(path.begin(), path.end(), v) != path.end()) continue;
     if (in_closed_triangle(pc, pp, px, g.points[v])) return false;
+    // Nor may the moved separator run alongside the boundary a hair from it.
+    const std::uint32_t next = v < fd.refs.size() ? fd.links[v].next : no_index;
+    if (next != no_index && next != c && next != path.back() && hugs_separator(pc, px, g.points[v], g.points[next]))
+      return false;
   }
   for (const Point& p : fd.isolated)  // a move must not carry an isolated point to the other side
     if (in_closed_triangle(pc, pp, px, p)) return false;
