@@ -25,7 +25,10 @@ inline Point operator-(Point a, Point b) noexcept { return {a.x - b.x, a.y - b.y
 inline Point operator*(double s, Point a) noexcept { return {s * a.x, s * a.y}; }
 inline double dot(Point a, Point b) noexcept { return a.x * b.x + a.y * b.y; }
 inline double cross(Point a, Point b) noexcept { return a.x * b.y - a.y * b.x; }
-inline double length(Point a) noexcept { return std::hypot(a.x, a.y); }
+// sqrt(x^2 + y^2), not std::hypot: validate() keeps coordinates within
+// [1e-40, 1e70] in magnitude, so the squares neither overflow nor lose
+// their digits, and hypot's care for that cost 7-9% of a graded mesh run.
+inline double length(Point a) noexcept { return std::sqrt(a.x * a.x + a.y * a.y); }
 inline double distance(Point a, Point b) noexcept { return length(b - a); }
 inline Point midpoint(Point a, Point b) noexcept { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
 inline Point lerp(Point a, Point b, double t) noexcept { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
