@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -183,7 +184,20 @@ double phase_seconds(const MeshReport& report, const char* name) {
 struct Figures {
   MeshMetrics mesh;
   std::vector<double> decompose_seconds, mesh_seconds, format_seconds, peak_megabytes;
+  // Per subdomain: the work estimate (every rank computes all of it, the
+  // same) and the triangles its owner made.
+  std::vector<double> predicted_triangles, subdomain_triangles;
 };
+
+// Per subdomain, the triangles of the whole mesh: each rank's part holds
+// its own subdomains' ranges (the others empty), so the sums are the counts.
+std::vector<double> subdomain_triangles(const MeshPart& part) {
+  const std::vector<std::uint32_t>& first = part.mesh.subdomain_first_triangle;
+  std::vector<std::uint64_t> mine(first.empty() ? 0 : first.size() - 1), all(mine.size());
+  for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = first[k + 1] - first[k];
+  MPI_Reduce(mine.data(), all.data(), static_cast<int>(mine.size()), MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+  return {all.begin(), all.end()};
+}
 
 // This process's peak resident memory.
 double peak_megabytes() {
@@ -219,6 +233,8 @@ Figures gather_figures(const World& world, const MeshPart& part, const MeshOptio
                        double decompose_s, double format_s) {
   Figures f;
   f.mesh = combine_figures(part, options.size);
+  f.predicted_triangles = report.expected_triangles;
+  f.subdomain_triangles = subdomain_triangles(part);
   const double times[4] = {
       decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "verify") + phase_seconds(report, "merge"),
       format_s, peak_megabytes()};
@@ -256,9 +272,15 @@ std::string list(const std::vector<double>& values) {
 // The mesh report of `madd mesh`, with every rank's figures as the run's.
 std::string report_json(const World& world, const Figures& f, double seconds) {
   const std::vector<RunFigure> run = {
-      {"ranks", static_cast<double>(world.size)}, {"rank_imbalance", imbalance(f.mesh_seconds)},
-      {"decompose_seconds", f.decompose_seconds}, {"mesh_seconds", f.mesh_seconds},
-      {"format_seconds", f.format_seconds},       {"peak_resident_megabytes", f.peak_megabytes},
+      {"ranks", static_cast<double>(world.size)},
+      {"rank_imbalance", imbalance(f.mesh_seconds)},
+      {"decompose_seconds", f.decompose_seconds},
+      {"mesh_seconds", f.mesh_seconds},
+      {"format_seconds", f.format_seconds},
+      {"peak_resident_megabytes", f.peak_megabytes},
+      {"predicted_triangles", std::accumulate(f.predicted_triangles.begin(), f.predicted_triangles.end(), 0.0)},
+      {"subdomain_predicted_triangles", f.predicted_triangles},
+      {"subdomain_triangles", f.subdomain_triangles},
       {"seconds_before_writing", seconds}};
   return format_mesh_report_json(f.mesh, run);
 }

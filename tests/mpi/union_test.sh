@@ -9,11 +9,12 @@ set -eu
 mpiexec=$1 np=$2 madd=$3 madd_mpi=$4 domain=$5 work=$6
 shift 6
 rm -rf "$work" && mkdir -p "$work/one" "$work/parts"
-"$madd" mesh "$domain" -j 1 --quiet -o "$work/one/m" "$@"
+"$madd" mesh "$domain" -j 1 --quiet -o "$work/one/m" --report="$work/one/r.json" "$@"
 # Root in a container or CI runner: Open MPI refuses root without this flag.
 root_flag=""
 [ "$(id -u)" = 0 ] && root_flag="--allow-run-as-root"
-"$mpiexec" $root_flag --oversubscribe -np "$np" "$madd_mpi" mesh "$domain" -j 1 --quiet --vtu -o "$work/parts/m" "$@"
+"$mpiexec" $root_flag --oversubscribe -np "$np" "$madd_mpi" mesh "$domain" -j 1 --quiet --vtu -o "$work/parts/m" \
+  --report="$work/parts/r.json" "$@"
 
 fail() { echo "union_test: $*" >&2; exit 1; }
 last=$((np - 1))
@@ -43,4 +44,11 @@ cmp -s "$work/one.ele" "$work/parts.ele" || fail "the parts' triangles differ fr
 # Each vertex has one owner, the same in every part that has it.
 owners=$(for r in $(seq 0 "$last"); do awk 'NR > 1 && !/^#/ { print $4, $5 }' "$work/parts/m-$r.node"; done | sort -u | awk '{ print $1 }' | uniq -d | wc -l)
 [ "$owners" = 0 ] || fail "$owners vertices have different owners in different parts"
+# The reports give the same work estimate and the same actual count of every
+# subdomain (the MPI driver sums its ranks' parts).
+for key in subdomain_predicted_triangles subdomain_triangles predicted_triangles; do
+  one=$(grep "\"$key\":" "$work/one/r.json") || fail "madd mesh's report has no $key"
+  parts=$(grep "\"$key\":" "$work/parts/r.json") || fail "madd-mpi's report has no $key"
+  [ "$one" = "$parts" ] || fail "$key differs: madd mesh $one, madd-mpi $parts"
+done
 echo "union_test: $np ranks: $(wc -l < "$work/one.ele") triangles, $(wc -l < "$work/one.node") vertices, identical to madd mesh"
