@@ -16,10 +16,14 @@
 #include "madd/atomic_write.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 #include "madd/metrics.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/triangulation.hpp"
 #include "decomposition_check.hpp"
+#include "kernel/resource_limits.hpp"
+#include "mesh/discretise.hpp"
+#include "quality/area_bound.hpp"
 
 namespace {
 
@@ -320,6 +324,32 @@ TEST_CASE("resource limits throw LimitError with a clear message") {
   unlimited.max_memory_bytes = 0;
   unlimited.time_limit_seconds = 0;
   CHECK(madd::decompose(p, options) == madd::decompose(p, unlimited));
+}
+
+TEST_CASE("a size bound far below the domain's scale stops at the memory and time limits, before refinement") {
+  // --size-fn 1e-30 on data/channel.poly grew to 24 GB in the decoupling
+  // (millions of split points a separator, no limit checked there) and was
+  // killed. A unit square asking for sides of 1e-7: 8.5 million points a
+  // segment.
+  const Pslg p = polygon({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  madd::DecomposeOptions dopt;
+  dopt.subdomains = 2;
+  const madd::Decomposition d = madd::decompose(p, dopt);
+  madd::MeshOptions o;
+  o.decomposition.threads = 1;
+  o.size.triangle_area_function = [](double, double) { return 1e-14; };
+  o.decomposition.max_memory_bytes = madd::detail::resident_bytes() + (std::size_t{128} << 20);
+  try {
+    (void)madd::mesh_decomposition(d, p, o);
+    FAIL("no LimitError");
+  } catch (const madd::LimitError& e) {
+    CHECK(std::string(e.what()).find("memory limit") != std::string::npos);
+  }
+  // The decoupling itself checks the limits it is given (refinement, after
+  // it, would have stopped the run too, but only once every point was made).
+  const madd::detail::AreaBound field(o.size);
+  const madd::detail::ResourceGuard expired({.time_limit_seconds = 1e-9});
+  CHECK_THROWS_AS(madd::detail::discretise(d, field, false, &expired), madd::LimitError);
 }
 
 TEST_CASE("an unwritable output fails with OutputError and leaves no file") {

@@ -26,6 +26,11 @@ namespace madd {
 namespace detail {
 namespace {
 
+// The limits are checked every this many segments, and after a segment
+// that took the split points made since the last check past this many.
+constexpr std::uint32_t segments_between_checks = 4096;
+constexpr std::size_t points_between_checks = std::size_t{1} << 18;
+
 // Parameters in (0, 1) of the split points of segment j, from its lower-index
 // end: the integral of 1/h, sampled and summed by the trapezoid rule, split
 // into equal shares.
@@ -129,8 +134,8 @@ Decomposition discretise(const Decomposition& decomposition, const Pslg& domain,
   return detail::discretise(decomposition, detail::AreaBound(size, &domain), true);
 }
 
-Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field,
-                                 bool boundary_by_features) {
+Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field, bool boundary_by_features,
+                                 const ResourceGuard* guard) {
   // The features every piece resolves: every segment (interior ones too, so
   // that a narrow gap between an interior segment and the shore is resolved)
   // and every isolated input vertex, as a segment of length 0 (the distance
@@ -154,7 +159,12 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
   out.segment_origin.clear();
   // pieces[j]: the new segments of old segment j, from its lower-index end.
   std::vector<std::vector<std::uint32_t>> pieces(decomposition.segments.size());
+  std::size_t unchecked = 0;  // split points made since the limits were last checked
   for (std::uint32_t j = 0; j < decomposition.segments.size(); ++j) {
+    if (guard != nullptr && (unchecked >= points_between_checks || j % segments_between_checks == 0)) {
+      guard->check(0);
+      unchecked = 0;
+    }
     const Segment& s = decomposition.segments[j];
     const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
     std::uint32_t from = lo;
@@ -163,6 +173,7 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
          detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features, at_vertex,
                                   !only_separators, regional[j])) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
+      ++unchecked;
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
       out.segments.push_back({from, v, s.marker});

@@ -5,6 +5,7 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "kernel/resource_limits.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd::detail {
@@ -18,7 +19,11 @@ namespace madd::detail {
 // to the local feature size everywhere, which makes coarse meshes several
 // times finer than they need be near the boundary. Separators always follow
 // the size bound and every feature.
-Decomposition discretise(const Decomposition& decomposition, const AreaBound& size, bool boundary_by_features);
+// `guard`, when given, is checked as the split points pile up (a size bound
+// far below the segments' lengths asks for millions of points a segment:
+// the time and memory limits must stop that, as they stop refinement).
+Decomposition discretise(const Decomposition& decomposition, const AreaBound& size, bool boundary_by_features,
+                         const ResourceGuard* guard = nullptr);
 
 // Rounds of separator splitting after meshing, at most (docs/mesh.md, "Decoupling").
 inline constexpr int max_separator_rounds = 10;

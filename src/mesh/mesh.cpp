@@ -186,7 +186,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Psl
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  Decomposition d = detail::discretise(decomposition, field, false);
+  Decomposition d = detail::discretise(decomposition, field, false, &guard);
   report.phases.push_back({"discretise", clock.lap()});
   report.expected_triangles = detail::expected_triangles(d, domain, field);
   std::vector<detail::SubdomainMesh> pieces;
