@@ -151,28 +151,48 @@ TEST_CASE("narrow gap: a channel far narrower than the bound costs what refineme
   // side ends on the other. Not a gap.
   CHECK(gaps.area_at({9.999, 4.994}, bound) == bound);
 
-  madd::MeshOptions o;
-  o.decomposition.subdomains = 2;
-  o.decomposition.threads = 2;
-  o.size.min_triangle_angle_deg = 30;
-  o.size.triangle_area_function = [](double x, double) { return 0.04 * (1.0 + 0.01 * x); };
-  const madd::MeshRun run = madd::mesh_with_report(d, o);
-  const madd::Mesh& m = run.mesh;
-  // The channel's triangles alone, counted from the outside, against the
-  // estimate's share for it: the integral over the channel of 1 / (kappa A)
-  // with A the gap's area.
-  std::size_t channel = 0;
-  for (const auto& t : m.triangles) {
-    const double cx = (m.points[t[0]].x + m.points[t[1]].x + m.points[t[2]].x) / 3;
-    channel += cx > 10;
+  // Under a size function (the estimate integrates) and under one bound
+  // everywhere (the estimate counts the interior by area and adds the gaps).
+  for (const bool uniform : {false, true}) {
+    CAPTURE(uniform);
+    madd::MeshOptions o;
+    o.decomposition.subdomains = 2;
+    o.decomposition.threads = 2;
+    o.size.min_triangle_angle_deg = 30;
+    if (uniform) o.size.max_triangle_area = 0.04;
+    else o.size.triangle_area_function = [](double x, double) { return 0.04 * (1.0 + 0.01 * x); };
+    const madd::MeshRun run = madd::mesh_with_report(d, o);
+    const madd::Mesh& m = run.mesh;
+    // The channel's triangles alone, counted from the outside, against the
+    // estimate's share for it: the integral over the channel of 1 / (kappa A)
+    // with A the gap's area.
+    std::size_t channel = 0;
+    for (const auto& t : m.triangles) {
+      const double cx = (m.points[t[0]].x + m.points[t[1]].x + m.points[t[2]].x) / 3;
+      channel += cx > 10;
+    }
+    double predicted = 0;
+    for (const double t : run.report.expected_triangles) predicted += t;
+    const auto total = static_cast<double>(m.triangles.size());
+    // The channel is a fifth of the mesh (the bound alone gives it a few
+    // triangles): an estimate blind to it is 20% short.
+    CHECK(static_cast<double>(channel) > 0.2 * total);
+    CHECK(predicted > 0.9 * total);
+    CHECK(predicted < 1.1 * total);
   }
-  double predicted = 0;
-  for (const double t : run.report.expected_triangles) predicted += t;
-  const auto total = static_cast<double>(m.triangles.size());
-  // The channel is a fifth of the mesh (the bound alone gives it a few
-  // triangles): an estimate blind to it is 20% short.
-  CHECK(static_cast<double>(channel) > 0.2 * total);
-  CHECK(predicted > 0.9 * total);
-  CHECK(predicted < 1.1 * total);
+}
+
+TEST_CASE("narrow gap: a needle of water under 3 degrees is a gap, a wider wedge is not") {
+  // A basin with two spikes of water to the east: a needle 1.15 degrees wide
+  // and a wedge of 33 degrees, each 10 long.
+  madd::Pslg d;
+  d.points = {{0, 0}, {10, 0}, {10, 4.9}, {20, 5}, {10, 5.1}, {10, 7}, {20, 10}, {10, 13}, {10, 20}, {0, 20}};
+  for (std::uint32_t i = 0; i < 10; ++i) d.segments.push_back({i, (i + 1) % 10, 1});
+  const madd::detail::NarrowGaps gaps(d);
+  const double bound = 0.04;  // sides of 0.3
+  // Halfway along the needle the water is 0.1 wide.
+  CHECK(gaps.area_at({15, 5}, bound) < bound / 3);  // sides of about 1.6 x 0.1
+  // Near the wedge's tip it is 0.06 wide, but refinement leaves the angle be.
+  CHECK(gaps.area_at({19.9, 10}, bound) == bound);
 }
 }

@@ -18,6 +18,8 @@ struct Box {
   }
   double width() const noexcept { return hi.x - lo.x; }
   double height() const noexcept { return hi.y - lo.y; }
+  // In the closed box.
+  bool contains(Point p) const noexcept { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 };
 
 // The smallest box holding every point of `points` (any range of Point).

@@ -7,7 +7,9 @@
 // the work estimate reads the smaller of the bound and the area of that
 // edge, from the chord across the water at the point (as
 // sizing/feature_width.hpp draws it), every boundary piece counted as coast:
-// refinement honours every segment.
+// refinement honours every segment. Under one bound everywhere (whose
+// interior the estimate counts by area) the gaps' excess over the bound is
+// added the same way (mesh/work.cpp).
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
 #include "sizing/coast.hpp"
@@ -27,6 +29,15 @@ private:
   Coast coast_;
   double extent_ = 0.0;
 };
+
+// Two boundary pieces that meet at less than this (radians: 3 degrees) are
+// the banks of a needle of water, which refinement fills as it fills a
+// channel (one 0.085 degrees wide and 1.8 long in the Seto Inland Sea took
+// triangles of area 5e-9, twice the mean subdomain's count at N = 256);
+// above it they are the sides of a wedge, whose small input angle
+// refinement leaves alone (the spikes of Puget Sound's coast: counting them
+// as gaps over-counted a subdomain 3 x).
+inline constexpr double needle_angle = 0.05235987755982988;
 
 // The gap's edge is taken no shorter than this x the bound's edge.
 inline constexpr double smallest_gap_edge = 1e-3;

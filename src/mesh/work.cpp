@@ -23,6 +23,7 @@
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
 #include "kernel/box.hpp"
+#include "kernel/rings.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/narrow_gaps.hpp"
 #include "mesh/subdomain_regions.hpp"
@@ -188,6 +189,31 @@ void integrate_triangulation(const Triangulation& tri, Pieces pieces, const Area
   }
 }
 
+// What the narrow gaps add under one bound everywhere (whose interior is
+// counted by area): per triangle of `tri` where a gap binds at the centroid,
+// the integral with the gaps less the integral without, as one sample at
+// the centroid (in triangles).
+std::vector<ValuedPoint> gap_excess(const Triangulation& tri, Pieces pieces, const AreaBound& size,
+                                    const NarrowGaps& gaps) {
+  std::vector<ValuedPoint> out, with, without;
+  const WorkBound plain{size}, with_gaps{size, &gaps};
+  for (const auto& v : tri.triangles) {
+    const Point a = tri.points[v[0]], b = tri.points[v[1]], c = tri.points[v[2]];
+    const Point g = triangle_centroid(a, b, c);
+    const double bound = size.area_at(g);
+    if (!(gaps.area_at(g, bound) < bound)) continue;
+    with.clear();
+    without.clear();
+    integrate_triangle(a, b, c, pieces, with_gaps, with);
+    integrate_triangle(a, b, c, pieces, plain, without);
+    double excess = 0.0;
+    for (const ValuedPoint& p : with) excess += p.value;
+    for (const ValuedPoint& p : without) excess -= p.value;
+    if (excess > 0.0) out.push_back({g, excess});
+  }
+  return out;
+}
+
 // The interior's triangles under a varying size bound: the integral of
 // 1 / (kappa A) over the subdomain's triangulation (its ring vertices only),
 // its triangles split to 1/subdomain_pieces_across of the subdomain's extent.
@@ -203,6 +229,27 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound
   return t;
 }
 
+// Under one bound: the gaps' excess over the domain's triangulation, each
+// sample given to the subdomain holding it.
+std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const Pslg& domain, const AreaBound& size,
+                                            const NarrowGaps& gaps) {
+  std::vector<double> out(d.subdomains.size(), 0.0);
+  const Triangulation tri = triangulate(domain);
+  const Box box = bounding_box(tri.points);
+  const Pieces pieces{std::max(box.width(), box.height()) / subdomain_pieces_across, estimate_piece_sides};
+  const std::vector<ValuedPoint> samples = gap_excess(tri, pieces, size, gaps);
+  if (samples.empty()) return out;
+  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+    const Subdomain& s = d.subdomains[k];
+    Box around;
+    for (const std::uint32_t v : s.rings[0]) around.add(d.points[v]);
+    const WindingIndex inside(d.points, s.rings);
+    for (const ValuedPoint& p : samples)
+      if (around.contains(p.at) && inside.winding(p.at) != 0) out[k] += p.value;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size) {
@@ -211,10 +258,12 @@ std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domai
   out.reserve(d.subdomains.size());
   const bool uniform = size.uniform();
   const RegionView regions = region_view(d);
+  const std::vector<double> excess = uniform && size.bounded() ? gap_excess_by_subdomain(d, domain, size, gaps)
+                                                               : std::vector<double>(d.subdomains.size(), 0.0);
   for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
     const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
-    double t = std::isfinite(bound) ? s.area / (kappa * bound) : 0.0;
+    double t = std::isfinite(bound) ? s.area / (kappa * bound) + excess[sub] : 0.0;
     if (!uniform) t = varying_interior(d, sub, size, gaps);
     // A face held to a region's finer bound: its triangles at that bound
     // instead (with a varying size bound, on top of the estimate: an upper
@@ -315,13 +364,21 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
     }
   }
   const double area = domain_area(domain);
+  const NarrowGaps gaps(domain);
   if (uniform) {
+    // The narrow gaps' triangles, which the area term does not count.
+    const Box box = bounding_box(tri.points);
+    const Pieces pieces{std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
+    const double bound = size.area_at(tri.points.empty() ? Point{} : tri.points[0]);
+    for (const ValuedPoint& p : gap_excess(tri, pieces, size, gaps)) {
+      samples.push_back({p.at, p.value * kappa * bound});
+      boundary += p.value * kappa * bound;
+    }
     // Where the boundary layer is a small share of the work, the areas say
     // as much, and the area-balanced decomposition is the more even one (its
     // splits are exact; graded ones follow samples): keep the areas then.
     if (boundary < min_boundary_share * area) return;
   } else {
-    const NarrowGaps gaps(domain);
     add_interior_samples(tri, size, gaps, samples);
     double total = 0;
     for (const ValuedPoint& v : samples) total += v.value;
