@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "kernel/segment_grid.hpp"
+#include "kernel/segment_distance.hpp"
 #include "kernel/uniform_grid.hpp"
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
@@ -70,10 +71,9 @@ double nearest_feature_by_scan(const Segments& s, Point p, std::uint32_t a, std:
   for (const Segment& t : s.segments) {
     const bool shares_end = t.a == a || t.a == b || t.b == a || t.b == b;
     if (!shares_end) {
-      const Point u = s.points[t.a], v = s.points[t.b], uv = v - u;
-      const double l2 = madd::dot(uv, uv);
-      const double along = l2 > 0 ? std::clamp(madd::dot(p - u, uv) / l2, 0.0, 1.0) : 0.0;
-      best = std::min(best, madd::distance(p, madd::lerp(u, v, along)));
+      // The same distance to one segment as the search's (exact equality
+      // below): what is tested is that the search finds the nearest.
+      best = std::min(best, madd::detail::segment_distance(p, s.points[t.a], s.points[t.b]));
       continue;
     }
     for (const std::uint32_t w : {t.a, t.b})

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "kernel/angles.hpp"
+#include "kernel/segment_distance.hpp"
 #include "kernel/union_find.hpp"
 #include "madd/predicates.hpp"
 
@@ -303,17 +304,6 @@ void set_vertex_weights(MedialGraph& graph, std::vector<double> weights) {
   graph.gd.vertex_weights = std::move(weights);
 }
 
-namespace {
-
-double point_segment_distance(Point p, Point a, Point b) {
-  const Point ab = b - a;
-  const double length2 = ab.x * ab.x + ab.y * ab.y;
-  const double t = length2 > 0.0 ? std::clamp(((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / length2, 0.0, 1.0) : 0.0;
-  return distance(p, lerp(a, b, t));
-}
-
-}  // namespace
-
 bool hugs_separator(Point a, Point b, Point p, Point q) {
   // Near its ends a separator meets the boundary it ends on: only its middle counts.
   constexpr double clearance_end = 0.1;
@@ -321,8 +311,8 @@ bool hugs_separator(Point a, Point b, Point p, Point q) {
   const Point m0 = lerp(a, b, clearance_end), m1 = lerp(a, b, 1.0 - clearance_end);
   // Two segments that do not cross are nearest at an end of one of them.
   if (orient2d(m0, m1, p) * orient2d(m0, m1, q) < 0.0 && orient2d(p, q, m0) * orient2d(p, q, m1) < 0.0) return true;
-  return std::min({point_segment_distance(p, m0, m1), point_segment_distance(q, m0, m1),
-                   point_segment_distance(m0, p, q), point_segment_distance(m1, p, q)}) < limit;
+  return std::min({segment_distance(p, m0, m1), segment_distance(q, m0, m1), segment_distance(m0, p, q),
+                   segment_distance(m1, p, q)}) < limit;
 }
 
 std::vector<BoundaryLinks> boundary_links(const Triangulation& tri) {

@@ -7,18 +7,9 @@
 #include <cmath>
 #include <limits>
 
+#include "kernel/segment_distance.hpp"
+
 namespace madd::detail {
-
-namespace {
-
-double point_segment_distance(Point p, Point a, Point b) {
-  const Point ab = b - a;
-  const double l2 = dot(ab, ab);
-  const double t = l2 > 0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-  return distance(p, lerp(a, b, t));
-}
-
-}  // namespace
 
 FeatureDistance::FeatureDistance(const std::vector<Point>& points, const std::vector<Segment>& segments)
     : points_(points), segments_(segments) {
@@ -58,7 +49,7 @@ double FeatureDistance::to_nonincident(Point p, std::uint32_t ja, std::uint32_t 
     const Segment& s = segments_[j];
     const bool shares_end = s.a == ja || s.a == jb || s.b == ja || s.b == jb;
     if (!shares_end) {
-      best = std::min(best, point_segment_distance(p, points_[s.a], points_[s.b]));
+      best = std::min(best, segment_distance(p, points_[s.a], points_[s.b]));
       return;
     }
     // A neighbour at an end: only its far vertex is a non-incident feature.

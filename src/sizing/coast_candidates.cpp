@@ -17,15 +17,6 @@ namespace madd::detail {
 // least of those bounds is never nearest there. T crosses no coast piece
 // (they are constrained edges of the background), so the distance between
 // a piece and T is that between a corner of one and an edge of the other.
-namespace {
-
-double to_segment_distance(Point p, Point a, Point b) noexcept {
-  double t = 0.0;
-  return segment_distance(p, a, b, t);
-}
-
-}  // namespace
-
 void CoastCandidates::prune(const Point (&p)[3], std::vector<std::uint32_t>& near) const {
   if (near.empty()) return;
   // The bound from the pieces nearest to the centroid (any piece gives one;
@@ -35,14 +26,14 @@ void CoastCandidates::prune(const Point (&p)[3], std::vector<std::uint32_t>& nea
   const double reach = std::max({madd::distance(g, p[0]), madd::distance(g, p[1]), madd::distance(g, p[2])});
   std::vector<std::pair<double, std::uint32_t>> by_centre;
   by_centre.reserve(near.size());
-  for (const std::uint32_t s : near) by_centre.push_back({to_segment_distance(g, ends_[s][0], ends_[s][1]), s});
+  for (const std::uint32_t s : near) by_centre.push_back({segment_distance(g, ends_[s][0], ends_[s][1]), s});
   const std::size_t few = std::min<std::size_t>(4, by_centre.size());
   std::partial_sort(by_centre.begin(), by_centre.begin() + static_cast<std::ptrdiff_t>(few), by_centre.end());
   double bound = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < few; ++k) {
     const auto& e = ends_[by_centre[k].second];
-    bound = std::min(bound, std::max({to_segment_distance(p[0], e[0], e[1]), to_segment_distance(p[1], e[0], e[1]),
-                                      to_segment_distance(p[2], e[0], e[1])}));
+    bound = std::min(bound, std::max({segment_distance(p[0], e[0], e[1]), segment_distance(p[1], e[0], e[1]),
+                                      segment_distance(p[2], e[0], e[1])}));
   }
   const double scale = std::max({std::abs(p[0].x), std::abs(p[0].y), bound});
   bound = bound * (1.0 + 1e-9) + 1e-12 * scale;  // over the rounding of both sides
@@ -54,8 +45,8 @@ void CoastCandidates::prune(const Point (&p)[3], std::vector<std::uint32_t>& nea
     double gap = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
       const Point a = p[i], b = p[(i + 1) % 3];
-      gap = std::min(
-          {gap, to_segment_distance(a, e[0], e[1]), to_segment_distance(e[0], a, b), to_segment_distance(e[1], a, b)});
+      gap =
+          std::min({gap, segment_distance(a, e[0], e[1]), segment_distance(e[0], a, b), segment_distance(e[1], a, b)});
     }
     if (gap <= bound) near.push_back(s);
   }

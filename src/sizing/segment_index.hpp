@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernel/segment_distance.hpp"
 #include "kernel/uniform_grid.hpp"
 #include "madd/geometry.hpp"
 #include "madd/pslg.hpp"
@@ -53,17 +54,5 @@ private:
   std::vector<std::array<Point, 2>> ends_;
   UniformGrid grid_;  // items are segment indices, by cell
 };
-
-// The distance from p to segment ab, and the parameter of its nearest point
-// (the square root of a sum of squares: std::hypot's care for overflow is
-// not needed within the coordinate range validate allows, and costs as
-// much as the rest of the test).
-inline double segment_distance(Point p, Point a, Point b, double& t) noexcept {
-  const Point ab = b - a, ap = p - a;
-  const double len2 = dot(ab, ab);
-  t = len2 > 0.0 ? std::clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
-  const Point q = ap - t * ab;
-  return std::sqrt(dot(q, q));
-}
 
 }  // namespace madd::detail

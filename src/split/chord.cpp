@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "kernel/containment.hpp"
+#include "kernel/segment_distance.hpp"
 #include "medial/medial_detail.hpp"
 #include "madd/predicates.hpp"
 #include "split/split.hpp"
@@ -110,13 +111,6 @@ double end_angle(const FaceDomain& fd, std::uint32_t at, std::uint32_t towards) 
   return boundary_angle(pts[at], pts[l.prev], pts[l.next], pts[towards]);
 }
 
-double distance_to_segment(Point x, Point a, Point b) {
-  const Point ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return distance(x, lerp(a, b, t));
-}
-
 // The chord from ring position i to j meets the boundary only at its two ends
 // (exact, validate's segment test: touching or overlapping counts).
 bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
@@ -190,7 +184,7 @@ Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std:
   double clear = distance(p, q);
   const std::size_t n = ring.at.size();
   for (std::size_t k = 0; k < n; ++k) {
-    clear = std::min(clear, distance_to_segment(m, pts[ring.at[k]], pts[ring.at[(k + 1) % n]]));
+    clear = std::min(clear, segment_distance(m, pts[ring.at[k]], pts[ring.at[(k + 1) % n]]));
   }
   const Point d = q - p;
   const Point left = (1.0 / length(d)) * Point{d.y, -d.x};  // left of q -> p
