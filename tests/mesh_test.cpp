@@ -255,3 +255,30 @@ TEST_CASE("mesh: under a size function, balance by work evens the triangle count
     REQUIRE(madd::triangle_area(a, b, c) <= o.size.triangle_area_function(g.x, g.y) * (1 + 1e-12));
   }
 }
+
+TEST_CASE("mesh: a triangle at a small input angle is still split when it is above the size bound") {
+  // The whole domain is one triangle with a 25-degree corner; the size
+  // bound is huge along its sides (so the decoupling splits nothing) and just
+  // below the triangle's area at its centroid. The input-angle rule excused
+  // its shape and, with it, its size: the self-check failed (exit 70; seen on
+  // the Seto Inland Sea with the built-in field at N = 256).
+  const double half = 12.5 * std::numbers::pi / 180;
+  madd::Pslg d;
+  d.points = {{0, 0}, {std::cos(half), -std::sin(half)}, {std::cos(half), std::sin(half)}};
+  d.segments = {{0, 1, 1}, {1, 2, 1}, {2, 0, 1}};
+  const double area = madd::triangle_area(d.points[0], d.points[1], d.points[2]);
+  const madd::Point g = madd::triangle_centroid(d.points[0], d.points[1], d.points[2]);
+  madd::MeshOptions o;
+  o.decomposition.subdomains = 1;
+  o.size.min_triangle_angle_deg = 30;
+  o.size.triangle_area_function = [=](double x, double y) {
+    return 0.99 * area + 1000.0 * std::max(0.0, (x - g.x) * (x - g.x) + (y - g.y) * (y - g.y) - 0.0004);
+  };
+  const madd::Mesh m = madd::mesh(d, o);
+  REQUIRE(m.triangles.size() > 1);
+  for (const auto& t : m.triangles) {
+    const madd::Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
+    const madd::Point centre = madd::triangle_centroid(a, b, c);
+    CHECK(madd::triangle_area(a, b, c) <= o.size.triangle_area_function(centre.x, centre.y));
+  }
+}

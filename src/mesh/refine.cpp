@@ -81,6 +81,7 @@ public:
 private:
   bool is_bad(std::uint32_t t) const;
   bool too_skinny(const TriangleShape& s) const;
+  bool too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const;
   Reason input_angle_rule(std::uint32_t t, const TriangleShape& s) const;
   Point insertion_point(std::uint32_t t, const TriangleShape& s) const;
   void try_triangle(std::uint32_t t);
@@ -222,14 +223,17 @@ bool Refiner::too_skinny(const TriangleShape& s) const {
   return longer > 16.0 * s.area * s.area * beta_ * beta_;
 }
 
+// Above the regional bound (Triangle's -a with regions) or the size bound:
+// the smaller wins.
+bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const {
+  if (s.area > label_area_[m_.label(t)]) return true;
+  return settings_.size && s.area > settings_.size->area_at(triangle_centroid(a, b, c));
+}
+
 bool Refiner::is_bad(std::uint32_t t) const {
   const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
   const TriangleShape s = shape_of(a, b, c);
-  if (too_skinny(s)) return true;
-  // The regional bound (Triangle's -a with regions) and the size bound: the smaller wins.
-  const double region = label_area_[m_.label(t)];
-  if (s.area > region) return true;
-  return settings_.size && s.area > settings_.size->area_at(triangle_centroid(a, b, c));
+  return too_skinny(s) || too_big(t, s, a, b, c);
 }
 
 // Triangles refinement must not try to fix (docs/mesh.md, "Small angles").
@@ -363,7 +367,12 @@ void Refiner::queue_fresh() {
 void Refiner::try_triangle(std::uint32_t t) {
   const Point a = m_.point(m_.corner(t, 0)), b = m_.point(m_.corner(t, 1)), c = m_.point(m_.corner(t, 2));
   const TriangleShape s = shape_of(a, b, c);
-  if (const Reason r = input_angle_rule(t, s); r != Reason::none) {
+  // A small input angle excuses a triangle's shape, never its size: one
+  // above the bound is split all the same (the bound ends that). Left alone,
+  // a skinny triangle at a 25-degree corner of the Seto Inland Sea stayed
+  // above the size field and failed the self-check.
+  const bool big = too_big(t, s, a, b, c);
+  if (const Reason r = big ? Reason::none : input_angle_rule(t, s); r != Reason::none) {
     reason_[t] = r;
     return;
   }
@@ -436,7 +445,7 @@ void Refiner::try_triangle(std::uint32_t t) {
     }
     // Shewchuk's rule is for skinny triangles: one bad only by its size
     // still splits the arm (its size bound ends that).
-    if (e.sharp && skinny && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
+    if (e.sharp && skinny && !big && 0.5 * distance(m_.point(e.a), m_.point(e.b)) < shortest) continue;
     split_any |= split_subsegment(e.a, e.b);
   }
   if (split_any) {
