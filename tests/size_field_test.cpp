@@ -488,3 +488,38 @@ TEST_CASE("edge_of_area and area_of_edge are inverse, and say no bound for none"
 }
 
 }  // TEST_SUITE
+
+TEST_CASE("gradation: never below hmin, the smallest value of every term") {
+  // Flattening a needle of the background, whose short edge alone is steeper
+  // than the rate, lowered its third corner without end (on the Gulf of
+  // Finland below 0: the field read sides of 1e-5 where hmin was 0.12, a run
+  // that filled the machine's memory), and the distance term's safety bound
+  // lowers point values below hmin where the background is coarse (on the
+  // bundled archipelago at hmin = extent / 1000, to 0.53 hmin). Every term
+  // is hmin or more, so the field is too.
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/archipelago.poly");
+  double x0 = infinity, x1 = -infinity, y0 = infinity, y1 = -infinity;
+  for (const Point p : domain.points)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  for (const double divisor : {1000.0, 2000.0, 3300.0}) {
+    for (const double gradation : {0.1, 0.25}) {
+      const double hmin = std::max(x1 - x0, y1 - y0) / divisor;
+      MeshSizeOptions size = distance_field(hmin, 0.3, 30.0 * hmin);
+      size.cells_across = 3.0;
+      size.size_gradation = gradation;
+      const SizeField field(domain, size);
+      CAPTURE(divisor);
+      CAPTURE(gradation);
+      // Read at the centroid of every inside triangle of the background.
+      const auto& bg = field.background();
+      double lowest = infinity;
+      for (std::size_t t = 0; t < bg.triangles.size(); ++t) {
+        if (bg.inside[t] == 0) continue;
+        const auto& v = bg.triangles[t];
+        lowest =
+            std::min(lowest, field.edge_at(madd::triangle_centroid(bg.points[v[0]], bg.points[v[1]], bg.points[v[2]])));
+      }
+      CHECK(lowest >= hmin * (1.0 - 1e-9));
+    }
+  }
+}

@@ -82,6 +82,7 @@ private:
   bool is_bad(std::uint32_t t) const;
   bool too_skinny(const TriangleShape& s) const;
   bool too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const;
+  void check_limits();
   Reason input_angle_rule(std::uint32_t t, const TriangleShape& s) const;
   Point insertion_point(std::uint32_t t, const TriangleShape& s) const;
   void try_triangle(std::uint32_t t);
@@ -323,7 +324,23 @@ double Refiner::split_parameter(std::uint32_t h) const {
   return from + (towards > from ? 1.0 : -1.0) * shell / full;
 }
 
+// The time and memory limits, every 8,192 new points.
+void Refiner::check_limits() {
+  if (settings_.guard && steiner_ >= next_check_) {
+    settings_.guard->check(settings_.meshed ? settings_.meshed->load() : 0);
+    next_check_ = steiner_ + 8192;
+  }
+}
+
 bool Refiner::split_subsegment(std::uint32_t a, std::uint32_t b) {
+  // The Steiner budget and the limits hold for segment splits too, not only
+  // for the triangles the queue tests.
+  if (out_of_budget_) return false;
+  if (settings_.max_steiner_points && steiner_ >= settings_.max_steiner_points) {
+    out_of_budget_ = true;
+    return false;
+  }
+  check_limits();
   std::uint32_t h = m_.find_half_edge(a, b);
   if (h == no_index || m_.segment_of(h) == no_index) h = m_.find_half_edge(b, a);
   if (h == no_index || m_.segment_of(h) == no_index) return false;  // split already
@@ -481,10 +498,7 @@ void Refiner::run() {
     queued_generation_[t] = std::numeric_limits<std::uint32_t>::max();
     if (!is_bad(t)) continue;
     if (settings_.max_steiner_points && steiner_ >= settings_.max_steiner_points) out_of_budget_ = true;
-    if (settings_.guard && steiner_ >= next_check_) {
-      settings_.guard->check(settings_.meshed ? settings_.meshed->load() : 0);
-      next_check_ = steiner_ + 8192;
-    }
+    check_limits();
     try_triangle(t);
   }
 }

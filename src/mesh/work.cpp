@@ -50,7 +50,7 @@ constexpr double piece_in_sizes = 4.0;
 // Seto Inland Sea): the grid grows with sqrt(N), 256 cells at N = 256 (the
 // largest subdomain 1.27-1.42 x the mean on eight real coastlines, against
 // 1.40-1.70). The decomposition files its samples by a winding index
-// (grading_state.cpp), so the finer grid costs no time.
+// (decompose/grading_state.cpp), so the finer grid costs no time.
 constexpr int uniform_cluster_cells = 64;
 int graded_cluster_cells(std::uint32_t subdomains) {
   return static_cast<int>(std::clamp(16.0 * std::sqrt(static_cast<double>(subdomains)), 128.0, 1024.0));

@@ -107,7 +107,15 @@ std::uint32_t flatten(const SizeBackground& bg, std::uint32_t t, std::vector<dou
   // The smallest s > 0 with |g - s hat| = rate (or, past rounding, the flattest).
   const double disc = along * along - hat2 * (g2 - rate * rate);
   const double s = disc > 0.0 ? (along - std::sqrt(disc)) / hat2 : along / hat2;
-  f[v[c]] -= s * (1.0 + 1e-12);
+  // Never below the lower of the other two corners: a needle whose short
+  // edge is steeper than the rate asks for any depth (the Gulf of Finland's
+  // background reached -0.0017 with hmin 0.12, and the field read sides of
+  // 1e-5 there). What flattening cannot do, the held slopes and the final
+  // edge pass do, without going below the values they start from.
+  const double lowest = std::min(f[v[(c + 1) % 3]], f[v[(c + 2) % 3]]);
+  const double lowered = std::max(f[v[c]] - s * (1.0 + 1e-12), lowest);
+  if (!(lowered < f[v[c]])) return no_index;
+  f[v[c]] = lowered;
   return v[c];
 }
 

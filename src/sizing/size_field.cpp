@@ -148,7 +148,12 @@ void SizeField::lower_to_safe_distance(const std::vector<RawSample>& samples) {
 double SizeField::edge_at(Point p) const {
   if (empty()) return infinity;
   const Location at = locator_.locate(view(), p);
-  const double h = interpolate(view(), graded_, at, p);
+  // Every term of the field is hmin or more, so the field is too: where the
+  // background is far coarser than hmin, the distance term's safety bound
+  // (lower_to_safe_distance) takes point values of the linear part below it
+  // (to 0.53 hmin on the bundled archipelago at hmin = extent / 1000). hmin
+  // is the exact term at distance 0, so the field stays below that term.
+  const double h = std::max(interpolate(view(), graded_, at, p), exact_term(0.0));
   if (!at.inside || !exact_.exact(at.triangle)) return h;
   return std::min(h, exact_term(exact_.distance(at.triangle, p)));
 }
