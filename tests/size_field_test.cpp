@@ -443,6 +443,61 @@ TEST_CASE("edge_at: the same from several threads at once as from one") {
   for (std::size_t i = 0; i < probes.size(); i += 97) CHECK(copy.edge_at(probes[i]) == alone[i]);
 }
 
+// A walk hint (one caller's last location) only shortens the walk: the
+// field reads the same with or without it, in any order, also at points on
+// the background's edges and corners, where two or more triangles hold the
+// point and the lowest-numbered one is read (brute force over them all).
+TEST_CASE("edge_at: the same with a walk hint as without, on edges and corners too") {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
+  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
+  sea.holes = {{6.5, 5.5}};
+  madd::validate(sea);
+  MeshSizeOptions size = distance_field(0.04, 0.15, 1.5);
+  size.cells_across = 3.0;
+  size.size_gradation = 0.2;
+  const SizeField field(sea, size);
+  const madd::detail::SizeBackground& bg = field.background();
+  std::vector<Point> probes = random_inside(sea, {0, 0}, {20, 12}, 5000, 41);
+  std::size_t on_edges = 0;
+  for (std::size_t t = 0; t < bg.triangles.size(); t += 3) {
+    const auto& v = bg.triangles[t];
+    probes.push_back(bg.points[v[0]]);
+    const Point m = madd::midpoint(bg.points[v[1]], bg.points[v[2]]);
+    if (madd::orient2d(bg.points[v[1]], bg.points[v[2]], m) == 0.0) probes.push_back(m), ++on_edges;
+  }
+  CHECK(on_edges > 100);  // the quadtree's edges are axis-parallel: their midpoints are on them
+  std::vector<double> alone(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) alone[i] = field.edge_at(probes[i]);
+  std::mt19937 rng(5);
+  for (int order = 0; order < 3; ++order) {
+    madd::detail::WalkHint hint;
+    std::vector<std::size_t> idx(probes.size());
+    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+    if (order > 0) std::shuffle(idx.begin(), idx.end(), rng);
+    std::size_t differ = 0;
+    for (const std::size_t i : idx) differ += field.edge_at(probes[i], &hint) != alone[i];
+    CHECK(differ == 0);
+  }
+  // The locator itself: the lowest-numbered triangle whose closure holds p.
+  const madd::detail::TriangleView view{bg.points, bg.triangles, bg.neighbours};
+  const madd::detail::TriangleLocator locator(view);
+  madd::detail::WalkHint hint;
+  std::size_t wrong = 0;
+  for (const Point p : probes) {
+    std::uint32_t lowest = madd::no_index;
+    for (std::uint32_t t = 0; t < bg.triangles.size() && lowest == madd::no_index; ++t) {
+      const auto& v = bg.triangles[t];
+      bool in = true;
+      for (int i = 0; i < 3; ++i) in = in && madd::orient2d(bg.points[v[i]], bg.points[v[(i + 1) % 3]], p) >= 0;
+      if (in) lowest = t;
+    }
+    const madd::detail::Location at = locator.locate(view, p, &hint);
+    wrong += !at.inside || at.triangle != lowest;
+  }
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("options: bad field options are OptionErrors naming the field") {
   const Pslg basin = square(1.0);
   const auto field_of = [&](const MeshSizeOptions& s) {

@@ -81,7 +81,7 @@ public:
 private:
   bool is_bad(std::uint32_t t) const;
   bool too_skinny(const TriangleShape& s) const;
-  bool too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const;
+  bool too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const;  // t went through queue_fresh
   void check_limits();
   Reason input_angle_rule(std::uint32_t t, const TriangleShape& s) const;
   Point insertion_point(std::uint32_t t, const TriangleShape& s) const;
@@ -99,6 +99,8 @@ private:
   RefinementMesh& m_;
   const RefineSettings& settings_;
   const std::vector<double>& label_area_;
+  // The size bound's queries come in runs around each new point: each starts where the last ended.
+  mutable BoundHint bound_hint_;
   double beta_ = 1.0;                // circumradius / shortest edge bound: 1 / (2 sin theta)
   std::vector<std::uint8_t> sharp_;  // per input vertex: two pieces meet there below 60 degrees
   std::vector<std::uint8_t>
@@ -110,7 +112,13 @@ private:
   std::vector<std::uint32_t> triangle_queue_;
   std::vector<std::uint32_t> generation_;  // per slot, bumped when the slot holds a new triangle
   std::vector<std::uint32_t> queued_generation_;
-  std::vector<Reason> reason_;               // per slot: why the triangle there was left bad
+  std::vector<Reason> reason_;  // per slot: why the triangle there was left bad
+  // Per slot: the size bound at the triangle's centroid, read when first
+  // needed (NaN until then) and once: a bad triangle is looked at when made,
+  // when taken from the queue and when split, and a skinny one needs no size
+  // (a quarter of those made on a graded coast; the bound's query is a third
+  // of a graded refinement's time).
+  mutable std::vector<double> size_bound_;
   std::vector<std::uint32_t> blocker_;       // per slot: with Reason::separator, the separator segment in the way
   std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
   std::size_t steiner_ = 0;
@@ -228,7 +236,9 @@ bool Refiner::too_skinny(const TriangleShape& s) const {
 // the smaller wins.
 bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const {
   if (s.area > label_area_[m_.label(t)]) return true;
-  return settings_.size && s.area > settings_.size->area_at(triangle_centroid(a, b, c));
+  if (!settings_.size) return false;
+  if (std::isnan(size_bound_[t])) size_bound_[t] = settings_.size->area_at(triangle_centroid(a, b, c), &bound_hint_);
+  return s.area > size_bound_[t];
 }
 
 bool Refiner::is_bad(std::uint32_t t) const {
@@ -369,8 +379,10 @@ void Refiner::queue_fresh() {
       queued_generation_.resize(generation_.size(), std::numeric_limits<std::uint32_t>::max());
       reason_.resize(generation_.size(), Reason::none);
       blocker_.resize(generation_.size(), no_index);
+      size_bound_.resize(generation_.size());
     }
     ++generation_[t];
+    size_bound_[t] = std::numeric_limits<double>::quiet_NaN();
     reason_[t] = Reason::none;
     for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) check_encroached_by_apex(h);
     if (is_bad(t)) {
@@ -388,8 +400,7 @@ void Refiner::try_triangle(std::uint32_t t) {
   // above the bound is split all the same (the bound ends that). Left alone,
   // a skinny triangle at a 25-degree corner of the Seto Inland Sea stayed
   // above the size field and failed the self-check.
-  const bool big = too_big(t, s, a, b, c);
-  if (const Reason r = big ? Reason::none : input_angle_rule(t, s); r != Reason::none) {
+  if (const Reason r = input_angle_rule(t, s); r != Reason::none && !too_big(t, s, a, b, c)) {
     reason_[t] = r;
     return;
   }
@@ -455,6 +466,9 @@ void Refiner::try_triangle(std::uint32_t t) {
   bool split_any = false, separator = false;
   const double shortest = std::sqrt(s.l2[s.shortest]);
   const bool skinny = too_skinny(s);
+  // Read before the splits below change the mesh (t may die with them).
+  const bool big = skinny && std::any_of(list.begin(), list.end(), [](const Encroached& e) { return e.sharp; }) &&
+                   too_big(t, s, a, b, c);
   for (const Encroached& e : list) {
     if (!e.splittable) {
       separator = true;

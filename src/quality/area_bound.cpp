@@ -44,18 +44,19 @@ bool AreaBound::uniform() const noexcept {
   return !size_.triangle_area_function && size_.triangle_area_samples.empty() && field_.empty();
 }
 
-double AreaBound::area_at(Point p) const {
+double AreaBound::area_at(Point p, BoundHint* hint) const {
   double bound = constant_;
   if (size_.triangle_area_function) {
     const double v = size_.triangle_area_function(p.x, p.y);
     if (v > 0.0) bound = std::min(bound, v);  // false for NaN too: ignored
   }
   if (!size_.triangle_area_samples.empty()) {
-    const double v = samples_.area_at(p);  // +infinity where the samples set no bound
+    const double v =
+        samples_.area_at(p, hint != nullptr ? &hint->samples : nullptr);  // +infinity where the samples set no bound
     if (v > 0.0) bound = std::min(bound, v);
   }
   if (!field_.empty()) {
-    const double h = field_.edge_at(p);
+    const double h = field_.edge_at(p, hint != nullptr ? &hint->field : nullptr);
     if (h > 0.0) bound = std::min(bound, area_of_edge(h));
   }
   return bound;

@@ -14,6 +14,13 @@
 
 namespace madd::detail {
 
+// Where one caller's last queries ended in the samples' and the field's
+// triangulations: its next ones start there (sizing/triangle_locator.hpp).
+// One per caller and thread; the bound read does not depend on it.
+struct BoundHint {
+  WalkHint samples, field;
+};
+
 // The largest allowed triangle area at a point for one MeshSizeOptions: the
 // smallest of max_triangle_area, the area function there, the samples' value
 // there (linear or nearest, MeshSizeOptions::sample_interpolation), the
@@ -25,7 +32,7 @@ class AreaBound {
 public:
   // The field terms need the domain (a valid one): without it they throw OptionError.
   explicit AreaBound(const MeshSizeOptions& size, const Pslg* domain = nullptr);
-  double area_at(Point p) const;
+  double area_at(Point p, BoundHint* hint = nullptr) const;
   bool bounded() const noexcept { return size_.has_size_bound(); }
   // No bound varies over the domain: area_at is one value everywhere.
   bool uniform() const noexcept;

@@ -36,9 +36,10 @@ void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector
   if (!bound_at.bounded() && !regional) return;
   constexpr double u = 0x1p-53;
   const auto& P = m.points;
+  BoundHint hint;  // a subdomain's triangles are numbered together: near each other
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    double bound = bound_at.area_at(triangle_centroid(a, b, c));
+    double bound = bound_at.area_at(triangle_centroid(a, b, c), &hint);
     if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
       bound = std::min(bound, regions[label[t] - 1].max_area);
     if (!(bound < std::numeric_limits<double>::infinity())) continue;

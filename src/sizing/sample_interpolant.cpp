@@ -47,9 +47,9 @@ double SampleInterpolant::nearest_value(Point p) const noexcept {
   return i == no_index ? infinity : as_bound(samples_[i].value);
 }
 
-double SampleInterpolant::area_at(Point p) const noexcept {
+double SampleInterpolant::area_at(Point p, WalkHint* hint) const noexcept {
   if (!linear_ || delaunay_.triangles.empty()) return nearest_value(p);
-  const Location at = locator_.locate(view(), p);
+  const Location at = locator_.locate(view(), p, hint);
   if (!at.inside) return nearest_value(p);
   return interpolate(view(), values_, at, p);
 }

@@ -33,7 +33,7 @@ public:
   SampleInterpolant(std::span<const ValuedPoint> samples, MeshSizeOptions::SampleInterpolation how);
   // The area bound at p: +infinity where there is none (no sample, or "no
   // bound" samples decide). Thread-safe (const, no shared mutable state).
-  double area_at(Point p) const noexcept;
+  double area_at(Point p, WalkHint* hint = nullptr) const noexcept;
 
 private:
   std::span<const ValuedPoint> samples_;

@@ -145,9 +145,9 @@ void SizeField::lower_to_safe_distance(const std::vector<RawSample>& samples) {
   }
 }
 
-double SizeField::edge_at(Point p) const {
+double SizeField::edge_at(Point p, WalkHint* hint) const {
   if (empty()) return infinity;
-  const Location at = locator_.locate(view(), p);
+  const Location at = locator_.locate(view(), p, hint);
   // Every term of the field is hmin or more, so the field is too: where the
   // background is far coarser than hmin, the distance term's safety bound
   // (lower_to_safe_distance) takes point values of the linear part below it

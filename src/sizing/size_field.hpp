@@ -54,7 +54,8 @@ public:
   // (coast_candidates.hpp), the smaller of that and hmin + G d(p), d exact.
   // Continuous: on an edge shared with a linear-only triangle the linear
   // part is already below the exact term. Deterministic and thread-safe.
-  double edge_at(Point p) const;
+  // `hint`: where the caller's last query ended (triangle_locator.hpp), or null.
+  double edge_at(Point p, WalkHint* hint = nullptr) const;
   const SizeBackground& background() const noexcept { return background_; }
   const SizeFieldReport& report() const noexcept { return report_; }
 

@@ -17,6 +17,17 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 bool finite_point(Point p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+// (b - p) x (c - p), the sign exact: orient2d(b, c, p) computed the same
+// way up to its first filter, which is inline here (the walk's hot path);
+// orient2d itself decides when that stage cannot. |l| + |r| bounds
+// Shewchuk's detsum, so the filter is never looser than orient2d's.
+inline double side(Point db, Point dc, Point b, Point c, Point p) noexcept {
+  const double l = db.x * dc.y, r = db.y * dc.x, det = l - r;
+  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+  if (det > bound || -det > bound) return det;
+  return orient2d(b, c, p);
+}
+
 }  // namespace
 
 TriangleLocator::TriangleLocator(const TriangleView& view) {
@@ -51,20 +62,63 @@ TriangleLocator::TriangleLocator(const TriangleView& view) {
     }
 }
 
-Location TriangleLocator::locate(const TriangleView& view, Point p) const noexcept {
+Location TriangleLocator::locate(const TriangleView& view, Point p, WalkHint* hint) const noexcept {
   if (start_.empty() || !finite_point(p)) return {};
-  return walk(view, p, start_[std::size_t{frame_.row_of(p.y)} * frame_.cols() + frame_.col_of(p.x)]);
+  const std::uint32_t col = frame_.col_of(p.x), row = frame_.row_of(p.y);
+  const std::uint32_t from_grid = start_[std::size_t{row} * frame_.cols() + col];
+  const auto near = [](std::uint32_t i, std::uint32_t j) { return i <= j + 1 && j <= i + 1; };
+  const bool hinted =
+      hint != nullptr && hint->triangle < view.triangles.size() && near(col, hint->col) && near(row, hint->row);
+  Location at = walk(view, p, hinted ? hint->triangle : from_grid);
+  if (!at.inside && hinted) at = walk(view, p, from_grid);
+  if (at.inside) at = lowest_holding(view, p, at);
+  if (hint != nullptr) *hint = {at.triangle, col, row};
+  return at;
 }
 
-// (b - p) x (c - p), the sign exact: orient2d(b, c, p) computed the same
-// way up to its first filter, which is inline here (the walk's hot path);
-// orient2d itself decides when that stage cannot. |l| + |r| bounds
-// Shewchuk's detsum, so the filter is never looser than orient2d's.
-inline double side(Point db, Point dc, Point b, Point c, Point p) noexcept {
-  const double l = db.x * dc.y, r = db.y * dc.x, det = l - r;
-  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
-  if (det > bound || -det > bound) return det;
-  return orient2d(b, c, p);
+namespace {
+
+Location location_in(const TriangleView& view, Point p, std::uint32_t t) noexcept {
+  const auto& v = view.triangles[t];
+  const Point a = view.points[v[0]], b = view.points[v[1]], c = view.points[v[2]];
+  const Point da = a - p, db = b - p, dc = c - p;
+  return {t, true, {side(db, dc, b, c, p), side(dc, da, c, a, p), side(da, db, a, b, p)}};
+}
+
+}  // namespace
+
+// p on an edge (one weight exactly 0: side() is exact in sign and gives 0
+// only when p is on the line) or on a corner (two): the lowest-numbered
+// triangle around. On an edge the two triangles are at and its neighbour
+// across; on a corner the fan of triangles around it, walked both ways
+// across the edges that meet there (its weights are 0 in each).
+Location TriangleLocator::lowest_holding(const TriangleView& view, Point p, Location at) const noexcept {
+  int zeros = 0, edge = -1;
+  for (int i = 0; i < 3; ++i)
+    if (at.weight[i] == 0.0) ++zeros, edge = i;
+  if (zeros == 0 || zeros == 3) return at;
+  std::uint32_t best = at.triangle;
+  if (zeros == 1) {
+    const std::uint32_t u = view.neighbours[at.triangle][edge];
+    if (u != no_index && u < best) best = u;
+  } else {
+    int corner = 0;  // the corner p is on: its weight is the nonzero one
+    while (at.weight[corner] == 0.0) ++corner;
+    const std::uint32_t v = view.triangles[at.triangle][corner];
+    // Across each edge at v, one way round and then the other, until the fan closes or meets the hull.
+    for (int way = 1; way <= 2; ++way) {
+      std::uint32_t t = at.triangle;
+      for (std::size_t guard = 0; guard < view.triangles.size(); ++guard) {
+        const auto& tv = view.triangles[t];
+        const int k = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        const std::uint32_t u = view.neighbours[t][(k + way) % 3];
+        if (u == no_index || u == at.triangle) break;
+        best = std::min(best, u);
+        t = u;
+      }
+    }
+  }
+  return best == at.triangle ? at : location_in(view, p, best);
 }
 
 // A visibility walk: cross an edge p lies strictly beyond, chosen, when

@@ -36,16 +36,33 @@ struct Location {
   double weight[3] = {0.0, 0.0, 0.0};
 };
 
+// Where one caller's last walk ended: its next walk starts there when the
+// two points are in the same or neighbouring cells of the grid (else from
+// the grid). A mesher asks in runs of a few queries around the point it
+// just inserted, where the grid's start is many triangles away near a
+// graded coast; between runs it jumps. Kept by one caller on one thread;
+// the result of a query does not depend on it (TriangleLocator::locate).
+struct WalkHint {
+  std::uint32_t triangle = 0xffffffffu;
+  std::uint32_t col = 0, row = 0;  // the cell of the last query
+};
+
 class TriangleLocator {
 public:
   TriangleLocator() = default;
   // Indexes `view`; the locator keeps no view of it: every query is given
   // the same triangulation again (so that the owner may move it).
   explicit TriangleLocator(const TriangleView& view);
-  Location locate(const TriangleView& view, Point p) const noexcept;
+  // The triangle holding p, the same whatever the hint: when p is on an
+  // edge or a corner it is the lowest-numbered triangle whose closure holds
+  // p (the interpolation and the field's exact term may differ in the last
+  // bit between two triangles, and refinement and verify_mesh must read one
+  // value); outside the hull, the walk from the grid decides.
+  Location locate(const TriangleView& view, Point p, WalkHint* hint = nullptr) const noexcept;
 
 private:
   Location walk(const TriangleView& view, Point p, std::uint32_t t) const noexcept;
+  Location lowest_holding(const TriangleView& view, Point p, Location at) const noexcept;
   UniformGrid frame_;                 // only its cells' frame: col_of, row_of
   std::vector<std::uint32_t> start_;  // per cell (row-major): a triangle near its centre
 };
