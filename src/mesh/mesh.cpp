@@ -15,6 +15,7 @@
 
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
+#include "kernel/threads.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
 #include "decompose/decompose_valid.hpp"
@@ -65,11 +66,6 @@ void check_options(const MeshOptions& options) {
 
 namespace {
 
-unsigned thread_count(unsigned asked, std::size_t work) {
-  unsigned n = asked ? asked : std::max(1u, std::thread::hardware_concurrency());
-  return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(work, 1)));
-}
-
 // Refines the subdomains in `todo` (all of them in the first round, then
 // those next to separators split since), largest expected work first so that
 // the last ones to finish are small; results land in their own slots.
@@ -86,7 +82,7 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
   settings.size = field.bounded() ? &field : nullptr;
   settings.off_centres = options.off_centres;
   settings.guard = &guard;
-  const unsigned threads = thread_count(options.decomposition.threads, n);
+  const unsigned threads = detail::thread_count(options.decomposition.threads, n);
   if (report.thread_seconds.size() < threads) report.thread_seconds.resize(threads, 0.0);
   report.subdomain_seconds.resize(all, 0.0);
   std::atomic<std::uint32_t> next{0}, done{0};
@@ -188,7 +184,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Psl
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   Decomposition d = detail::discretise(decomposition, field, false, &guard);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, domain, field);
+  report.expected_triangles = detail::expected_triangles(d, domain, field, options.decomposition.threads);
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };

@@ -13,6 +13,7 @@
 
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
+#include "kernel/threads.hpp"
 #include "madd/mesh_share.hpp"
 #include "mesh/discretise.hpp"
 #include "quality/verify_mesh_bounded.hpp"
@@ -40,34 +41,6 @@ std::vector<std::uint32_t> assign_shares(const std::vector<double>& expected_tri
 }
 
 namespace {
-
-// Runs body(k) for every k in `items` on `threads` threads (0 = all cores);
-// the first exception is rethrown once all have stopped.
-template <typename Body>
-void for_each_on_threads(const std::vector<std::uint32_t>& items, unsigned threads, const Body& body) {
-  unsigned n = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-  n = static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(items.size(), 1)));
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  const auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < items.size() && !failed.load();) {
-      try {
-        body(items[i]);
-      } catch (...) {
-        const std::lock_guard lock(error_mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
 
 // Subdomain k of `d` as a domain of its own, every ring segment a boundary
 // piece (a separator's marker 0 becomes 1, as an unmarked boundary), its
@@ -219,7 +192,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
   Decomposition d = detail::discretise(decomposition, field, false, &guard);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, domain, field);
+  report.expected_triangles = detail::expected_triangles(d, domain, field, options.decomposition.threads);
 
   part.share = share;
   part.shares = shares;
@@ -236,8 +209,10 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
                            regions);
   report.phases.push_back({"refine", clock.lap()});
   if (options.verify) {
-    for_each_on_threads(part.subdomains, options.decomposition.threads,
-                        [&](std::uint32_t k) { verify_subdomain(d, k, regions[k], pieces[k], options, field); });
+    detail::for_each_on_threads(part.subdomains.size(), options.decomposition.threads, [&](std::size_t i) {
+      const std::uint32_t k = part.subdomains[i];
+      verify_subdomain(d, k, regions[k], pieces[k], options, field);
+    });
   }
   report.phases.push_back({"verify", clock.lap()});
 

@@ -24,6 +24,7 @@
 #include "madd/triangulation.hpp"
 #include "kernel/box.hpp"
 #include "kernel/rings.hpp"
+#include "kernel/threads.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/narrow_gaps.hpp"
 #include "mesh/subdomain_regions.hpp"
@@ -253,15 +254,18 @@ std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const Pslg& 
 
 }  // namespace
 
-std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size) {
-  std::vector<double> out;
+std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size,
+                                       unsigned threads) {
+  std::vector<double> out(d.subdomains.size(), 0.0);
   const NarrowGaps gaps(domain);
-  out.reserve(d.subdomains.size());
   const bool uniform = size.uniform();
   const RegionView regions = region_view(d);
   const std::vector<double> excess = uniform && size.bounded() ? gap_excess_by_subdomain(d, domain, size, gaps)
                                                                : std::vector<double>(d.subdomains.size(), 0.0);
-  for (std::uint32_t sub = 0; sub < d.subdomains.size(); ++sub) {
+  // Each subdomain alone, into its own slot: under a varying bound, the
+  // integral over its triangulation is a pass as long as a tenth of its
+  // refinement.
+  for_each_on_threads(d.subdomains.size(), threads, [&](std::size_t sub) {
     const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) + excess[sub] : 0.0;
@@ -290,8 +294,8 @@ std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domai
       const double local = size.area_at(midpoint(a, b));
       t += 2.0 * (std::isfinite(local) ? beta * distance(a, b) / std::sqrt(local) : 1.0);
     }
-    out.push_back(t);
-  }
+    out[sub] = t;
+  });
   return out;
 }
 

@@ -11,8 +11,10 @@
 namespace madd::detail {
 
 // Per subdomain of the discretised decomposition `d` of `domain`: the
-// triangles its mesh is expected to have.
-std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size);
+// triangles its mesh is expected to have; computed on `threads` threads (0:
+// one per core), the same for any count.
+std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size,
+                                       unsigned threads = 1);
 
 // Sets the decomposition's weights so that it balances expected triangles
 // rather than areas (when the options carry no weights of their own).
