@@ -316,8 +316,8 @@ TEST_CASE("mesh interior: the work estimate counts a region's finer bound (the S
   const madd::test::InteriorFixture f = madd::test::interior_fixture();
   const madd::MeshSizeOptions none;
   const madd::detail::AreaBound field(none);
-  const std::vector<double> work =
-      madd::detail::expected_triangles(madd::discretise(f.decomposition, none), f.domain, field);
+  const std::vector<double> work = madd::detail::expected_triangles(madd::discretise(f.decomposition, none),
+                                                                    madd::detail::DomainWork(f.domain, field));
   REQUIRE(work.size() == 2);
   // The loop's unit of area at 0.002: some 775 triangles in subdomain 1,
   // where the size bound alone (none) expects a few along the pieces.

@@ -175,8 +175,11 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 
 namespace detail {
 
-MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
-                                   const AreaBound& field) {
+// Meshes `decomposition` of work.domain under work.size (built once per run).
+MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const DomainWork& work,
+                                   const MeshOptions& options) {
+  const Pslg& domain = work.domain;
+  const AreaBound& field = work.size;
   MeshRun run;
   MeshReport& report = run.report;
   detail::Stopwatch clock;
@@ -184,7 +187,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Psl
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   Decomposition d = detail::discretise(decomposition, field, false, &guard);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, domain, field, options.decomposition.threads);
+  report.expected_triangles = detail::expected_triangles(d, work, options.decomposition.threads);
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
@@ -199,10 +202,10 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Psl
   return run;
 }
 
-DecomposeRun decompose_bounded(const Pslg& domain, const MeshOptions& options, const AreaBound& field) {
+DecomposeRun decompose_bounded(const DomainWork& work, const MeshOptions& options) {
   DecomposeOptions dopt = options.decomposition;
-  if (options.balance_by_work) detail::weigh_by_work(dopt, domain, field);
-  return detail::decompose_valid(domain, dopt);
+  if (options.balance_by_work) detail::weigh_by_work(dopt, work);
+  return detail::decompose_valid(work.domain, dopt);
 }
 
 }  // namespace detail
@@ -212,7 +215,7 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
   detail::Stopwatch clock;
   const detail::AreaBound field(options.size, &domain);
   const double field_seconds = clock.lap();
-  MeshRun run = detail::mesh_decomposition_bounded(decomposition, domain, options, field);
+  MeshRun run = detail::mesh_decomposition_bounded(decomposition, detail::DomainWork(domain, field), options);
   if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
   return run;
 }
@@ -221,7 +224,7 @@ DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) 
   check_options(options);
   validate(domain);
   const detail::AreaBound field(options.size, &domain);
-  return detail::decompose_bounded(domain, options, field);
+  return detail::decompose_bounded(detail::DomainWork(domain, field), options);
 }
 
 MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
@@ -231,9 +234,11 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
   validate(domain);
   const detail::AreaBound field(options.size, &domain);
   const double field_seconds = clock.lap();
-  const Decomposition d = detail::decompose_bounded(domain, options, field).decomposition;
+  // One reading of the whole domain's work for the weights and the estimates.
+  const detail::DomainWork work(domain, field);
+  const Decomposition d = detail::decompose_bounded(work, options).decomposition;
   const double decompose_seconds = clock.lap();
-  MeshRun run = detail::mesh_decomposition_bounded(d, domain, options, field);
+  MeshRun run = detail::mesh_decomposition_bounded(d, work, options);
   run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
   if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
   return run;

@@ -192,7 +192,8 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
   Decomposition d = detail::discretise(decomposition, field, false, &guard);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, domain, field, options.decomposition.threads);
+  report.expected_triangles =
+      detail::expected_triangles(d, detail::DomainWork(domain, field), options.decomposition.threads);
 
   part.share = share;
   part.shares = shares;

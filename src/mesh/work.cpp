@@ -195,8 +195,8 @@ void integrate_triangulation(const Triangulation& tri, Pieces pieces, const Area
 // counted by area): per triangle of `tri` where a gap binds at the centroid,
 // the integral with the gaps less the integral without, as one sample at
 // the centroid (in triangles).
-std::vector<ValuedPoint> gap_excess(const Triangulation& tri, Pieces pieces, const AreaBound& size,
-                                    const NarrowGaps& gaps) {
+std::vector<ValuedPoint> excess_of_gaps(const Triangulation& tri, Pieces pieces, const AreaBound& size,
+                                        const NarrowGaps& gaps) {
   std::vector<ValuedPoint> out, with, without;
   const WorkBound plain{size}, with_gaps{size, &gaps};
   for (const auto& v : tri.triangles) {
@@ -231,15 +231,9 @@ double varying_interior(const Decomposition& d, std::uint32_t k, const AreaBound
   return t;
 }
 
-// Under one bound: the gaps' excess over the domain's triangulation, each
-// sample given to the subdomain holding it.
-std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const Pslg& domain, const AreaBound& size,
-                                            const NarrowGaps& gaps) {
+// Under one bound: the gaps' excess, each sample given to the subdomain holding it.
+std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const std::vector<ValuedPoint>& samples) {
   std::vector<double> out(d.subdomains.size(), 0.0);
-  const Triangulation tri = triangulate(domain);
-  const Box box = bounding_box(tri.points);
-  const Pieces pieces{std::max(box.width(), box.height()) / subdomain_pieces_across, estimate_piece_sides};
-  const std::vector<ValuedPoint> samples = gap_excess(tri, pieces, size, gaps);
   if (samples.empty()) return out;
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
     const Subdomain& s = d.subdomains[k];
@@ -252,16 +246,29 @@ std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const Pslg& 
   return out;
 }
 
+// The domain's interior is counted in pieces at most 1/interior_pieces_across
+// of its extent and weight_piece_sides triangle sides long.
+Pieces domain_pieces(const Triangulation& tri) {
+  const Box box = bounding_box(tri.points);
+  return {std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
+}
+
 }  // namespace
 
-std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size,
-                                       unsigned threads) {
+DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_)
+    : domain(domain_), size(size_), triangulation(triangulate(domain_)), gaps(domain_) {
+  const Pieces pieces = domain_pieces(triangulation);
+  if (size.uniform() && size.bounded() && pieces.longest > 0)
+    gap_excess = excess_of_gaps(triangulation, pieces, size, gaps);
+}
+
+std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads) {
   std::vector<double> out(d.subdomains.size(), 0.0);
-  const NarrowGaps gaps(domain);
+  const AreaBound& size = work.size;
+  const NarrowGaps& gaps = work.gaps;
   const bool uniform = size.uniform();
   const RegionView regions = region_view(d);
-  const std::vector<double> excess = uniform && size.bounded() ? gap_excess_by_subdomain(d, domain, size, gaps)
-                                                               : std::vector<double>(d.subdomains.size(), 0.0);
+  const std::vector<double> excess = gap_excess_by_subdomain(d, work.gap_excess);
   // Each subdomain alone, into its own slot: under a varying bound, the
   // integral over its triangulation is a pass as long as a tenth of its
   // refinement.
@@ -318,21 +325,11 @@ void points_inside_next_to_segments(const Triangulation& tri, std::size_t segmen
   }
 }
 
-// The interior's work under a varying size bound: the domain's own
-// triangulation, whose triangles are as fine as the boundary's vertices are
-// dense (where graded fields vary most), its large triangles split to
-// 1/interior_pieces_across of the domain's extent.
-void add_interior_samples(const Triangulation& tri, const AreaBound& size, const NarrowGaps& gaps,
-                          std::vector<ValuedPoint>& samples) {
-  const Box box = bounding_box(tri.points);
-  const Pieces pieces{std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
-  if (!(pieces.longest > 0)) return;
-  integrate_triangulation(tri, pieces, size, gaps, samples);
-}
-
 }  // namespace
 
-void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBound& size) {
+void weigh_by_work(DecomposeOptions& options, const DomainWork& work) {
+  const Pslg& domain = work.domain;
+  const AreaBound& size = work.size;
   if (options.weight_function || !options.weight_samples.empty() || options.gradation > 0 ||
       options.subdomain_area_function || !options.subdomain_area_samples.empty() || !size.bounded())
     return;
@@ -341,7 +338,7 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
   // into pieces a few sizes long, each piece's sample a hair inside the
   // domain from its midpoint, towards the centroid of the domain's triangle
   // on that segment (a point on the boundary would fall in no face or in two).
-  const Triangulation tri = triangulate(domain);
+  const Triangulation& tri = work.triangulation;
   std::vector<Point> inside;
   std::vector<std::uint8_t> found;
   points_inside_next_to_segments(tri, domain.segments.size(), inside, found);
@@ -369,13 +366,10 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
     }
   }
   const double area = domain_area(domain);
-  const NarrowGaps gaps(domain);
   if (uniform) {
     // The narrow gaps' triangles, which the area term does not count.
-    const Box box = bounding_box(tri.points);
-    const Pieces pieces{std::max(box.width(), box.height()) / interior_pieces_across, weight_piece_sides};
     const double bound = size.area_at(tri.points.empty() ? Point{} : tri.points[0]);
-    for (const ValuedPoint& p : gap_excess(tri, pieces, size, gaps)) {
+    for (const ValuedPoint& p : work.gap_excess) {
       samples.push_back({p.at, p.value * kappa * bound});
       boundary += p.value * kappa * bound;
     }
@@ -384,7 +378,11 @@ void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBoun
     // splits are exact; graded ones follow samples): keep the areas then.
     if (boundary < min_boundary_share * area) return;
   } else {
-    add_interior_samples(tri, size, gaps, samples);
+    // The interior's work: the domain's own triangulation, whose triangles
+    // are as fine as the boundary's vertices are dense (where graded fields
+    // vary most), its large triangles split (domain_pieces).
+    if (const Pieces pieces = domain_pieces(tri); pieces.longest > 0)
+      integrate_triangulation(tri, pieces, size, work.gaps, samples);
     double total = 0;
     for (const ValuedPoint& v : samples) total += v.value;
     if (!(total > 0)) return;

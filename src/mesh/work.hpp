@@ -6,19 +6,37 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/pslg.hpp"
+#include "madd/triangulation.hpp"
+#include "mesh/narrow_gaps.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd::detail {
 
-// Per subdomain of the discretised decomposition `d` of `domain`: the
+// The whole domain as the work estimate reads it, built once per run after
+// the size bound and read by both of its uses: the decomposition's weights
+// (weigh_by_work, before decomposing) and every subdomain's estimate
+// (expected_triangles, after). Keeps references to `domain` and `size`.
+struct DomainWork {
+  // `domain` passed validate().
+  DomainWork(const Pslg& domain, const AreaBound& size);
+  const Pslg& domain;
+  const AreaBound& size;
+  Triangulation triangulation;  // the domain's constrained Delaunay triangulation
+  NarrowGaps gaps;
+  // Under one bound everywhere (whose interior is counted by area): the
+  // triangles the narrow gaps add, one sample per triangle of the
+  // triangulation where a gap binds at its centroid. Empty otherwise.
+  std::vector<ValuedPoint> gap_excess;
+};
+
+// Per subdomain of the discretised decomposition `d` of work.domain: the
 // triangles its mesh is expected to have; computed on `threads` threads (0:
 // one per core), the same for any count.
-std::vector<double> expected_triangles(const Decomposition& d, const Pslg& domain, const AreaBound& size,
-                                       unsigned threads = 1);
+std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads = 1);
 
 // Sets the decomposition's weights so that it balances expected triangles
 // rather than areas (when the options carry no weights of their own).
-void weigh_by_work(DecomposeOptions& options, const Pslg& domain, const AreaBound& size);
+void weigh_by_work(DecomposeOptions& options, const DomainWork& work);
 
 // The Steiner points refinement of one subdomain may add before it stops
 // (what is left below the bound is then counted as MeshShortfall::limit).
