@@ -443,7 +443,7 @@ const std::vector<QuotedRun> quoted_runs = {
     {"docs/grading.md",
      "madd data/pipe.poly -n 64 --weights docs/img/grading-pipe-weights.node --weight-gradation 20 --svg "
      "docs/img/grading-background-weights.svg",
-     "— area max/mean 2.68, weight max/mean 1.13, min angle 65.9°",
+     "— area max/mean 2.51, weight max/mean 1.09, min angle 61.2°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
      "madd data/pipe.poly -n 1000 --areas docs/img/grading-pipe-areas.node --svg docs/img/grading-background-areas.svg",
@@ -451,7 +451,7 @@ const std::vector<QuotedRun> quoted_runs = {
      {"subdomains", "", "angle_min"}},
     {"docs/grading.md",
      "madd data/key.poly -n 100 --weight-fn x+2.5 --svg docs/img/grading-weight-fn.svg",
-     "— area max/mean 2.04, weight max/mean 1.23, min angle 62.0°",
+     "— area max/mean 2.04, weight max/mean 1.20, min angle 60.1°",
      {"max_area_over_mean", "max_weight_over_mean", "angle_min"}},
     {"docs/grading.md",
      "madd data/key.poly -n 1000 --area-fn \"0.01+0.01*(x+2)^2\" --svg docs/img/grading-area-fn.svg",
@@ -479,7 +479,7 @@ const std::vector<QuotedScript> quoted_scripts = {
      "setWeightFunction x + 2.5           # Fig. 13, left: linear in x (x runs from -2 to 8 on the key)\n"
      "dec 1250\n",
      "read key.poly: 56 points, 56 segments, 1 hole\nsetWeightFunction x + 2.5\n"
-     "dec 1250: 1250 subdomains, 2590 points, 3840 segments\n",
+     "dec 1250: 1250 subdomains, 2473 points, 3723 segments\n",
      {"key.poly"}},
     {"docs/script.md",
      "read pipe.poly\n"

@@ -1,7 +1,9 @@
 // The chord fallback (chord.hpp): every pair of refined boundary points
 // is rated by the balance it would give, in O(1) from prefix sums of the
-// shoelace terms; only balanced pairs have their end angles measured, and
-// only the best few are checked exactly against the boundary.
+// shoelace terms (and, graded, in O(samples) from prefix sums of the angle
+// each ring edge subtends at each sample); only balanced pairs have their
+// end angles measured, and only the best few are checked exactly against
+// the boundary.
 #include "split/chord.hpp"
 
 #include <algorithm>
@@ -30,6 +32,14 @@ struct Ring {
   std::vector<std::uint32_t> at;  // working points in ring order
   std::vector<double> prefix;     // prefix[k]: twice the area swept by ring edges 0..k-1
   Point origin;                   // shoelace terms are taken relative to it (fewer cancellations)
+  // Graded: turn[k * samples + s], the angle ring edges 0..k-1 subtend at
+  // sample s (signed, summed). Ring i..j closed by the chord j -> i winds
+  // round s (turn[j] - turn[i] + the chord's angle) / 2 pi times, and the
+  // chord's angle is within (-pi, pi): the winding is the integer nearest
+  // (turn[j] - turn[i]) / 2 pi, 1 inside side 0 and 0 outside (a sample on
+  // the chord itself may go either way).
+  std::size_t samples = 0;
+  std::vector<double> turn;
 };
 
 // The one ring of `fd`, in order. Empty when the face has holes or a point
@@ -60,10 +70,49 @@ Ring ring_of(const FaceDomain& fd) {
 }
 
 // Area of the part bounded by the ring from position i to j and the chord back.
+// Fills ring.turn for the options' samples.
+void add_turns(const FaceDomain& fd, const ChordOptions& o, Ring& ring) {
+  const std::size_t n = ring.at.size(), count = o.samples.size();
+  ring.samples = count;
+  ring.turn.assign((n + 1) * count, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point a = fd.pslg.points[ring.at[k]], b = fd.pslg.points[ring.at[(k + 1) % n]];
+    for (std::size_t s = 0; s < count; ++s) {
+      const Point da = a - o.samples[s].at, db = b - o.samples[s].at;
+      ring.turn[(k + 1) * count + s] = ring.turn[k * count + s] + std::atan2(cross(da, db), dot(da, db));
+    }
+  }
+}
+
 double side_area(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
   const Point pi = fd.pslg.points[ring.at[i]] - ring.origin;
   const Point pj = fd.pslg.points[ring.at[j]] - ring.origin;
   return 0.5 * (ring.prefix[j] - ring.prefix[i] + cross(pj, pi));
+}
+
+// The samples' weight inside the ring from i to j closed by a chord (i = 0,
+// j = n: the whole ring).
+double samples_inside(const Ring& ring, const ChordOptions& o, std::size_t i, std::size_t j) {
+  const double* from = &ring.turn[i * ring.samples];
+  const double* to = &ring.turn[j * ring.samples];
+  double inside = 0.0;
+  for (std::size_t s = 0; s < ring.samples; ++s)
+    inside += o.samples[s].value * std::nearbyint((to[s] - from[s]) * (0.5 / std::numbers::pi));
+  return inside;
+}
+
+// What side 0 of chord (i, j) weighs: its area, or graded its area and samples.
+double side_weight(const FaceDomain& fd, const Ring& ring, const ChordOptions& o, std::size_t i, std::size_t j) {
+  const double area = side_area(fd, ring, i, j);
+  if (ring.samples == 0) return area;
+  return o.area_weight * area + o.sample_weight * samples_inside(ring, o, i, j);
+}
+
+// What the whole face weighs, in side_weight's units.
+double face_weight(const Ring& ring, const ChordOptions& o) {
+  const double area = 0.5 * ring.prefix[ring.at.size()];
+  if (ring.samples == 0) return area;
+  return o.area_weight * area + o.sample_weight * samples_inside(ring, o, 0, ring.at.size());
 }
 
 // Per boundary point: the directions that leave it at exactly Phi0 from the
@@ -116,9 +165,15 @@ double end_angle(const FaceDomain& fd, std::uint32_t at, std::uint32_t towards) 
 bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
   const std::size_t n = ring.at.size();
   const Segment chord{ring.at[i], ring.at[j], 0};
+  const auto& pts = fd.pslg.points;
   for (std::size_t k = 0; k < n; ++k) {
     const Segment edge{ring.at[k], ring.at[(k + 1) % n], 0};
-    if (classify_contact(fd.pslg.points, chord, edge).kind != Contact::none) return false;
+    if (classify_contact(pts, chord, edge).kind != Contact::none) return false;
+    // Clear of the boundary along its middle, as every separator
+    // (medial/medial_detail.hpp): a chord past a headland a hair away leaves a
+    // strip of water that hair wide (on Lake Ladoga at N = 256, a subdomain
+    // of 30 x its expected triangles).
+    if (hugs_separator(pts[chord.a], pts[chord.b], pts[edge.a], pts[edge.b])) return false;
   }
   // Nor any interior constraint: it may not even touch one (a crossing is the
   // medial separators' business, with its angles on both sides).
@@ -253,22 +308,25 @@ bool better(const Pair& x, const Pair& y) {
 // ends, best first.
 std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const ChordOptions& o) {
   const std::size_t n = ring.at.size();
-  const double total = 0.5 * ring.prefix[n];
+  const double total = face_weight(ring, o);
   std::vector<Pair> out;
   if (!(total > 0.0)) return out;
   const std::vector<Cone> cone = cones(fd, ring, o.separator_angle_deg);
   const auto ranges = balanced_area_ranges(o.plan, total, o.min_quality);
   const auto& pts = fd.pslg.points;
+  const bool graded = ring.samples > 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (cone[i].empty) continue;
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // neighbours along the ring
-      const double a = side_area(fd, ring, i, j);
+      const std::uint32_t p = ring.at[i], r = ring.at[j];
+      // Graded, the weight costs a pass over the samples: the end cones first.
+      if (graded && (!inside_cone(cone[i], pts[r] - pts[p]) || !inside_cone(cone[j], pts[p] - pts[r]))) continue;
+      const double a = side_weight(fd, ring, o, i, j);
       if (!(a > 0.0 && a < total) || !in_ranges(ranges, a)) continue;
       const double q = two_sided_quality(o.plan, a, total - a);
       if (!(q > o.min_quality)) continue;
-      const std::uint32_t p = ring.at[i], r = ring.at[j];
-      if (!inside_cone(cone[i], pts[r] - pts[p]) || !inside_cone(cone[j], pts[p] - pts[r])) continue;
+      if (!graded && (!inside_cone(cone[i], pts[r] - pts[p]) || !inside_cone(cone[j], pts[p] - pts[r]))) continue;
       double len = distance(pts[p], pts[r]);
       if (o.end_bonus) len *= static_cast<double>(fd.links[p].bonus) * static_cast<double>(fd.links[r].bonus);
       out.push_back({i, j, q, len, q >= o.good_quality});
@@ -281,10 +339,13 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
 }  // namespace
 
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
-  const Ring ring = ring_of(fd);
+  Ring ring = ring_of(fd);
   if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
+  if (options.sample_weight > 0.0 && !options.samples.empty()) {
+    if (options.samples.size() * (ring.at.size() + 1) > max_chord_sample_table) return std::nullopt;
+    add_turns(fd, options, ring);
+  }
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
-  const std::size_t n = ring.at.size();
   const double min_angle = options.separator_angle_deg + angle_margin_deg;
   for (std::size_t k = 0; k < std::min(pairs.size(), max_exact_checks); ++k) {
     const Pair& c = pairs[k];
@@ -300,9 +361,9 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
     e.left_side = 0;
     out.result.edges.push_back(e);
     out.result.ring_side.assign(1, 0);
-    const double a = side_area(fd, ring, c.i, c.j);
+    const double a = side_weight(fd, ring, options, c.i, c.j);
     out.result.weight[0] = a;
-    out.result.weight[1] = 0.5 * ring.prefix[n] - a;
+    out.result.weight[1] = face_weight(ring, options) - a;
     out.result.interior[0] = interior_point(fd, ring, c.i, c.j, 0);
     out.result.interior[1] = interior_point(fd, ring, c.i, c.j, 1);
     place_by_chord(fd, ring, c.i, c.j, out.result);

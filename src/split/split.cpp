@@ -359,7 +359,8 @@ Candidate try_spacing(const Subdivision& sub, std::uint32_t face, std::uint32_t 
 // has balance quality `best` (< 0: none found), on its boundary refined at
 // half the first spacing.
 std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std::uint32_t plan,
-                                 const SplitOptions& options, double best, SplitTimes& times) {
+                                 const SplitOptions& options, const FaceDensity& density, double best,
+                                 SplitTimes& times) {
   const double area = sub.face_area(face);
   const double h = std::max(0.5 * std::sqrt(area) / (points_per_side * options.boundary_refinement),
                             face_perimeter(sub, face) / max_chord_points);
@@ -369,6 +370,11 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
   co.min_quality = best < 0.0 ? options.min_split_quality : best + chord_gain;
   co.good_quality = options.good_balance;
   co.end_bonus = options.smoothing_iterations > 0;
+  if (density.graded) {
+    co.area_weight = density.r;
+    co.sample_weight = density.a;
+    co.samples = density.samples;
+  }
   Stopwatch clock;
   const FaceDomain fd = refine_face(sub, face, h);
   times.refine += clock.lap();
@@ -407,9 +413,11 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
     if (best.quality >= options.good_balance) break;
     if (h > spacing) break;  // cannot refine further
   }
-  if (best.quality < chord_trigger && !density.graded && sub.faces[face].rings.size() == 1 &&
-      static_cast<double>(vertices) <= max_chord_points) {
-    if (auto chord = chord_split(sub, face, plan, options, best.quality, times)) {
+  // Graded by samples (cases 2 and 3) the chords are weighed as the
+  // bisection weighs; boundary vertex weights (case 1) they cannot weigh.
+  if (best.quality < chord_trigger && (!density.graded || density.point_weights == nullptr) &&
+      sub.faces[face].rings.size() == 1 && static_cast<double>(vertices) <= max_chord_points) {
+    if (auto chord = chord_split(sub, face, plan, options, density, best.quality, times)) {
       best.result = std::move(chord->result);
       best.quality = chord->quality;
     }
