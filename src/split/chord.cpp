@@ -29,37 +29,69 @@ constexpr std::size_t max_exact_checks = 256;
 constexpr std::size_t max_ring_points = 4000;
 
 struct Ring {
-  std::vector<std::uint32_t> at;  // working points in ring order
+  std::vector<std::uint32_t> at;  // the outer ring's working points in ring order
   std::vector<double> prefix;     // prefix[k]: twice the area swept by ring edges 0..k-1
   Point origin;                   // shoelace terms are taken relative to it (fewer cancellations)
-  // Graded: turn[k * samples + s], the angle ring edges 0..k-1 subtend at
-  // sample s (signed, summed). Ring i..j closed by the chord j -> i winds
-  // round s (turn[j] - turn[i] + the chord's angle) / 2 pi times, and the
-  // chord's angle is within (-pi, pi): the winding is the integer nearest
+  // The holes (the face's rings 1, 2, ...): their working points in order
+  // and their areas.
+  std::vector<std::vector<std::uint32_t>> holes;
+  std::vector<double> hole_area;
+  // Which points lie on which side of a chord, each a column of `turn`: the
+  // samples (graded), then one vertex of each hole. turn[k * columns + c] is
+  // the angle ring edges 0..k-1 subtend at column c's point (signed,
+  // summed). Ring i..j closed by the chord j -> i winds round the point
+  // (turn[j] - turn[i] + the chord's angle) / 2 pi times, and the chord's
+  // angle is within (-pi, pi): the winding is the integer nearest
   // (turn[j] - turn[i]) / 2 pi, 1 inside side 0 and 0 outside (a sample on
-  // the chord itself may go either way).
-  std::size_t samples = 0;
+  // the chord itself may go either way; a hole's vertex is never on it).
+  std::size_t samples = 0, columns = 0;
   std::vector<double> turn;
 };
 
-// The one ring of `fd`, in order. Empty when the face has holes or a point
-// where the ring passes twice (the chord rules below assume a simple polygon).
+// The cycle of working points from `first` (links' next), or empty when it
+// does not close within `limit` points.
+std::vector<std::uint32_t> cycle_from(const FaceDomain& fd, std::uint32_t first, std::size_t limit) {
+  std::vector<std::uint32_t> out;
+  std::uint32_t v = first;
+  do {
+    out.push_back(v);
+    v = fd.links[v].next;
+  } while (v != first && v < limit && out.size() <= limit);
+  if (v != first) out.clear();
+  return out;
+}
+
+double ring_area(const FaceDomain& fd, const std::vector<std::uint32_t>& cycle) {
+  double twice = 0.0;
+  const Point o = fd.pslg.points[cycle[0]];
+  for (std::size_t k = 0; k < cycle.size(); ++k)
+    twice += cross(fd.pslg.points[cycle[k]] - o, fd.pslg.points[cycle[(k + 1) % cycle.size()]] - o);
+  return 0.5 * twice;
+}
+
+// The face's rings, in order. Empty when a point of them is one where a
+// ring passes twice or two rings meet (the chord rules below assume simple
+// polygons, the holes apart from the outer ring and each other).
 Ring ring_of(const FaceDomain& fd) {
   Ring ring;
   const auto& pts = fd.pslg.points;
-  // The ring's working points come first (refine_face), the interior ones after.
+  // The rings' working points come first, ring by ring (refine_face), the interior ones after.
   const std::size_t ring_points = fd.ring_segments;
-  if (!fd.pslg.holes.empty() || ring_points < 4) return ring;
+  if (ring_points < 4) return ring;
   for (std::size_t w = 0; w < ring_points; ++w) {
     if (fd.links[w].prev == no_index) return ring;
   }
   ring.origin = pts[0];
-  std::uint32_t v = 0;
-  do {
-    ring.at.push_back(v);
-    v = fd.links[v].next;
-  } while (v != 0 && v < ring_points && ring.at.size() <= ring_points);
-  if (v != 0 || ring.at.size() != ring_points) return Ring{};
+  ring.at = cycle_from(fd, 0, ring_points);
+  std::size_t covered = ring.at.size();
+  while (covered < ring_points && !ring.at.empty()) {
+    std::vector<std::uint32_t> hole = cycle_from(fd, static_cast<std::uint32_t>(covered), ring_points);
+    if (hole.empty()) return Ring{};
+    covered += hole.size();
+    ring.hole_area.push_back(-ring_area(fd, hole));  // holes run clockwise
+    ring.holes.push_back(std::move(hole));
+  }
+  if (ring.at.empty() || covered != ring_points || ring.holes.size() != fd.pslg.holes.size()) return Ring{};
   ring.prefix.assign(ring.at.size() + 1, 0.0);
   for (std::size_t k = 0; k < ring.at.size(); ++k) {
     const Point a = pts[ring.at[k]] - ring.origin;
@@ -69,21 +101,33 @@ Ring ring_of(const FaceDomain& fd) {
   return ring;
 }
 
-// Area of the part bounded by the ring from position i to j and the chord back.
-// Fills ring.turn for the options' samples.
+// Fills ring.turn for the options' samples (graded) and the holes.
 void add_turns(const FaceDomain& fd, const ChordOptions& o, Ring& ring) {
-  const std::size_t n = ring.at.size(), count = o.samples.size();
-  ring.samples = count;
+  std::vector<Point> at;
+  if (o.sample_weight > 0.0)
+    for (const ValuedPoint& s : o.samples) at.push_back(s.at);
+  ring.samples = at.size();
+  for (const auto& hole : ring.holes) at.push_back(fd.pslg.points[hole[0]]);
+  const std::size_t n = ring.at.size(), count = at.size();
+  ring.columns = count;
   ring.turn.assign((n + 1) * count, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
     const Point a = fd.pslg.points[ring.at[k]], b = fd.pslg.points[ring.at[(k + 1) % n]];
-    for (std::size_t s = 0; s < count; ++s) {
-      const Point da = a - o.samples[s].at, db = b - o.samples[s].at;
-      ring.turn[(k + 1) * count + s] = ring.turn[k * count + s] + std::atan2(cross(da, db), dot(da, db));
+    for (std::size_t c = 0; c < count; ++c) {
+      const Point da = a - at[c], db = b - at[c];
+      ring.turn[(k + 1) * count + c] = ring.turn[k * count + c] + std::atan2(cross(da, db), dot(da, db));
     }
   }
 }
 
+// Whether column c's point is inside side 0 of chord (i, j) (ring.turn).
+bool inside_side0(const Ring& ring, std::size_t c, std::size_t i, std::size_t j) {
+  const double winding = ring.turn[j * ring.columns + c] - ring.turn[i * ring.columns + c];
+  return std::nearbyint(winding * (0.5 / std::numbers::pi)) != 0.0;
+}
+
+// Area of the part bounded by the outer ring from position i to j and the
+// chord back (its holes not taken off).
 double side_area(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
   const Point pi = fd.pslg.points[ring.at[i]] - ring.origin;
   const Point pj = fd.pslg.points[ring.at[j]] - ring.origin;
@@ -91,26 +135,32 @@ double side_area(const FaceDomain& fd, const Ring& ring, std::size_t i, std::siz
 }
 
 // The samples' weight inside the ring from i to j closed by a chord (i = 0,
-// j = n: the whole ring).
+// j = n: the whole ring), and the holes' area there.
 double samples_inside(const Ring& ring, const ChordOptions& o, std::size_t i, std::size_t j) {
-  const double* from = &ring.turn[i * ring.samples];
-  const double* to = &ring.turn[j * ring.samples];
   double inside = 0.0;
   for (std::size_t s = 0; s < ring.samples; ++s)
-    inside += o.samples[s].value * std::nearbyint((to[s] - from[s]) * (0.5 / std::numbers::pi));
+    if (inside_side0(ring, s, i, j)) inside += o.samples[s].value;
   return inside;
 }
+double holes_inside(const Ring& ring, std::size_t i, std::size_t j) {
+  double area = 0.0;
+  for (std::size_t h = 0; h < ring.holes.size(); ++h)
+    if (inside_side0(ring, ring.samples + h, i, j)) area += ring.hole_area[h];
+  return area;
+}
 
-// What side 0 of chord (i, j) weighs: its area, or graded its area and samples.
+// What side 0 of chord (i, j) weighs: its area less its holes', or graded
+// r x that area + a x its samples.
 double side_weight(const FaceDomain& fd, const Ring& ring, const ChordOptions& o, std::size_t i, std::size_t j) {
-  const double area = side_area(fd, ring, i, j);
+  const double area = side_area(fd, ring, i, j) - holes_inside(ring, i, j);
   if (ring.samples == 0) return area;
   return o.area_weight * area + o.sample_weight * samples_inside(ring, o, i, j);
 }
 
 // What the whole face weighs, in side_weight's units.
 double face_weight(const Ring& ring, const ChordOptions& o) {
-  const double area = 0.5 * ring.prefix[ring.at.size()];
+  double area = 0.5 * ring.prefix[ring.at.size()];
+  for (const double a : ring.hole_area) area -= a;
   if (ring.samples == 0) return area;
   return o.area_weight * area + o.sample_weight * samples_inside(ring, o, 0, ring.at.size());
 }
@@ -163,11 +213,11 @@ double end_angle(const FaceDomain& fd, std::uint32_t at, std::uint32_t towards) 
 // The chord from ring position i to j meets the boundary only at its two ends
 // (exact, validate's segment test: touching or overlapping counts).
 bool chord_is_clear(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
-  const std::size_t n = ring.at.size();
   const Segment chord{ring.at[i], ring.at[j], 0};
   const auto& pts = fd.pslg.points;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Segment edge{ring.at[k], ring.at[(k + 1) % n], 0};
+  // Every ring's edges: the outer ring's and the holes'.
+  for (std::size_t k = 0; k < fd.ring_segments; ++k) {
+    const Segment edge{fd.pslg.segments[k].a, fd.pslg.segments[k].b, 0};
     if (classify_contact(pts, chord, edge).kind != Contact::none) return false;
     // Clear of the boundary along its middle, as every separator
     // (medial/medial_detail.hpp): a chord past a headland a hair away leaves a
@@ -214,17 +264,31 @@ void place_by_chord(const FaceDomain& fd, const Ring& ring, std::size_t i, std::
   for (const Point& p : fd.isolated) r.point_sides.push_back(in_side0(p) ? 0 : 1);
 }
 
-// A point strictly inside the polygon of ring positions i..j (cyclic).
-Point triangulated_interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j) {
+// A point strictly inside side `which` of chord (i, j): the polygon of ring
+// positions i..j (side 0) or j..i (side 1, cyclic), less its holes.
+Point triangulated_interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std::size_t j, int which) {
   const std::size_t n = ring.at.size();
   Pslg side;
   side.first_index = 0;
-  for (std::size_t k = i;; k = (k + 1) % n) {
-    side.points.push_back(fd.pslg.points[ring.at[k]]);
-    if (k == j) break;
+  const auto add_ring = [&](const auto& cycle) {
+    const auto first = static_cast<std::uint32_t>(side.points.size());
+    const auto m = static_cast<std::uint32_t>(cycle.size());
+    for (std::uint32_t k = 0; k < m; ++k) {
+      side.points.push_back(fd.pslg.points[cycle[k]]);
+      side.segments.push_back({first + k, first + (k + 1) % m, 1});
+    }
+  };
+  std::vector<std::uint32_t> outer;
+  for (std::size_t k = which == 0 ? i : j;; k = (k + 1) % n) {
+    outer.push_back(ring.at[k]);
+    if (k == (which == 0 ? j : i)) break;
   }
-  const auto m = static_cast<std::uint32_t>(side.points.size());
-  for (std::uint32_t k = 0; k < m; ++k) side.segments.push_back({k, (k + 1) % m, 1});
+  add_ring(outer);
+  for (std::size_t h = 0; h < ring.holes.size(); ++h) {
+    if (inside_side0(ring, ring.samples + h, i, j) != (which == 0)) continue;
+    add_ring(ring.holes[h]);
+    side.holes.push_back(fd.pslg.holes[h]);
+  }
   return largest_triangle_centroid(side);
 }
 
@@ -237,10 +301,8 @@ Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std:
   const Point p = pts[ring.at[i]], q = pts[ring.at[j]];
   const Point m = midpoint(p, q);
   double clear = distance(p, q);
-  const std::size_t n = ring.at.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    clear = std::min(clear, segment_distance(m, pts[ring.at[k]], pts[ring.at[(k + 1) % n]]));
-  }
+  for (std::size_t k = 0; k < fd.ring_segments; ++k)  // the holes' edges too
+    clear = std::min(clear, segment_distance(m, pts[fd.pslg.segments[k].a], pts[fd.pslg.segments[k].b]));
   const Point d = q - p;
   const Point left = (1.0 / length(d)) * Point{d.y, -d.x};  // left of q -> p
   const Point x = m + (side == 0 ? 0.25 * clear : -0.25 * clear) * left;
@@ -248,7 +310,7 @@ Point interior_point(const FaceDomain& fd, const Ring& ring, std::size_t i, std:
   if ((side == 0 && o > 0.0) || (side == 1 && o < 0.0)) {
     if (distance(x, m) < 0.5 * clear) return x;
   }
-  return side == 0 ? triangulated_interior_point(fd, ring, i, j) : triangulated_interior_point(fd, ring, j, i);
+  return triangulated_interior_point(fd, ring, i, j, side);
 }
 
 // balance_quality that also counts the lighter side: with the best sharing of
@@ -314,13 +376,13 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
   const std::vector<Cone> cone = cones(fd, ring, o.separator_angle_deg);
   const auto ranges = balanced_area_ranges(o.plan, total, o.min_quality);
   const auto& pts = fd.pslg.points;
-  const bool graded = ring.samples > 0;
+  const bool graded = ring.columns > 0;  // samples or holes to place
   for (std::size_t i = 0; i < n; ++i) {
     if (cone[i].empty) continue;
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // neighbours along the ring
       const std::uint32_t p = ring.at[i], r = ring.at[j];
-      // Graded, the weight costs a pass over the samples: the end cones first.
+      // Graded or with holes, the weight costs a pass over them: the end cones first.
       if (graded && (!inside_cone(cone[i], pts[r] - pts[p]) || !inside_cone(cone[j], pts[p] - pts[r]))) continue;
       const double a = side_weight(fd, ring, o, i, j);
       if (!(a > 0.0 && a < total) || !in_ranges(ranges, a)) continue;
@@ -341,8 +403,9 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
   Ring ring = ring_of(fd);
   if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
-  if (options.sample_weight > 0.0 && !options.samples.empty()) {
-    if (options.samples.size() * (ring.at.size() + 1) > max_chord_sample_table) return std::nullopt;
+  const std::size_t columns = (options.sample_weight > 0.0 ? options.samples.size() : 0) + ring.holes.size();
+  if (columns > 0) {
+    if (columns * (ring.at.size() + 1) > max_chord_sample_table) return std::nullopt;
     add_turns(fd, options, ring);
   }
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
@@ -360,7 +423,9 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
     e.b = fd.refs[ring.at[c.i]];
     e.left_side = 0;
     out.result.edges.push_back(e);
-    out.result.ring_side.assign(1, 0);
+    out.result.ring_side.assign(1 + ring.holes.size(), 0);  // the outer ring is cut: its entry is not read
+    for (std::size_t h = 0; h < ring.holes.size(); ++h)
+      out.result.ring_side[1 + h] = inside_side0(ring, ring.samples + h, c.i, c.j) ? 0 : 1;
     const double a = side_weight(fd, ring, options, c.i, c.j);
     out.result.weight[0] = a;
     out.result.weight[1] = face_weight(ring, options) - a;

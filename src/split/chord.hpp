@@ -10,7 +10,10 @@
 // decomposition (C3). A chord across the face, such as the one between the
 // midpoints of two opposite sides, often balances it exactly while meeting
 // the boundary at close to 90 degrees; it is taken only when it satisfies
-// every rule the partial separators do (Phi0 at both ends, inside the face).
+// every rule the partial separators do (Phi0 at both ends, inside the face,
+// clear of the boundary). Its ends are on the face's outer ring; it keeps off
+// the holes (islands), each of which then lies on one side, its area
+// counted there.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -37,17 +40,18 @@ struct ChordOptions {
   std::span<const ValuedPoint> samples;
 };
 
-// The chord search reads each sample's side of each chord in O(1) from a
-// table of samples x ring points: faces beyond this are not searched with
-// their samples (the last levels' faces of a coastline at N = 64 hold
-// 60-200 samples on at most 1500 ring points).
+// The chord search reads each sample's and each hole's side of each chord in
+// O(1) from a table of (samples + holes) x ring points: faces beyond this are
+// not searched (the last levels' faces of a coastline at N = 64 hold 60-200
+// samples on at most 1500 ring points).
 inline constexpr std::size_t max_chord_sample_table = std::size_t{1} << 20;
 
-// A chord found on face `fd` (the refined boundary of a face with a single
-// ring and no point where the ring passes twice), with the two-sided balance
-// quality it achieves, or nothing. The weights are the areas, or the graded
-// weights of the options. Quadratic in the points of
-// `fd`: nothing is searched beyond a few thousand of them.
+// A chord found on face `fd` (the refined boundary of a face whose rings
+// are simple and apart: no point where a ring passes twice or two rings
+// meet), with the two-sided balance quality it achieves, or nothing. The
+// weights are the areas less the holes', or the graded weights of the
+// options. Quadratic in the points of `fd`: nothing is searched beyond a few
+// thousand of them.
 struct Chord {
   SplitResult result;
   double quality = 0.0;

@@ -416,7 +416,7 @@ SplitResult compute_split(const Subdivision& sub, std::uint32_t face, std::uint3
   // Graded by samples (cases 2 and 3) the chords are weighed as the
   // bisection weighs; boundary vertex weights (case 1) they cannot weigh.
   if (best.quality < chord_trigger && (!density.graded || density.point_weights == nullptr) &&
-      sub.faces[face].rings.size() == 1 && static_cast<double>(vertices) <= max_chord_points) {
+      static_cast<double>(vertices) <= max_chord_points) {
     if (auto chord = chord_split(sub, face, plan, options, density, best.quality, times)) {
       best.result = std::move(chord->result);
       best.quality = chord->quality;
