@@ -88,7 +88,7 @@ Ring ring_of(const FaceDomain& fd) {
     std::vector<std::uint32_t> hole = cycle_from(fd, static_cast<std::uint32_t>(covered), ring_points);
     if (hole.empty()) return Ring{};
     covered += hole.size();
-    ring.hole_area.push_back(-ring_area(fd, hole));  // holes run clockwise
+    ring.hole_area.push_back(std::abs(ring_area(fd, hole)));  // (holes run clockwise)
     ring.holes.push_back(std::move(hole));
   }
   if (ring.at.empty() || covered != ring_points || ring.holes.size() != fd.pslg.holes.size()) return Ring{};
