@@ -191,7 +191,7 @@ int decompose_body(void* context) {
   // For external meshers: every segment split once to the size bound and the
   // local feature size, so that meshers keeping boundary segments join up.
   if (read.size.has_size_bound()) {
-    write_outputs(args, with_cli_option_names(line, [&] { return discretise(d, domain, read.size); }), m);
+    write_outputs(args, with_cli_option_names(line, [&] { return discretise(d, domain, read.size, options); }), m);
   } else {
     write_outputs(args, d, m);
   }

@@ -415,6 +415,21 @@ TEST_CASE("check, decompose, mesh and --split take a domain with a vertex on no 
   CHECK(pieces == 3);
 }
 
+// --max-area far below the segments' lengths asks the decoupling for millions
+// of points a segment: the time and memory limits stop it (it ran until
+// killed before), exit 6, nothing written.
+TEST_CASE("decompose's pre-discretised outputs keep to the time and memory limits") {
+  const Scratch dir("discretise-limits");
+  const std::string file = "'" + data_dir + "/key.poly'";
+  const Result timed = run_madd(dir, file + " -n 4 --max-area 1e-14 --time-limit 1 -o out.poly");
+  CHECK(timed.code == 6);
+  CHECK(has(timed.err, "time limit"));
+  const Result memory = run_madd(dir, file + " -n 4 --max-area 1e-14 --max-memory 300 -o out.poly --split parts");
+  CHECK(memory.code == 6);
+  CHECK_FALSE(fs::exists(dir / "out.poly"));
+  CHECK_FALSE(fs::exists(dir / "parts"));
+}
+
 TEST_CASE("the progress line counts subdomains and time on a terminal, and is cleared") {
   const Scratch dir("progress");
   if (exit_status(std::system("script -qec true /dev/null > /dev/null 2>&1")) != 0) {

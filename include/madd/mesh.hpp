@@ -210,6 +210,12 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
 // OptionError when they are set).
 Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptions& size);
 Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size);
+// The same within `limits`' time_limit_seconds and max_memory_bytes (from
+// this call; 0: none): a size bound far below the segments' lengths asks for
+// millions of points a segment, and past a limit this throws
+// LimitError instead.
+Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size,
+                         const DecomposeOptions& limits);
 
 // Checks, independently of how the mesh was made: every triangle CCW and
 // non-degenerate, adjacency symmetric and matching shared edges; the

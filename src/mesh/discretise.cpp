@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "madd/mesh.hpp"
+#include "kernel/resource_limits.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
@@ -132,6 +133,13 @@ Decomposition discretise(const Decomposition& decomposition, const MeshSizeOptio
 
 Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size) {
   return detail::discretise(decomposition, detail::AreaBound(size, &domain), true);
+}
+
+Decomposition discretise(const Decomposition& decomposition, const Pslg& domain, const MeshSizeOptions& size,
+                         const DecomposeOptions& limits) {
+  const detail::ResourceGuard guard({limits.time_limit_seconds, limits.max_memory_bytes,
+                                     static_cast<std::uint32_t>(decomposition.subdomains.size())});
+  return detail::discretise(decomposition, detail::AreaBound(size, &domain), true, &guard);
 }
 
 Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field, bool boundary_by_features,

@@ -276,7 +276,7 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
     const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) + excess[sub] : 0.0;
-    if (!uniform) t = varying_interior(d, sub, size, gaps);
+    if (!uniform) t = varying_interior(d, static_cast<std::uint32_t>(sub), size, gaps);
     // A face held to a region's finer bound: its triangles at that bound
     // instead (with a varying size bound, on top of the estimate: an upper
     // bound, which is the safer side for the Steiner point budget).
