@@ -25,6 +25,7 @@
 #include "mesh_fixtures.hpp"
 #include "mesh/refine.hpp"
 #include "quality/area_bound.hpp"
+#include "quality/verify_mesh_bounded.hpp"
 
 namespace {
 
@@ -560,6 +561,31 @@ TEST_CASE("verify_mesh: the size bound") {
   CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, by_samples), "above the size bound"));
   by_samples.triangle_area_samples[0].value = largest;
   CHECK(madd::verify_mesh(f.mesh, f.domain, by_samples).ok());
+}
+
+// The per-triangle checks run on threads (detail::verify_mesh's `threads`):
+// the report is the same, problem for problem, for any count.
+TEST_CASE("verify_mesh: the size and angle checks report the same on 1, 2 and 3 threads") {
+  const Pslg domain = domain_of("pipe.poly");
+  madd::MeshOptions options;
+  options.decomposition.subdomains = 8;
+  options.size.max_triangle_area = 0.02;
+  madd::Mesh strict = madd::mesh(domain, options);
+  REQUIRE(strict.triangles.size() > 8 * 2048);  // many chunks of the checks' work
+  MeshSizeOptions size;
+  size.triangle_area_function = [](double x, double) { return 0.02 * (0.6 + 0.05 * x); };  // some too large
+  const madd::detail::AreaBound bound(size, &domain);
+  strict.min_triangle_angle_deg = 40.0;  // more below than the shortfall counts
+  const MeshSizeOptions unbounded;
+  const madd::detail::AreaBound none(unbounded, &domain);  // keeps a reference to its options
+  const madd::Verification one = madd::detail::verify_mesh(strict, domain, bound, 1);
+  const madd::Verification angles = madd::detail::verify_mesh(strict, domain, none, 1);
+  CHECK(mentions(one, "above the size bound"));
+  CHECK(mentions(angles, "have a smallest angle below"));
+  for (const unsigned threads : {2u, 3u}) {
+    CHECK(madd::detail::verify_mesh(strict, domain, bound, threads).problems == one.problems);
+    CHECK(madd::detail::verify_mesh(strict, domain, none, threads).problems == angles.problems);
+  }
 }
 
 TEST_CASE("verify_mesh: the angle bound against the shortfall count") {

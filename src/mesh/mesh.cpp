@@ -196,7 +196,8 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Dom
   report.phases.push_back({"refine", clock.lap()});
   run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
   report.phases.push_back({"merge", clock.lap()});
-  const Verification v = options.verify ? detail::verify_mesh(run.mesh, domain, field) : Verification{};
+  const Verification v =
+      options.verify ? detail::verify_mesh(run.mesh, domain, field, options.decomposition.threads) : Verification{};
   report.phases.push_back({"verify", clock.lap()});
   if (!v.ok()) detail::throw_failed_check(v);
   return run;

@@ -202,7 +202,7 @@ Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOpt
   return detail::verify_mesh(mesh, domain, *bound);
 }
 
-Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const AreaBound& bound) {
+Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const AreaBound& bound, unsigned threads) {
   Verification result;
   ProblemLog log(result);
   // Nothing here may escape: the contract is a report, never an exception
@@ -218,8 +218,8 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
       detail::check_interior_points(mesh, log);
       const std::vector<std::uint32_t> region = detail::mesh_regions(mesh);
       if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log);
-      detail::check_mesh_size(mesh, bound, region, log);
-      detail::check_mesh_angles(mesh, log);
+      detail::check_mesh_size(mesh, bound, region, log, threads);
+      detail::check_mesh_angles(mesh, log, threads);
     }
   } catch (const std::exception& e) {
     log.add(std::string("the check stopped: ") + e.what());

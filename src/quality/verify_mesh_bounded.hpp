@@ -8,7 +8,9 @@
 
 namespace madd::detail {
 
-// madd::verify_mesh(mesh, domain, bound.options()), reading sizes from `bound`.
-Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const AreaBound& bound);
+// madd::verify_mesh(mesh, domain, bound.options()), reading sizes from
+// `bound`; the per-triangle checks (size, angles) on `threads` threads (0:
+// one per core), the same report for any count.
+Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const AreaBound& bound, unsigned threads = 1);
 
 }  // namespace madd::detail

@@ -55,11 +55,14 @@ std::vector<std::uint32_t> mesh_regions(const Mesh& mesh);
 void check_region_attributes(const Mesh& mesh, const std::vector<std::uint32_t>& label, ProblemLog& log);
 
 // Every triangle within the size bound at its centroid and within its
-// region's max_area (by `label`, mesh_regions; when > 0).
-void check_mesh_size(const Mesh& mesh, const AreaBound& bound, const std::vector<std::uint32_t>& label,
-                     ProblemLog& log);
+// region's max_area (by `label`, mesh_regions; when > 0). The bounds are
+// read on `threads` threads (a query of the size field per triangle), the
+// same report for any count.
+void check_mesh_size(const Mesh& mesh, const AreaBound& bound, const std::vector<std::uint32_t>& label, ProblemLog& log,
+                     unsigned threads = 1);
 
-// The triangles below the angle bound are exactly as many as the shortfall counts.
-void check_mesh_angles(const Mesh& mesh, ProblemLog& log);
+// The triangles below the angle bound are exactly as many as the shortfall
+// counts (the angles measured on `threads` threads).
+void check_mesh_angles(const Mesh& mesh, ProblemLog& log, unsigned threads = 1);
 
 }  // namespace madd::detail

@@ -6,11 +6,31 @@
 #include <limits>
 
 #include "kernel/number_format.hpp"
+#include "kernel/threads.hpp"
 #include "quality/area_bound.hpp"
 #include "quality/mesh_angle.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
+
+namespace {
+
+// f(t) for every triangle t of `m`, computed in chunks on `threads`
+// threads; `f(t, hint)` gets a BoundHint of its chunk's own.
+template <typename F>
+std::vector<double> per_triangle(const Mesh& m, unsigned threads, const F& f) {
+  constexpr std::size_t chunk = 2048;
+  const std::size_t n = m.triangles.size();
+  std::vector<double> out(n);
+  for_each_on_threads((n + chunk - 1) / chunk, threads, [&](std::size_t c) {
+    BoundHint hint;  // a subdomain's triangles are numbered together: near each other
+    for (std::size_t t = c * chunk; t < std::min(n, (c + 1) * chunk); ++t)
+      out[t] = f(static_cast<std::uint32_t>(t), hint);
+  });
+  return out;
+}
+
+}  // namespace
 
 // A triangle is too large when twice its area exceeds twice its bound by
 // more than the rounding of both computations of the area, this one and the
@@ -28,18 +48,20 @@ namespace madd::detail {
 //   Both ask the one AreaBound (quality/area_bound.hpp) at triangle_centroid;
 //   a bound that differs by more than this is another bound, not rounding.
 // A region's max_area (> 0) is one more bound on its triangles, the smallest winning.
-void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector<std::uint32_t>& label,
-                     ProblemLog& log) {
+void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector<std::uint32_t>& label, ProblemLog& log,
+                     unsigned threads) {
   const std::vector<Region>& regions = m.decomposition.regions;
   bool regional = false;
   for (const Region& r : regions) regional |= r.max_area > 0;
   if (!bound_at.bounded() && !regional) return;
   constexpr double u = 0x1p-53;
   const auto& P = m.points;
-  BoundHint hint;  // a subdomain's triangles are numbered together: near each other
+  const std::vector<double> at = per_triangle(m, threads, [&](std::uint32_t t, BoundHint& hint) {
+    return bound_at.area_at(triangle_centroid(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]), &hint);
+  });
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    double bound = bound_at.area_at(triangle_centroid(a, b, c), &hint);
+    double bound = at[t];
     if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
       bound = std::min(bound, regions[label[t] - 1].max_area);
     if (!(bound < std::numeric_limits<double>::infinity())) continue;
@@ -55,7 +77,7 @@ void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector
 // The angle measure is smallest_angle_deg (quality/mesh_angle.hpp), the one
 // the mesher's shortfall count must use too; a triangle counts when it is
 // below min_triangle_angle_deg by more than mesh_angle_slack_deg.
-void check_mesh_angles(const Mesh& m, ProblemLog& log) {
+void check_mesh_angles(const Mesh& m, ProblemLog& log, unsigned threads) {
   const double below = m.min_triangle_angle_deg - mesh_angle_slack_deg;
   std::size_t count = 0;
   double worst = std::numeric_limits<double>::infinity();
@@ -65,8 +87,11 @@ void check_mesh_angles(const Mesh& m, ProblemLog& log) {
   // No angle is below a bound <= 0 (a mesh with no angle bound): then the
   // angles are only measured to name the worst triangle of a wrong count.
   if (below > 0.0 || claimed > 0) {
+    const std::vector<double> angles = per_triangle(m, threads, [&](std::uint32_t t, BoundHint&) {
+      return smallest_angle_deg(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]);
+    });
     for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-      const double angle = smallest_angle_deg(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]);
+      const double angle = angles[t];
       if (angle < below) ++count;
       if (angle < worst) {
         worst = angle;
