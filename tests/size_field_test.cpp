@@ -121,6 +121,24 @@ double triangle_gradient(const madd::detail::SizeBackground& bg, std::size_t t) 
   return std::hypot((a1 * e2.y - a2 * e1.y) / det, (a2 * e1.x - a1 * e2.x) / det);
 }
 
+// A 20 x 12 sea with one island, and a field with every term, for the
+// reading's own properties (threads, hints).
+Pslg sea_with_island() {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
+  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
+  sea.holes = {{6.5, 5.5}};
+  madd::validate(sea);
+  return sea;
+}
+
+MeshSizeOptions every_term() {
+  MeshSizeOptions size = distance_field(0.04, 0.15, 1.5);
+  size.cells_across = 3.0;
+  size.size_gradation = 0.2;
+  return size;
+}
+
 }  // namespace
 
 TEST_SUITE("size field") {
@@ -415,15 +433,8 @@ TEST_CASE("feature size: a channel of width W gets h <= W / R along it") {
 }
 
 TEST_CASE("edge_at: the same from several threads at once as from one") {
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
-  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
-  sea.holes = {{6.5, 5.5}};
-  madd::validate(sea);
-  MeshSizeOptions size = distance_field(0.04, 0.15, 1.5);
-  size.cells_across = 3.0;
-  size.size_gradation = 0.2;
-  const SizeField field(sea, size);
+  const Pslg sea = sea_with_island();
+  const SizeField field(sea, every_term());
   const std::vector<Point> probes = random_inside(sea, {0, 0}, {20, 12}, 20000, 37);
   std::vector<double> alone(probes.size());
   for (std::size_t i = 0; i < probes.size(); ++i) alone[i] = field.edge_at(probes[i]);
@@ -448,15 +459,8 @@ TEST_CASE("edge_at: the same from several threads at once as from one") {
 // the background's edges and corners, where two or more triangles hold the
 // point and the lowest-numbered one is read (brute force over them all).
 TEST_CASE("edge_at: the same with a walk hint as without, on edges and corners too") {
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
-  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
-  sea.holes = {{6.5, 5.5}};
-  madd::validate(sea);
-  MeshSizeOptions size = distance_field(0.04, 0.15, 1.5);
-  size.cells_across = 3.0;
-  size.size_gradation = 0.2;
-  const SizeField field(sea, size);
+  const Pslg sea = sea_with_island();
+  const SizeField field(sea, every_term());
   const madd::detail::SizeBackground& bg = field.background();
   std::vector<Point> probes = random_inside(sea, {0, 0}, {20, 12}, 5000, 41);
   std::size_t on_edges = 0;
