@@ -35,6 +35,15 @@ Pslg ring(const std::vector<Point>& pts) {
   return p;
 }
 
+// The unit square, each corner moved by up to 8% of the side: an X-shaped medial axis.
+Pslg near_square(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
+  return ring({{0 + jitter(rng), 0 + jitter(rng)},
+               {1 + jitter(rng), 0 + jitter(rng)},
+               {1 + jitter(rng), 1 + jitter(rng)},
+               {0 + jitter(rng), 1 + jitter(rng)}});
+}
+
 madd::Metrics checked(const Pslg& domain, std::uint32_t n, double min_angle = 60.0) {
   return madd::test::checked_decomposition(domain, n, min_angle);
 }
@@ -47,13 +56,9 @@ TEST_CASE("near-square quadrilaterals split in two nearly equal halves") {
   // Corners jittered by up to 8% of the side: every one is an X-shaped medial
   // axis, and a chord between two opposite sides balances it within a few percent.
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
   for (int k = 0; k < 20; ++k) {
     CAPTURE(k);
-    const Pslg quad = ring({{0 + jitter(rng), 0 + jitter(rng)},
-                            {1 + jitter(rng), 0 + jitter(rng)},
-                            {1 + jitter(rng), 1 + jitter(rng)},
-                            {0 + jitter(rng), 1 + jitter(rng)}});
+    const Pslg quad = near_square(rng);
     const madd::Metrics m = checked(quad, 2);
     CHECK(m.max_area_over_mean <= 1.06);
   }
@@ -65,7 +70,6 @@ TEST_CASE("near-square quadrilaterals split in two nearly equal halves") {
 // here by a point-in-polygon test of its own.
 TEST_CASE("near-square quadrilaterals graded by weight samples split in two nearly equal weights") {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
   std::vector<madd::ValuedPoint> samples;
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 40; ++j) {
@@ -74,10 +78,7 @@ TEST_CASE("near-square quadrilaterals graded by weight samples split in two near
     }
   for (int k = 0; k < 12; ++k) {
     CAPTURE(k);
-    const Pslg quad = ring({{0 + jitter(rng), 0 + jitter(rng)},
-                            {1 + jitter(rng), 0 + jitter(rng)},
-                            {1 + jitter(rng), 1 + jitter(rng)},
-                            {0 + jitter(rng), 1 + jitter(rng)}});
+    const Pslg quad = near_square(rng);
     madd::DecomposeOptions options;
     options.subdomains = 2;
     options.threads = 1;
@@ -138,13 +139,10 @@ TEST_CASE("the chord fallback keeps clear of a spike's tip a hair from the halvi
 // ring, keeps off every island, and counts each island's area on its side.
 TEST_CASE("near-square quadrilaterals with an island split in two nearly equal areas") {
   std::mt19937_64 rng(13);
-  std::uniform_real_distribution<double> jitter(-0.08, 0.08), place(0.15, 0.7);
+  std::uniform_real_distribution<double> place(0.15, 0.7);
   for (int k = 0; k < 12; ++k) {
     CAPTURE(k);
-    Pslg quad = ring({{0 + jitter(rng), 0 + jitter(rng)},
-                      {1 + jitter(rng), 0 + jitter(rng)},
-                      {1 + jitter(rng), 1 + jitter(rng)},
-                      {0 + jitter(rng), 1 + jitter(rng)}});
+    Pslg quad = near_square(rng);
     const Point at{place(rng), place(rng)};  // a speck of an island, 0.03 x 0.02, anywhere but at the edges
     const auto first = static_cast<std::uint32_t>(quad.points.size());
     for (const Point corner : {Point{0, 0}, Point{0, 0.02}, Point{0.03, 0.02}, Point{0.03, 0}})
