@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "madd/decomposition.hpp"
 #include "madd/metrics.hpp"
+#include "madd/poly_io.hpp"
 
 namespace {
 
@@ -236,3 +238,53 @@ TEST_CASE("graded output is identical for 1 and 2 threads") {
 }
 
 }  // TEST_SUITE("grading")
+
+// DecomposeOptions::face_work: in a run graded by weight samples, the repair
+// balances what it says, not the samples (madd mesh sets it to each face's
+// expected triangles). A face_work that calls every face equal leaves
+// nothing to repair; each face it is given is that face as a domain of its
+// own, separators marked 0 and the boundary 1, its area that of a face.
+TEST_CASE("face_work: the repair balances it, reading each face as a domain of its own") {
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/comb.poly");
+  madd::DecomposeOptions o;
+  o.subdomains = 16;
+  o.threads = 1;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j)
+      o.weight_samples.push_back({{(i + 0.5) * 11.8 / 60.0, -12.0 + (j + 0.5) * 13.0 / 60.0}, 1.0 + i / 60.0});
+  o.gradation = 100.0;
+  o.repair_balance_above = 1.05;
+  madd::DecomposeOptions off = o;
+  off.repair_balance_above = 0.0;
+  const Decomposition unrepaired = madd::decompose(domain, off);
+  REQUIRE(madd::decompose(domain, o) != unrepaired);  // the samples' repair changes something here
+  madd::DecomposeOptions flat = o;
+  std::vector<Pslg> faces;
+  flat.face_work = [&](const Pslg& face) {
+    faces.push_back(face);
+    return 1.0;
+  };
+  CHECK(madd::decompose(domain, flat) == unrepaired);
+  REQUIRE(faces.size() == 16);  // each face read once
+  // The faces tile the domain; the pieces marked as boundary add up to its
+  // boundary, each piece in one face (the separators, marked 0, in two).
+  const auto length = [](const Pslg& p, bool boundary) {
+    double total = 0.0;
+    for (const madd::Segment& s : p.segments)
+      if ((s.marker != 0) == boundary)
+        total += std::hypot(p.points[s.b].x - p.points[s.a].x, p.points[s.b].y - p.points[s.a].y);
+    return total;
+  };
+  double area = 0.0, boundary = 0.0, separators = 0.0;
+  for (const Pslg& face : faces) {
+    CHECK_NOTHROW(madd::validate(face));
+    area += madd::domain_area(face);
+    boundary += length(face, true);
+    separators += length(face, false);
+  }
+  Pslg unmarked = domain;
+  for (madd::Segment& s : unmarked.segments) s.marker = 1;
+  CHECK(area == doctest::Approx(madd::domain_area(domain)).epsilon(1e-9));
+  CHECK(boundary == doctest::Approx(length(unmarked, true)).epsilon(1e-9));
+  CHECK(separators == doctest::Approx(2.0 * madd::metrics(unrepaired).separator_length).epsilon(1e-9));
+}

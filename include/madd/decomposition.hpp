@@ -49,6 +49,13 @@ struct DecomposeOptions {
   // graded by weight samples (on the weights); not other graded runs, nor a
   // required area.
   double repair_balance_above = 1.2;
+  // What the repair balances in a run graded by weight samples, when set: the
+  // work of a face, given as a domain of its own (its rings; separators with
+  // marker 0, boundary pieces with their input marker or 1; a hole point per
+  // hole; interior segments left out). Read once per face. madd mesh sets it
+  // to the face's expected triangle count, which the samples only
+  // approximate (docs/mesh.md, "Balance by work"). Unset: the samples.
+  std::function<double(const Pslg& face)> face_work;
 
   // Graded decomposition (Sec. 5.2). A subdomain's density weight is
   // boundary_refinement * area + gradation * weight, where weight comes from,

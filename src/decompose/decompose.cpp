@@ -4,7 +4,9 @@
 // (decompose/scheduler.hpp), so the output is identical for any thread count.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <thread>
+#include <unordered_map>
 
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
@@ -31,6 +33,31 @@ void check_new_angles(const Subdivision& sub, double separator_angle_deg);
 namespace {
 
 using detail::Subdivision;
+
+// Face f of `sub` as a domain of its own, as DecomposeOptions::face_work reads it.
+Pslg face_domain(const Subdivision& sub, std::uint32_t f) {
+  Pslg out;
+  out.first_index = 0;
+  out.has_segment_markers = true;
+  std::unordered_map<std::uint32_t, std::uint32_t> local;
+  const auto id = [&](std::uint32_t v) {
+    const auto [it, fresh] = local.try_emplace(v, static_cast<std::uint32_t>(out.points.size()));
+    if (fresh) out.points.push_back(sub.points[v]);
+    return it->second;
+  };
+  const detail::Face& face = sub.faces[f];
+  for (std::size_t r = 0; r < face.rings.size(); ++r) {
+    const auto& ring = face.rings[r];
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const std::uint32_t seg = face.ring_segments[r][k];
+      const int marker =
+          sub.origin[seg] == no_index ? 0 : (sub.segments[seg].marker != 0 ? sub.segments[seg].marker : 1);
+      out.segments.push_back({id(ring[k]), id(ring[(k + 1) % ring.size()]), marker});
+    }
+    if (r > 0) out.holes.push_back(sub.hole_point(f, r));
+  }
+  return out;
+}
 
 unsigned thread_count(const DecomposeOptions& options, std::size_t tasks) {
   unsigned n = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -170,9 +197,22 @@ DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions&
     // Background weights (madd mesh balances expected triangles this way):
     // the same repair, on the graded weights.
     detail::Stopwatch clock;
+    // options.face_work, when set, once per face (by its rings: the repair
+    // reads every face again after each repair, and most are unchanged).
+    std::map<std::vector<std::uint32_t>, double> work_of;
+    const auto weight = [&](const detail::Subdivision& s, std::uint32_t f) {
+      if (!options.face_work) return grading.weight_from_scratch(s, f);
+      std::vector<std::uint32_t> key;
+      for (const auto& ring : s.faces[f].rings) {
+        key.insert(key.end(), ring.begin(), ring.end());
+        key.push_back(no_index);
+      }
+      const auto [it, fresh] = work_of.try_emplace(std::move(key), 0.0);
+      if (fresh) it->second = options.face_work(face_domain(s, f));
+      return it->second;
+    };
     const detail::FaceMeasure measure{
-        [&](const detail::Subdivision& s, std::uint32_t f) { return grading.weight_from_scratch(s, f); },
-        [&](const detail::Subdivision& s, std::uint32_t f) { return grading.density_from_scratch(s, f); }};
+        weight, [&](const detail::Subdivision& s, std::uint32_t f) { return grading.density_from_scratch(s, f); }};
     detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above}, measure);
     grading.reassign(sub);
     rebalance_seconds = clock.lap();

@@ -34,8 +34,14 @@ struct DomainWork {
 // one per core), the same for any count.
 std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads = 1);
 
+// The triangles expected in `face` of a decomposition of work.domain, given
+// as DecomposeOptions::face_work gets it: the subdomain estimate above, on
+// the face's rings (no interior segments, no region's finer bound).
+double expected_triangles_of_face(const Pslg& face, const DomainWork& work);
+
 // Sets the decomposition's weights so that it balances expected triangles
-// rather than areas (when the options carry no weights of their own).
+// rather than areas (when the options carry no weights of their own), and
+// the repair to balance each face's expected triangles (face_work).
 void weigh_by_work(DecomposeOptions& options, const DomainWork& work);
 
 // The Steiner points refinement of one subdomain may add before it stops
