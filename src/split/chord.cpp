@@ -135,13 +135,15 @@ double side_area(const FaceDomain& fd, const Ring& ring, std::size_t i, std::siz
 }
 
 // The samples' weight inside the ring from i to j closed by a chord (i = 0,
-// j = n: the whole ring), and the holes' area there.
+// j = n: the whole ring).
 double samples_inside(const Ring& ring, const ChordOptions& o, std::size_t i, std::size_t j) {
   double inside = 0.0;
   for (std::size_t s = 0; s < ring.samples; ++s)
     if (inside_side0(ring, s, i, j)) inside += o.samples[s].value;
   return inside;
 }
+
+// The holes' area there.
 double holes_inside(const Ring& ring, std::size_t i, std::size_t j) {
   double area = 0.0;
   for (std::size_t h = 0; h < ring.holes.size(); ++h)
