@@ -4,6 +4,7 @@
 // (decompose/scheduler.hpp), so the output is identical for any thread count.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <thread>
 #include <unordered_map>
@@ -197,15 +198,17 @@ DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions&
     // Background weights (madd mesh balances expected triangles this way):
     // the same repair, on the graded weights.
     detail::Stopwatch clock;
-    // options.face_work, when set, once per face (by its rings: the repair
-    // reads every face again after each repair, and most are unchanged).
-    std::map<std::vector<std::uint32_t>, double> work_of;
+    // options.face_work, when set, once per face (by its rings' points: the
+    // repair reads every face again after each repair, and most are
+    // unchanged; the repairs it tries number new points alike in their
+    // copies, so ids alone could name two faces).
+    std::map<std::vector<double>, double> work_of;
     const auto weight = [&](const detail::Subdivision& s, std::uint32_t f) {
       if (!options.face_work) return grading.weight_from_scratch(s, f);
-      std::vector<std::uint32_t> key;
+      std::vector<double> key;
       for (const auto& ring : s.faces[f].rings) {
-        key.insert(key.end(), ring.begin(), ring.end());
-        key.push_back(no_index);
+        for (const std::uint32_t v : ring) key.insert(key.end(), {s.points[v].x, s.points[v].y});
+        key.push_back(std::numeric_limits<double>::infinity());  // between rings
       }
       const auto [it, fresh] = work_of.try_emplace(std::move(key), 0.0);
       if (fresh) it->second = options.face_work(face_domain(s, f));
