@@ -407,7 +407,11 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
   if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
   const std::size_t columns = (options.sample_weight > 0.0 ? options.samples.size() : 0) + ring.holes.size();
   if (columns > 0) {
-    if (columns * (ring.at.size() + 1) > max_chord_sample_table) return std::nullopt;
+    // The table, and the pairs' passes over it (at most n^2 / 2 of `columns` each).
+    const double n = static_cast<double>(ring.at.size());
+    if (columns * (ring.at.size() + 1) > max_chord_sample_table ||
+        static_cast<double>(columns) * n * n > max_chord_sample_work)
+      return std::nullopt;
     add_turns(fd, options, ring);
   }
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);

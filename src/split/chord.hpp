@@ -45,6 +45,9 @@ struct ChordOptions {
 // not searched (the last levels' faces of a coastline at N = 64 hold 60-200
 // samples on at most 1500 ring points).
 inline constexpr std::size_t max_chord_sample_table = std::size_t{1} << 20;
+// ... nor those whose pairs would read more than this of it in all (ring
+// points^2 x columns: 200 columns on 1600 points, about half a second).
+inline constexpr double max_chord_sample_work = 0x1p29;
 
 // A chord found on face `fd` (the refined boundary of a face whose rings
 // are simple and apart: no point where a ring passes twice or two rings
