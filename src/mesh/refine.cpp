@@ -70,6 +70,9 @@ public:
       : m_(mesh), settings_(settings), label_area_(label_area) {
     const double theta = settings.min_triangle_angle_deg * std::numbers::pi / 180.0;
     beta_ = theta > 0 ? 1.0 / (2.0 * std::sin(theta)) : std::numeric_limits<double>::infinity();
+    // One bound everywhere (or none): read once, no per-triangle cache.
+    if (!settings.size) one_bound_ = std::numeric_limits<double>::infinity();
+    else if (settings.size->uniform()) one_bound_ = settings.size->area_at({0.0, 0.0});
     find_sharp_corners();
   }
 
@@ -118,7 +121,8 @@ private:
   // when taken from the queue and when split, and a skinny one needs no size
   // (a quarter of those made on a graded coast; the bound's query is a third
   // of a graded refinement's time).
-  mutable std::vector<double> size_bound_;
+  mutable std::vector<double> size_bound_;                       // only under a varying bound
+  double one_bound_ = std::numeric_limits<double>::quiet_NaN();  // the bound, when it is one value everywhere
   std::vector<std::uint32_t> blocker_;       // per slot: with Reason::separator, the separator segment in the way
   std::unordered_set<std::uint64_t> stuck_;  // subsegments whose split failed (precision)
   std::size_t steiner_ = 0;
@@ -236,7 +240,7 @@ bool Refiner::too_skinny(const TriangleShape& s) const {
 // the smaller wins.
 bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b, Point c) const {
   if (s.area > label_area_[m_.label(t)]) return true;
-  if (!settings_.size) return false;
+  if (!std::isnan(one_bound_)) return s.area > one_bound_;
   if (std::isnan(size_bound_[t])) size_bound_[t] = settings_.size->area_at(triangle_centroid(a, b, c), &bound_hint_);
   return s.area > size_bound_[t];
 }
@@ -379,10 +383,10 @@ void Refiner::queue_fresh() {
       queued_generation_.resize(generation_.size(), std::numeric_limits<std::uint32_t>::max());
       reason_.resize(generation_.size(), Reason::none);
       blocker_.resize(generation_.size(), no_index);
-      size_bound_.resize(generation_.size());
+      if (std::isnan(one_bound_)) size_bound_.resize(generation_.size());
     }
     ++generation_[t];
-    size_bound_[t] = std::numeric_limits<double>::quiet_NaN();
+    if (std::isnan(one_bound_)) size_bound_[t] = std::numeric_limits<double>::quiet_NaN();
     reason_[t] = Reason::none;
     for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) check_encroached_by_apex(h);
     if (is_bad(t)) {
