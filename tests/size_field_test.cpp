@@ -323,6 +323,45 @@ TEST_CASE("distance: graded below its rate, the lowered linear term still never 
   CHECK(field.report().floored_points == 0);
 }
 
+TEST_CASE("coast points read the water's field: hmin on every ring, not the land's linear part") {
+  // A point on the coast is on an inside and an outside triangle of the
+  // background; the outside one carries only the linear part (hmax here).
+  // The decoupling samples its segments there: reading hmax at a separator's
+  // end on the coast made its first piece 45 x too long for the triangles
+  // beside it, and refinement then stopped at it.
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
+  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
+  sea.holes = {{5, 4}};
+  madd::validate(sea);
+  MeshSizeOptions size = distance_field(0.02, 0.15, 1.5);
+  size.size_gradation = 0.2;
+  const SizeField field(sea, size);
+  std::size_t probes = 0, above = 0;
+  for (const madd::Segment& s : sea.segments)
+    for (int k = 0; k <= 64; ++k) {
+      const Point p = madd::lerp(sea.points[s.a], sea.points[s.b], k / 64.0);
+      ++probes;
+      above += field.edge_at(p) > 0.02;
+    }
+  CHECK(probes == 8 * 65);
+  CHECK(above == 0);
+  // A rounding off the coast onto the land, on the island and beyond the
+  // hull: within the exact term of the water's edge.
+  for (const Point p : {Point{4.0 + 1e-15, 4.0}, Point{5.0, 5.0 - 1e-15}, Point{3.0, -1e-15}, Point{12.0 + 1e-14, 7.0},
+                        Point{7.0, 8.0 + 1e-14}})
+    above += field.edge_at(p) > 0.02 * (1.0 + 1e-9);
+  CHECK(above == 0);
+  // The background's own points on the coast too (its quadtree points are
+  // on no ring; its coast vertices are the rings').
+  const auto& bg = field.background();
+  std::size_t on_coast = 0;
+  for (std::size_t v = 0; v < bg.points.size(); ++v)
+    if (coast_distance(sea, bg.points[v]) == 0.0) ++on_coast, above += field.edge_at(bg.points[v]) > 0.02;
+  CHECK(on_coast >= 8);
+  CHECK(above == 0);
+}
+
 TEST_CASE("gradation: with the exact distance term, visible pairs within the rate") {
   Pslg sea;
   add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});

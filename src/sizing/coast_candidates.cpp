@@ -61,12 +61,22 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     const Point ab = e[1] - e[0];
     pieces_.push_back({e[0], ab, 1.0 / dot(ab, ab)});  // pieces have length > 0 (validate)
   }
+  // The inside triangles and the outside ones with a corner on them: a
+  // point on the coast, or a rounding off it on the land (the decoupling's
+  // split points, a separator's end), then reads hmin + G d there too, the
+  // same as from the water beside it. The linear part alone, which the land
+  // does not grade, read hmax at a separator's end on the coast (its first
+  // piece 45 x too long for the triangles beside it).
+  std::vector<std::uint8_t> by_water(bg.points.size(), 0);
+  for (std::uint32_t t = 0; t < n; ++t)
+    if (bg.inside[t] != 0)
+      for (const std::uint32_t v : bg.triangles[t]) by_water[v] = 1;
   start_.assign(std::size_t{n} + 1, 0);
   std::vector<std::uint32_t> near;
   for (std::uint32_t t = 0; t < n; ++t) {
     start_[t] = static_cast<std::uint32_t>(piece_.size());
-    if (bg.inside[t] == 0) continue;
     const auto& v = bg.triangles[t];
+    if (bg.inside[t] == 0 && by_water[v[0]] + by_water[v[1]] + by_water[v[2]] == 0) continue;
     const TriangleBound bound = triangle_bound(bg, samples, t);
     double reach = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {

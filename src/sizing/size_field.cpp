@@ -110,7 +110,8 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   background_.edge = other_terms(background_, built.samples);
   if (exact) {
     exact_ = CoastCandidates(background_, built.samples, coast);
-    report_.exact_triangles = exact_.exact_triangles();
+    for (std::uint32_t t = 0; t < background_.triangles.size(); ++t)
+      report_.exact_triangles += background_.inside[t] != 0 && exact_.exact(t) ? 1 : 0;
     report_.coast_candidates = exact_.candidates();
   } else if (rate_ > 0.0) {
     lower_to_safe_distance(built.samples);
@@ -154,7 +155,9 @@ double SizeField::edge_at(Point p, WalkHint* hint) const {
   // (to 0.53 hmin on the bundled archipelago at hmin = extent / 1000). hmin
   // is the exact term at distance 0, so the field stays below that term.
   const double h = std::max(interpolate(view(), graded_, at, p), exact_term(0.0));
-  if (!at.inside || !exact_.exact(at.triangle)) return h;
+  // Beyond the hull (a rounding off a coast on it), the triangle the walk
+  // stopped in: its coast pieces are those near p.
+  if (at.triangle == no_index || !exact_.exact(at.triangle)) return h;
   return std::min(h, exact_term(exact_.distance(at.triangle, p)));
 }
 

@@ -21,7 +21,7 @@ namespace madd::detail {
 struct SizeFieldReport {
   std::size_t steiner_points = 0;  // quadtree points of the background
   std::size_t inside_triangles = 0;
-  std::size_t exact_triangles = 0;   // reading the exact distance (coast_candidates.hpp)
+  std::size_t exact_triangles = 0;   // inside ones reading the exact distance (coast_candidates.hpp)
   std::size_t coast_candidates = 0;  // coast pieces kept by them, in all
   std::size_t floored_points = 0;    // distance values the safety bound would take to <= 0 (see size_field.cpp)
   std::size_t gradation_pops = 0;
