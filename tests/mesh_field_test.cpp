@@ -11,7 +11,10 @@
 
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
+#include "madd/decomposition.hpp"
 #include "mesh/narrow_gaps.hpp"
+#include "mesh/refine.hpp"
+#include "quality/area_bound.hpp"
 #include "sizing/edge_length.hpp"
 
 namespace {
@@ -96,6 +99,60 @@ TEST_CASE("the channel is meshed at least R triangles across every cross-section
   o.size.cells_across = 0;
   const int without_term = fewest_across_channel(madd::mesh(channel_domain(), o));
   CHECK(without_term < 3);
+}
+
+TEST_CASE("reading most bounds from a neighbour's query makes the same mesh as querying every triangle") {
+  // A graded field is G-Lipschitz along paths in the domain, so the mesher
+  // decides most triangles from the last query of the same fan
+  // (Refiner::bound_of); that must change no decision.
+  const madd::Pslg domain = channel_domain();
+  const madd::MeshOptions o = field_options(1);
+  const madd::detail::AreaBound bound(o.size, &domain);
+  REQUIRE(bound.edge_slope() == 0.2);
+  madd::detail::RefineSettings settings;
+  settings.size = &bound;
+  const std::vector<bool> splittable(domain.segments.size(), true);
+  const madd::detail::SubdomainMesh read = madd::detail::refine_subdomain(domain, splittable, settings);
+  settings.bounds_from_neighbours = false;
+  const madd::detail::SubdomainMesh queried = madd::detail::refine_subdomain(domain, splittable, settings);
+  REQUIRE(read.triangles.size() > 5000);
+  CHECK(read.points == queried.points);
+  CHECK(read.triangles == queried.triangles);
+}
+
+TEST_CASE("separator pieces under a graded field: no triangle bad by its size can encroach one") {
+  // A triangle whose circumcentre encroaches a piece of length L has
+  // circumradius <= L / sqrt(2) and area <= 3 sqrt(3) / 8 L^2; it is bad by
+  // size only if that is above the bound at its centroid, which lies within
+  // L / sqrt(2) + L / 2 of the piece's midpoint. So L <= sqrt(8 / (3 sqrt(3)))
+  // sqrt(A(c)) for every such c keeps the decoupling (docs/mesh.md); the
+  // pieces were sized from A on the piece itself, where the field is up to
+  // G x 1.21 L larger.
+  const madd::Pslg domain = channel_domain();
+  madd::MeshOptions o = field_options(2);
+  o.decomposition.subdomains = 16;
+  const madd::Decomposition d = madd::discretise(madd::decompose(domain, o.decomposition), domain, o.size);
+  const madd::detail::AreaBound bound(o.size, &domain);
+  std::size_t pieces = 0, probes = 0, encroachable = 0;
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
+    if (!d.is_separator(j)) continue;
+    ++pieces;
+    const madd::Point a = d.points[d.segments[j].a], b = d.points[d.segments[j].b];
+    const double length = madd::distance(a, b);
+    const madd::Point m = madd::midpoint(a, b), along = (1.0 / length) * (b - a), across{-along.y, along.x};
+    for (int i = -4; i <= 4; ++i)
+      for (int k = -4; k <= 4; ++k) {
+        const madd::Point c = m + (0.3 * i * length) * along + (0.3 * k * length) * across;
+        if (madd::distance(c, m) > 1.21 * length || c.x <= 0 || c.y <= 0 || c.y >= 10 ||
+            (c.x >= 10 && (c.y <= 4.875 || c.y >= 5.125)) || c.x >= 18)
+          continue;
+        ++probes;
+        encroachable += length > 1.2408 * std::sqrt(bound.area_at(c));
+      }
+  }
+  MESSAGE(pieces, " separator pieces, ", probes, " centroids");
+  REQUIRE(pieces > 50);
+  CHECK(encroachable == 0);
 }
 
 TEST_CASE("the same mesh on one thread and on three") {

@@ -43,7 +43,7 @@ double local_target(Point p, const Segment& s, const AreaBound& size, const Feat
   double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
     const double area = size.area_at(p);
-    if (std::isfinite(area)) h = std::min(h, size_factor * std::sqrt(area));
+    if (std::isfinite(area)) h = std::min(h, size_factor / (1.0 + size.edge_slope()) * std::sqrt(area));
   }
   if (std::isfinite(regional)) h = std::min(h, size_factor * std::sqrt(regional));
   return h;

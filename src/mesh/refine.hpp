@@ -27,6 +27,10 @@ struct RefineSettings {
   // run's time or memory limit (nullptr = none).
   const ResourceGuard* guard = nullptr;
   const std::atomic<std::uint32_t>* meshed = nullptr;  // subdomains done so far, for the limit's message
+  // Under a graded field, read most triangles' bounds from a neighbour's
+  // query (refine.cpp, Refiner::bound_of): the same mesh, fewer queries.
+  // Off only to show that it changes nothing (tests).
+  bool bounds_from_neighbours = true;
 };
 
 // A subdomain mesh in local numbering: the input's points first, same

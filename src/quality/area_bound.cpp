@@ -38,7 +38,14 @@ double constant_bound(const MeshSizeOptions& size) {
 
 AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain)
     : size_(size), constant_(constant_bound(size)), samples_(size.triangle_area_samples, size.sample_interpolation),
-      field_(domain ? SizeField(*domain, size) : no_field(size)) {}
+      field_(domain ? SizeField(*domain, size) : no_field(size)) {
+  if (!field_.empty() && !size.triangle_area_function && size.triangle_area_samples.empty())
+    edge_slope_ = size.size_gradation;
+}
+
+double AreaBound::area_of_field_edge(double h) const noexcept {
+  return h > 0.0 ? std::min(constant_, area_of_edge(h)) : constant_;
+}
 
 bool AreaBound::uniform() const noexcept {
   return !size_.triangle_area_function && size_.triangle_area_samples.empty() && field_.empty();
@@ -55,10 +62,7 @@ double AreaBound::area_at(Point p, BoundHint* hint) const {
         samples_.area_at(p, hint != nullptr ? &hint->samples : nullptr);  // +infinity where the samples set no bound
     if (v > 0.0) bound = std::min(bound, v);
   }
-  if (!field_.empty()) {
-    const double h = field_.edge_at(p, hint != nullptr ? &hint->field : nullptr);
-    if (h > 0.0) bound = std::min(bound, area_of_edge(h));
-  }
+  if (!field_.empty()) bound = std::min(bound, area_of_field_edge(field_edge_at(p, hint)));
   return bound;
 }
 

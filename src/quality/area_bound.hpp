@@ -40,11 +40,27 @@ public:
   // The size field (empty when no field term is set).
   const SizeField& field() const noexcept { return field_; }
 
+  // When the bound is min(c, area_of_edge(h(x))), c a constant and h the
+  // field's edge length, limited to a gradation L (--gradation): L, else 0.
+  // Then |h(x) - h(y)| <= L times the length of any path from x to y in the
+  // domain (sizing/gradation.hpp: the field is L-Lipschitz on each of its
+  // triangles and continuous; the exact distance term's rate is at most L,
+  // sizing/size_field.cpp), so one query near x bounds h(x) from both sides: the
+  // mesher reads the bound of most triangles from a neighbour's
+  // (mesh/refine.cpp, Refiner::bound_of).
+  double edge_slope() const noexcept { return edge_slope_; }
+  // h(p), when edge_slope() > 0; area_at(p) = area_of_field_edge(field_edge_at(p)).
+  double field_edge_at(Point p, BoundHint* hint = nullptr) const {
+    return field_.edge_at(p, hint != nullptr ? &hint->field : nullptr);
+  }
+  double area_of_field_edge(double h) const noexcept;
+
 private:
   const MeshSizeOptions& size_;
   double constant_;  // the smallest of max_triangle_area and hmax's area (+infinity: neither)
   SampleInterpolant samples_;
   SizeField field_;
+  double edge_slope_ = 0.0;
 };
 
 }  // namespace madd::detail
