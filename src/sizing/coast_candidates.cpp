@@ -53,6 +53,19 @@ void CoastCandidates::prune(const Point (&p)[3], std::vector<std::uint32_t>& nea
   std::sort(near.begin(), near.end());
 }
 
+namespace {
+
+// Per point: the inside triangles with a corner there.
+std::vector<std::vector<std::uint32_t>> inside_triangles_around(const SizeBackground& bg) {
+  std::vector<std::vector<std::uint32_t>> out(bg.points.size());
+  for (std::uint32_t t = 0; t < bg.triangles.size(); ++t)
+    if (bg.inside[t] != 0)
+      for (const std::uint32_t v : bg.triangles[t]) out[v].push_back(t);
+  return out;
+}
+
+}  // namespace
+
 CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSample> samples, const Coast& coast) {
   const auto n = static_cast<std::uint32_t>(bg.triangles.size());
   for (std::uint32_t s = 0; s < coast.coast_index.size(); ++s) {
@@ -61,22 +74,14 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     const Point ab = e[1] - e[0];
     pieces_.push_back({e[0], ab, 1.0 / dot(ab, ab)});  // pieces have length > 0 (validate)
   }
-  // The inside triangles and the outside ones with a corner on them: a
-  // point on the coast, or a rounding off it on the land (the decoupling's
-  // split points, a separator's end), then reads hmin + G d there too, the
-  // same as from the water beside it. The linear part alone, which the land
-  // does not grade, read hmax at a separator's end on the coast (its first
-  // piece 45 x too long for the triangles beside it).
-  std::vector<std::uint8_t> by_water(bg.points.size(), 0);
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (bg.inside[t] != 0)
-      for (const std::uint32_t v : bg.triangles[t]) by_water[v] = 1;
-  start_.assign(std::size_t{n} + 1, 0);
+  // The inside triangles' lists (pass 1), then the outside ones' with a
+  // corner on an inside triangle (pass 2).
+  std::vector<std::uint32_t> first(std::size_t{n} + 1, 0), pieces;
   std::vector<std::uint32_t> near;
   for (std::uint32_t t = 0; t < n; ++t) {
-    start_[t] = static_cast<std::uint32_t>(piece_.size());
+    first[t] = static_cast<std::uint32_t>(pieces.size());
+    if (bg.inside[t] == 0) continue;
     const auto& v = bg.triangles[t];
-    if (bg.inside[t] == 0 && by_water[v[0]] + by_water[v[1]] + by_water[v[2]] == 0) continue;
     const TriangleBound bound = triangle_bound(bg, samples, t);
     double reach = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
@@ -90,6 +95,32 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     coast.coast_index.within(bound.centre, radius, ends_.size(), near);
     const Point c[3] = {bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]};
     prune(c, near);
+    pieces.insert(pieces.end(), near.begin(), near.end());
+  }
+  first[n] = static_cast<std::uint32_t>(pieces.size());
+  // An outside triangle with a corner on the water reads the pieces of the
+  // inside triangles around its water corners. A point on the coast, or a
+  // rounding off it onto the land (the decoupling's split points, a
+  // separator's end), is within that rounding e of one of them, and its
+  // distance from their pieces is within 2 e of d: it reads hmin + G d as
+  // from the water beside it. (The linear part alone, which the land does
+  // not grade, read hmax at a separator's end on the coast: its first piece
+  // was 45 x too long for the triangles beside it, and refinement stopped
+  // there.) Deeper in the land the value is of no use and no harm.
+  const std::vector<std::vector<std::uint32_t>> water_around = inside_triangles_around(bg);
+  start_.assign(std::size_t{n} + 1, 0);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    start_[t] = static_cast<std::uint32_t>(piece_.size());
+    if (bg.inside[t] != 0) {
+      piece_.insert(piece_.end(), pieces.begin() + first[t], pieces.begin() + first[t + 1]);
+      continue;
+    }
+    near.clear();
+    for (const std::uint32_t v : bg.triangles[t])
+      for (const std::uint32_t u : water_around[v])
+        near.insert(near.end(), pieces.begin() + first[u], pieces.begin() + first[u + 1]);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
     piece_.insert(piece_.end(), near.begin(), near.end());
   }
   start_[n] = static_cast<std::uint32_t>(piece_.size());

@@ -18,6 +18,12 @@
 // never the nearest in T). (Keeping lists per quarter of T halved a query's
 // pieces, but cost more to build than it saved on the queries a mesh of 20
 // triangles per background triangle makes.)
+//
+// An outside triangle with a corner on the water keeps the pieces of the
+// inside triangles around its water corners: a point on the coast, or a
+// rounding off it onto the land, reads hmin + G d as from the water beside
+// it, not the linear part, which the land does not grade
+// (coast_candidates.cpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
