@@ -11,11 +11,13 @@
 // refer to the same points: the meshes of the two sides meet at identical
 // vertices by construction.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 #include "madd/mesh.hpp"
 #include "kernel/resource_limits.hpp"
+#include "kernel/threads.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
@@ -28,7 +30,7 @@ namespace detail {
 namespace {
 
 // The limits are checked every this many segments, and after a segment
-// that took the split points made since the last check past this many.
+// that took the split points made so far past a multiple of this many.
 constexpr std::uint32_t segments_between_checks = 4096;
 constexpr std::size_t points_between_checks = std::size_t{1} << 18;
 
@@ -38,11 +40,11 @@ constexpr std::size_t points_between_checks = std::size_t{1} << 18;
 // The target length at p on segment j, before grading from the ends;
 // `regional` is the smallest area bound of the regions on j's sides
 // (+infinity for none), one more size bound.
-double local_target(Point p, const Segment& s, const AreaBound& size, const FeatureDistance& features,
-                    double regional) {
+double local_target(Point p, const Segment& s, const AreaBound& size, const FeatureDistance& features, double regional,
+                    BoundHint* hint = nullptr) {
   double h = feature_factor * features.to_nonincident(p, s.a, s.b);
   if (size.bounded()) {
-    const double area = size.area_at(p);
+    const double area = size.area_at(p, hint);
     if (std::isfinite(area)) h = std::min(h, size_factor / (1.0 + size.edge_slope()) * std::sqrt(area));
   }
   if (std::isfinite(regional)) h = std::min(h, size_factor * std::sqrt(regional));
@@ -76,8 +78,9 @@ std::vector<double> split_parameters(const Decomposition& d, std::uint32_t j, co
   const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
   const Point a = d.points[lo], b = d.points[hi];
   const double length = distance(a, b);
+  BoundHint hint;  // the samples come in order along the segment
   const auto target = [&](double t) {
-    const double h = local_target(lerp(a, b, t), s, size, features, regional);
+    const double h = local_target(lerp(a, b, t), s, size, features, regional, &hint);
     if (!graded_from_ends) return h;
     return std::min(h, std::min(at_vertex[lo] + grading * t * length, at_vertex[hi] + grading * (1 - t) * length));
   };
@@ -139,11 +142,11 @@ Decomposition discretise(const Decomposition& decomposition, const Pslg& domain,
                          const DecomposeOptions& limits) {
   const detail::ResourceGuard guard({limits.time_limit_seconds, limits.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  return detail::discretise(decomposition, detail::AreaBound(size, &domain), true, &guard);
+  return detail::discretise(decomposition, detail::AreaBound(size, &domain), true, &guard, limits.threads);
 }
 
 Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field, bool boundary_by_features,
-                                 const ResourceGuard* guard) {
+                                 const ResourceGuard* guard, unsigned threads) {
   // The features every piece resolves: every segment (interior ones too, so
   // that a narrow gap between an interior segment and the shore is resolved)
   // and every isolated input vertex, as a segment of length 0 (the distance
@@ -166,22 +169,27 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
   out.segments.clear();
   out.segment_origin.clear();
   // pieces[j]: the new segments of old segment j, from its lower-index end.
-  std::vector<std::vector<std::uint32_t>> pieces(decomposition.segments.size());
-  std::size_t unchecked = 0;  // split points made since the limits were last checked
-  for (std::uint32_t j = 0; j < decomposition.segments.size(); ++j) {
-    if (guard != nullptr && (unchecked >= points_between_checks || j % segments_between_checks == 0)) {
+  // Each segment's split parameters are its own (the same on any number of
+  // threads); the points are numbered in segment order below.
+  std::vector<std::vector<double>> split(decomposition.segments.size());
+  std::atomic<std::size_t> made{0};  // split points, on all threads
+  detail::for_each_on_threads(split.size(), threads, [&](std::size_t j) {
+    if (guard != nullptr && j % segments_between_checks == 0) guard->check(0);
+    const bool only_separators = !boundary_by_features && !decomposition.is_separator(static_cast<std::uint32_t>(j));
+    split[j] = detail::split_parameters(decomposition, static_cast<std::uint32_t>(j), field,
+                                        only_separators ? separator_features : features, at_vertex, !only_separators,
+                                        regional[j]);
+    const std::size_t before = made.fetch_add(split[j].size());
+    if (guard != nullptr && (before + split[j].size()) / points_between_checks != before / points_between_checks)
       guard->check(0);
-      unchecked = 0;
-    }
+  });
+  std::vector<std::vector<std::uint32_t>> pieces(decomposition.segments.size());
+  for (std::uint32_t j = 0; j < decomposition.segments.size(); ++j) {
     const Segment& s = decomposition.segments[j];
     const std::uint32_t lo = std::min(s.a, s.b), hi = std::max(s.a, s.b);
     std::uint32_t from = lo;
-    const bool only_separators = !boundary_by_features && !decomposition.is_separator(j);
-    for (const double t :
-         detail::split_parameters(decomposition, j, field, only_separators ? separator_features : features, at_vertex,
-                                  !only_separators, regional[j])) {
+    for (const double t : split[j]) {
       const auto v = static_cast<std::uint32_t>(out.points.size());
-      ++unchecked;
       out.points.push_back(lerp(decomposition.points[lo], decomposition.points[hi], t));
       pieces[j].push_back(static_cast<std::uint32_t>(out.segments.size()));
       out.segments.push_back({from, v, s.marker});

@@ -22,8 +22,10 @@ namespace madd::detail {
 // `guard`, when given, is checked as the split points pile up (a size bound
 // far below the segments' lengths asks for millions of points a segment:
 // the time and memory limits must stop that, as they stop refinement).
+// The segments are split on `threads` threads (0: one per core); the result
+// is the same for any number.
 Decomposition discretise(const Decomposition& decomposition, const AreaBound& size, bool boundary_by_features,
-                         const ResourceGuard* guard = nullptr);
+                         const ResourceGuard* guard = nullptr, unsigned threads = 1);
 
 // Rounds of separator splitting after meshing, at most (docs/mesh.md, "Decoupling").
 inline constexpr int max_separator_rounds = 10;

@@ -185,7 +185,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Dom
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  Decomposition d = detail::discretise(decomposition, field, false, &guard);
+  Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
   report.phases.push_back({"discretise", clock.lap()});
   report.expected_triangles = detail::expected_triangles(d, work, options.decomposition.threads);
   std::vector<detail::SubdomainMesh> pieces;

@@ -190,7 +190,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   // no exchange needed.
   const detail::AreaBound field(options.size, &domain);
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
-  Decomposition d = detail::discretise(decomposition, field, false, &guard);
+  Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
   report.phases.push_back({"discretise", clock.lap()});
   report.expected_triangles =
       detail::expected_triangles(d, detail::DomainWork(domain, field), options.decomposition.threads);
