@@ -120,6 +120,30 @@ TEST_CASE("reading most bounds from a neighbour's query makes the same mesh as q
   CHECK(read.triangles == queried.triangles);
 }
 
+TEST_CASE("the least bound (no query below it) is at most the bound everywhere, and 0 when unknown") {
+  const madd::Pslg domain = channel_domain();
+  madd::MeshOptions o = field_options(1);
+  const madd::detail::AreaBound field(o.size, &domain);
+  CHECK(field.least() == doctest::Approx(std::sqrt(3.0) / 4 * 0.02 * 0.02).epsilon(1e-9));
+  std::size_t at_least = 0, probes = 0;
+  for (double x = 0.01; x < 18; x += 0.173)
+    for (double y = 0.01; y < 10; y += 0.0617) {
+      if (x > 10 && (y < 4.875 || y > 5.125)) continue;
+      ++probes;
+      at_least += field.area_at({x, y}) >= field.least();
+    }
+  CHECK(probes > 5000);
+  CHECK(at_least == probes);
+  // Without hmin (a gradation of hmax alone) or with an area function: no floor known.
+  o.size.min_edge_length = 0;
+  o.size.distance_rate = 0;
+  o.size.cells_across = 0;
+  CHECK(madd::detail::AreaBound(o.size, &domain).least() == 0.0);
+  o = field_options(1);
+  o.size.triangle_area_function = [](double, double) { return 1e-9; };
+  CHECK(madd::detail::AreaBound(o.size, &domain).least() == 0.0);
+}
+
 TEST_CASE("separator pieces under a graded field: no triangle bad by its size can encroach one") {
   // A triangle whose circumcentre encroaches a piece of length L has
   // circumradius <= L / sqrt(2) and area <= 3 sqrt(3) / 8 L^2; it is bad by

@@ -264,8 +264,9 @@ bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b,
 // a query (about 60% of a graded coast's triangles at L = 0.2). The margin
 // covers the rounding of the field's value, far below 1e-9.
 double Refiner::bound_of(std::uint32_t t, double area, Point a, Point b, Point c) const {
-  const Point g = triangle_centroid(a, b, c);
   const AreaBound& bound = *settings_.size;
+  if (area <= bound.least()) return bound.least();
+  const Point g = triangle_centroid(a, b, c);
   if (!(bound.edge_slope() > 0.0) || !settings_.bounds_from_neighbours) return bound.area_at(g, &bound_hint_);
   const std::uint32_t v = std::max({m_.corner(t, 0), m_.corner(t, 1), m_.corner(t, 2)});
   if (v == last_query_.vertex) {

@@ -39,8 +39,11 @@ double constant_bound(const MeshSizeOptions& size) {
 AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain)
     : size_(size), constant_(constant_bound(size)), samples_(size.triangle_area_samples, size.sample_interpolation),
       field_(domain ? SizeField(*domain, size) : no_field(size)) {
-  if (!field_.empty() && !size.triangle_area_function && size.triangle_area_samples.empty())
-    edge_slope_ = size.size_gradation;
+  if (!size.triangle_area_function && size.triangle_area_samples.empty()) {
+    const double floor = field_.least_edge();  // 0 without hmin: no floor
+    least_ = field_.empty() ? constant_ : floor > 0.0 ? std::min(constant_, area_of_edge(floor)) : 0.0;
+    if (!field_.empty()) edge_slope_ = size.size_gradation;
+  }
 }
 
 double AreaBound::area_of_field_edge(double h) const noexcept {

@@ -54,6 +54,11 @@ public:
     return field_.edge_at(p, hint != nullptr ? &hint->field : nullptr);
   }
   double area_of_field_edge(double h) const noexcept;
+  // No point's bound is below this (0 when unknown: an area function or
+  // samples vary the bound). The field is hmin or more everywhere
+  // (SizeField::least_edge): a triangle no larger than the equilateral one
+  // of side hmin needs no query (a third of a graded coast's mesh).
+  double least() const noexcept { return least_; }
 
 private:
   const MeshSizeOptions& size_;
@@ -61,6 +66,7 @@ private:
   SampleInterpolant samples_;
   SizeField field_;
   double edge_slope_ = 0.0;
+  double least_ = 0.0;
 };
 
 }  // namespace madd::detail

@@ -56,8 +56,12 @@ void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector
   if (!bound_at.bounded() && !regional) return;
   constexpr double u = 0x1p-53;
   const auto& P = m.points;
+  // A triangle within the least bound anywhere (AreaBound::least) is within
+  // its own: no query (the check below then passes it with that bound).
   const std::vector<double> at = per_triangle(m, threads, [&](std::uint32_t t, BoundHint& hint) {
-    return bound_at.area_at(triangle_centroid(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]), &hint);
+    const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
+    if (0.5 * std::abs(cross(b - a, c - a)) <= bound_at.least()) return bound_at.least();
+    return bound_at.area_at(triangle_centroid(a, b, c), &hint);
   });
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];

@@ -56,6 +56,8 @@ public:
   // part is already below the exact term. Deterministic and thread-safe.
   // `hint`: where the caller's last query ended (triangle_locator.hpp), or null.
   double edge_at(Point p, WalkHint* hint = nullptr) const;
+  // edge_at is never below this (hmin less a hair; 0 without hmin).
+  double least_edge() const noexcept { return exact_term(0.0); }
   const SizeBackground& background() const noexcept { return background_; }
   const SizeFieldReport& report() const noexcept { return report_; }
 
