@@ -187,7 +187,8 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Dom
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, work, options.decomposition.threads);
+  report.expected_triangles = detail::expected_triangles(d, work, options.decomposition.threads, &decomposition);
+  report.phases.push_back({"estimate", clock.lap()});
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };

@@ -193,7 +193,8 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
   report.phases.push_back({"discretise", clock.lap()});
   report.expected_triangles =
-      detail::expected_triangles(d, detail::DomainWork(domain, field), options.decomposition.threads);
+      detail::expected_triangles(d, detail::DomainWork(domain, field), options.decomposition.threads, &decomposition);
+  report.phases.push_back({"estimate", clock.lap()});
 
   part.share = share;
   part.shares = shares;

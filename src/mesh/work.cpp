@@ -277,7 +277,8 @@ DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_)
     gap_excess = excess_of_gaps(triangulation, pieces, size, gaps);
 }
 
-std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads) {
+std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads,
+                                       const Decomposition* before) {
   std::vector<double> out(d.subdomains.size(), 0.0);
   const AreaBound& size = work.size;
   const NarrowGaps& gaps = work.gaps;
@@ -286,12 +287,15 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
   const std::vector<double> excess = gap_excess_by_subdomain(d, work.gap_excess);
   // Each subdomain alone, into its own slot: under a varying bound, the
   // integral over its triangulation is a pass as long as a tenth of its
-  // refinement.
+  // refinement, and, over the decoupled rings (split to the field's size
+  // along a fine coast: fans of slivers, each read), more than a third
+  // (Maine coast, hmin = extent / 2000).
+  const Decomposition& interiors = before != nullptr ? *before : d;
   for_each_on_threads(d.subdomains.size(), threads, [&](std::size_t sub) {
     const Subdomain& s = d.subdomains[sub];
     const double bound = size.area_at(s.interior_point);
     double t = std::isfinite(bound) ? s.area / (kappa * bound) + excess[sub] : 0.0;
-    if (!uniform) t = varying_interior(local_domain(d, static_cast<std::uint32_t>(sub)).pslg, size, gaps);
+    if (!uniform) t = varying_interior(local_domain(interiors, static_cast<std::uint32_t>(sub)).pslg, size, gaps);
     // A face held to a region's finer bound: its triangles at that bound
     // instead (with a varying size bound, on top of the estimate: an upper
     // bound, which is the safer side for the Steiner point budget).

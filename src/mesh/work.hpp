@@ -31,8 +31,13 @@ struct DomainWork {
 
 // Per subdomain of the discretised decomposition `d` of work.domain: the
 // triangles its mesh is expected to have; computed on `threads` threads (0:
-// one per core), the same for any count.
-std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads = 1);
+// one per core), the same for any count. `before`, when given, is `d`
+// before the decoupling split its segments (the same subdomains, their
+// rings without the split points): under a varying bound the interiors are
+// integrated over its rings' triangulations, the boundary layers along d's
+// pieces.
+std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads = 1,
+                                       const Decomposition* before = nullptr);
 
 // The triangles expected in `face` of a decomposition of work.domain, given
 // as DecomposeOptions::face_work gets it: the subdomain estimate above, on
