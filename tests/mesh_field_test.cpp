@@ -14,6 +14,7 @@
 #include "madd/decomposition.hpp"
 #include "mesh/narrow_gaps.hpp"
 #include "mesh/refine.hpp"
+#include "mesh/work.hpp"
 #include "quality/area_bound.hpp"
 #include "sizing/edge_length.hpp"
 
@@ -177,6 +178,42 @@ TEST_CASE("separator pieces under a graded field: no triangle bad by its size ca
   MESSAGE(pieces, " separator pieces, ", probes, " centroids");
   REQUIRE(pieces > 50);
   CHECK(encroachable == 0);
+}
+
+TEST_CASE("the work integral's weights are the same on one thread and on two (chunks concatenated in order)") {
+  // A sea of 30 x 30 islands: the domain's triangulation has several
+  // chunks' worth of triangles (mesh/work.cpp), and far fewer pieces than the
+  // integral's cap of 2^21, past which one thread runs it.
+  madd::Pslg sea;
+  const auto ring = [&](std::vector<madd::Point> corners) {
+    const auto first = static_cast<std::uint32_t>(sea.points.size());
+    for (std::uint32_t k = 0; k < corners.size(); ++k) {
+      sea.points.push_back(corners[k]);
+      sea.segments.push_back({first + k, first + (k + 1) % static_cast<std::uint32_t>(corners.size()), 1});
+    }
+  };
+  ring({{0, 0}, {31, 0}, {31, 31}, {0, 31}});
+  for (int i = 1; i <= 30; ++i)
+    for (int j = 1; j <= 30; ++j) {
+      const double x = i + 0.1 * std::sin(i * j), y = j + 0.1 * std::cos(i + j);
+      ring({{x - 0.2, y - 0.2}, {x + 0.2, y - 0.2}, {x + 0.2, y + 0.2}, {x - 0.2, y + 0.2}});
+      sea.holes.push_back({x, y});
+    }
+  madd::MeshOptions o = field_options(1);
+  o.size.min_edge_length = 0.1;
+  o.size.max_edge_length = 1.0;
+  o.size.cells_across = 0;
+  o.size.coast_markers = {};
+  const madd::detail::AreaBound bound(o.size, &sea);
+  const madd::detail::DomainWork work(sea, bound);
+  REQUIRE(work.triangulation.triangles.size() > 2 * 2048);
+  madd::DecomposeOptions one = o.decomposition, two = o.decomposition;
+  one.threads = 1;
+  two.threads = 2;
+  madd::detail::weigh_by_work(one, work);
+  madd::detail::weigh_by_work(two, work);
+  REQUIRE(one.weight_samples.size() > 100);
+  CHECK(one.weight_samples == two.weight_samples);
 }
 
 TEST_CASE("the same mesh on one thread and on three") {

@@ -16,6 +16,7 @@
 #include "mesh/work.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -183,20 +184,47 @@ void integrate_triangle(Point a, Point b, Point c, Pieces pieces, const WorkBoun
   if (std::isfinite(bound) && bound > 0) samples.push_back({g, triangle_area(a, b, c) / (kappa * bound)});
 }
 
-// Integrates over the triangles of `tri`. A gap is looked for at each
-// triangle's centroid first, and through its pieces only where one binds
-// there: a triangulation's triangles span a channel from bank to bank, and
-// a query per piece (10^5-10^6 of them) cost 8% of a graded run.
-void integrate_triangulation(const Triangulation& tri, Pieces pieces, const AreaBound& size, const NarrowGaps& gaps,
-                             std::vector<ValuedPoint>& samples) {
+// Integrates over triangles [begin, end) of `tri`. A gap is looked for at
+// each triangle's centroid first, and through its pieces only where one
+// binds there: a triangulation's triangles span a channel from bank to
+// bank, and a query per piece (10^5-10^6 of them) cost 8% of a graded run.
+void integrate_triangles(const Triangulation& tri, std::size_t begin, std::size_t end, Pieces pieces,
+                         const AreaBound& size, const NarrowGaps& gaps, std::vector<ValuedPoint>& samples) {
   BoundHint hint;
   const WorkBound plain{size, nullptr, &hint}, with_gaps{size, &gaps, &hint};
-  for (const auto& v : tri.triangles) {
+  for (std::size_t t = begin; t < end; ++t) {
+    const auto& v = tri.triangles[t];
     const Point a = tri.points[v[0]], b = tri.points[v[1]], c = tri.points[v[2]];
     const Point g = triangle_centroid(a, b, c);
     const double bound = size.area_at(g, &hint);
     integrate_triangle(a, b, c, pieces, gaps.area_at(g, bound) < bound ? with_gaps : plain, samples);
   }
+}
+
+// The same over all of `tri`, appended to `samples`, in chunks on `threads`
+// threads, concatenated in order: while the pieces stay below max_pieces
+// (which integrate_triangle counts over all of `samples`) that is the
+// one-thread result exactly; past it the one-thread pass runs instead, so
+// the cap cuts the same pieces for any thread count.
+void integrate_triangulation(const Triangulation& tri, Pieces pieces, const AreaBound& size, const NarrowGaps& gaps,
+                             std::vector<ValuedPoint>& samples, unsigned threads = 1) {
+  constexpr std::size_t chunk = 2048;
+  const std::size_t n = tri.triangles.size(), chunks = (n + chunk - 1) / chunk;
+  if (thread_count(threads, chunks) > 1) {
+    std::vector<std::vector<ValuedPoint>> parts(chunks);
+    std::atomic<std::size_t> made{samples.size()};
+    std::atomic<bool> over{false};
+    for_each_on_threads(chunks, threads, [&](std::size_t k) {
+      if (over.load()) return;
+      integrate_triangles(tri, k * chunk, std::min(n, (k + 1) * chunk), pieces, size, gaps, parts[k]);
+      if (made.fetch_add(parts[k].size()) + parts[k].size() >= max_pieces) over = true;
+    });
+    if (!over.load()) {
+      for (const std::vector<ValuedPoint>& part : parts) samples.insert(samples.end(), part.begin(), part.end());
+      return;
+    }
+  }
+  integrate_triangles(tri, 0, n, pieces, size, gaps, samples);
 }
 
 // What the narrow gaps add under one bound everywhere (whose interior is
@@ -421,7 +449,7 @@ void weigh_by_work(DecomposeOptions& options, const DomainWork& work) {
     // are as fine as the boundary's vertices are dense (where graded fields
     // vary most), its large triangles split (domain_pieces).
     if (const Pieces pieces = domain_pieces(tri); pieces.longest > 0)
-      integrate_triangulation(tri, pieces, size, work.gaps, samples);
+      integrate_triangulation(tri, pieces, size, work.gaps, samples, options.threads);
     double total = 0;
     for (const ValuedPoint& v : samples) total += v.value;
     if (!(total > 0)) return;
