@@ -53,6 +53,16 @@ Pslg square(double side) {
   return p;
 }
 
+// A 12 x 8 sea with a 2 x 2 island, all coast (marker 1).
+Pslg small_sea() {
+  Pslg sea;
+  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
+  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
+  sea.holes = {{5, 4}};
+  madd::validate(sea);
+  return sea;
+}
+
 double segment_distance(Point p, Point a, Point b) {
   const Point ab = b - a;
   const double t = std::clamp(madd::dot(p - a, ab) / madd::dot(ab, ab), 0.0, 1.0);
@@ -329,11 +339,7 @@ TEST_CASE("coast points read the water's field: hmin on every ring, not the land
   // The decoupling samples its segments there: reading hmax at a separator's
   // end on the coast made its first piece 45 x too long for the triangles
   // beside it, and refinement then stopped at it.
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
-  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
-  sea.holes = {{5, 4}};
-  madd::validate(sea);
+  const Pslg sea = small_sea();
   MeshSizeOptions size = distance_field(0.02, 0.15, 1.5);
   size.size_gradation = 0.2;
   const SizeField field(sea, size);
@@ -363,11 +369,7 @@ TEST_CASE("coast points read the water's field: hmin on every ring, not the land
 }
 
 TEST_CASE("gradation: with the exact distance term, visible pairs within the rate") {
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
-  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
-  sea.holes = {{5, 4}};
-  madd::validate(sea);
+  const Pslg sea = small_sea();
   MeshSizeOptions size = distance_field(0.02, 0.15, 1.5);
   size.triangle_area_function = [](double x, double y) { return std::hypot(x - 9.0, y - 2.0) < 1.5 ? 1e-3 : 1.0; };
   size.size_gradation = 0.2;
@@ -395,11 +397,7 @@ TEST_CASE("gradation: with the exact distance term, visible pairs within the rat
 }
 
 TEST_CASE("gradation: every inside triangle and every visible pair within the rate, never raised") {
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
-  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
-  sea.holes = {{5, 4}};
-  madd::validate(sea);
+  const Pslg sea = small_sea();
   // A steep distance term, and an area function with a tiny spot: both need limiting.
   MeshSizeOptions size = distance_field(0.02, 0.6, 1.5);
   // (The background samples the function at its points: the spot is wider than its cells there.)
