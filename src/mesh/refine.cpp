@@ -261,8 +261,10 @@ bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b,
 // new vertex of a cavity's fan): the path from that query's centroid to v
 // and on to g lies in the two triangles, in the domain, so h(g) is within
 // L times its length of h there. Past that band the bound is known without
-// a query (about 60% of a graded coast's triangles at L = 0.2). The margin
-// covers the rounding of the field's value, far below 1e-9.
+// a query (with the floor below, 46% of the bounds a graded coast needs at
+// L = 0.2: 2.7 M on the Maine coast, 1.46 M queried). The margin covers the
+// rounding of the field's value, far below 1e-9. No triangle within
+// AreaBound::least is queried at all.
 double Refiner::bound_of(std::uint32_t t, double area, Point a, Point b, Point c) const {
   const AreaBound& bound = *settings_.size;
   if (area <= bound.least()) return bound.least();

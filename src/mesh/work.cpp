@@ -127,10 +127,9 @@ std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples
 
 // What a varying bound's integral reads: the bound, or the area a narrow
 // gap holds refinement to where that is smaller (narrow_gaps.hpp; null: the
-// bound alone).
-// The pieces of one triangle come one after another, a few triangle sides
-// apart: each query starts where the last one ended (a walk from the grid
-// cost a tenth of a graded decomposition).
+// bound alone). The pieces of one triangle come one after another, a few
+// triangle sides apart: each query starts where the last one ended (`hint`;
+// a walk from the grid cost a tenth of a graded decomposition).
 struct WorkBound {
   const AreaBound& size;
   const NarrowGaps* gaps = nullptr;
@@ -316,8 +315,8 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
   // Each subdomain alone, into its own slot: under a varying bound, the
   // integral over its triangulation is a pass as long as a tenth of its
   // refinement, and, over the decoupled rings (split to the field's size
-  // along a fine coast: fans of slivers, each read), more than a third
-  // (Maine coast, hmin = extent / 2000).
+  // along a fine coast: fans of slivers, each read), a third of it (the
+  // Maine coast at hmin 0.05): the interiors are read on `before`'s rings.
   const Decomposition& interiors = before != nullptr ? *before : d;
   for_each_on_threads(d.subdomains.size(), threads, [&](std::size_t sub) {
     const Subdomain& s = d.subdomains[sub];
