@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <utility>
 #include <numbers>
@@ -36,16 +37,19 @@ struct Ring {
   // and their areas.
   std::vector<std::vector<std::uint32_t>> holes;
   std::vector<double> hole_area;
-  // Which points lie on which side of a chord, each a column of `turn`: the
-  // samples (graded), then one vertex of each hole. turn[k * columns + c] is
-  // the angle ring edges 0..k-1 subtend at column c's point (signed,
-  // summed). Ring i..j closed by the chord j -> i winds round the point
-  // (turn[j] - turn[i] + the chord's angle) / 2 pi times, and the chord's
-  // angle is within (-pi, pi): the winding is the integer nearest
-  // (turn[j] - turn[i]) / 2 pi, 1 inside side 0 and 0 outside (a sample on
-  // the chord itself may go either way; a hole's vertex is never on it).
+  // Which points lie on which side of a chord, each a column of
+  // `crossings`: the samples (graded), then one vertex of each hole
+  // (column_at). crossings[k * columns + c] is the signed count of ring
+  // edges 0..k-1 crossing the ray from column c's point towards +x (upward
+  // +1, downward -1, by exact orient2d: Sunday's winding number). Ring
+  // i..j closed by the chord j -> i winds round the point
+  // crossings[j] - crossings[i] + the chord's own crossing times: nonzero
+  // inside side 0 (a sample on the chord itself may go either way; a
+  // hole's vertex is never on it).
   std::size_t samples = 0, columns = 0;
-  std::vector<double> turn;
+  std::vector<Point> column_at;
+  std::vector<std::int32_t> crossings;
+  std::vector<Point> point;  // the outer ring's points (at's coordinates), when columns > 0
 };
 
 // The cycle of working points from `first` (links' next), or empty when it
@@ -101,29 +105,39 @@ Ring ring_of(const FaceDomain& fd) {
   return ring;
 }
 
-// Fills ring.turn for the options' samples (graded) and the holes.
-void add_turns(const FaceDomain& fd, const ChordOptions& o, Ring& ring) {
-  std::vector<Point> at;
+// Edge u -> v's part in the winding number round q: +1 crossing the ray
+// from q towards +x upwards with q on its left, -1 downwards with q on its
+// right, else 0.
+int crossing(Point u, Point v, Point q) {
+  if (u.y <= q.y) return v.y > q.y && orient2d(u, v, q) > 0 ? 1 : 0;
+  return v.y <= q.y && orient2d(u, v, q) < 0 ? -1 : 0;
+}
+
+// Fills ring.crossings for the options' samples (graded) and the holes.
+void add_crossings(const FaceDomain& fd, const ChordOptions& o, Ring& ring) {
+  std::vector<Point>& at = ring.column_at;
   if (o.sample_weight > 0.0)
     for (const ValuedPoint& s : o.samples) at.push_back(s.at);
   ring.samples = at.size();
   for (const auto& hole : ring.holes) at.push_back(fd.pslg.points[hole[0]]);
   const std::size_t n = ring.at.size(), count = at.size();
   ring.columns = count;
-  ring.turn.assign((n + 1) * count, 0.0);
+  for (const std::uint32_t v : ring.at) ring.point.push_back(fd.pslg.points[v]);
+  ring.crossings.assign((n + 1) * count, 0);
   for (std::size_t k = 0; k < n; ++k) {
-    const Point a = fd.pslg.points[ring.at[k]], b = fd.pslg.points[ring.at[(k + 1) % n]];
-    for (std::size_t c = 0; c < count; ++c) {
-      const Point da = a - at[c], db = b - at[c];
-      ring.turn[(k + 1) * count + c] = ring.turn[k * count + c] + std::atan2(cross(da, db), dot(da, db));
-    }
+    const Point a = ring.point[k], b = ring.point[(k + 1) % n];
+    for (std::size_t c = 0; c < count; ++c)
+      ring.crossings[(k + 1) * count + c] = ring.crossings[k * count + c] + crossing(a, b, at[c]);
   }
 }
 
-// Whether column c's point is inside side 0 of chord (i, j) (ring.turn).
+// Whether column c's point is inside side 0 of chord (i, j) (ring.crossings).
 bool inside_side0(const Ring& ring, std::size_t c, std::size_t i, std::size_t j) {
-  const double winding = ring.turn[j * ring.columns + c] - ring.turn[i * ring.columns + c];
-  return std::nearbyint(winding * (0.5 / std::numbers::pi)) != 0.0;
+  const std::size_t n = ring.point.size();  // j = n: the whole ring, closed by no chord
+  const Point pi = ring.point[i % n], pj = ring.point[j % n];
+  return ring.crossings[j * ring.columns + c] - ring.crossings[i * ring.columns + c] +
+             crossing(pj, pi, ring.column_at[c]) !=
+         0;
 }
 
 // Area of the part bounded by the outer ring from position i to j and the
@@ -412,7 +426,7 @@ std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& option
     if (columns * (ring.at.size() + 1) > max_chord_sample_table ||
         static_cast<double>(columns) * n * n > max_chord_sample_work)
       return std::nullopt;
-    add_turns(fd, options, ring);
+    add_crossings(fd, options, ring);
   }
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);
   const double min_angle = options.separator_angle_deg + angle_margin_deg;
