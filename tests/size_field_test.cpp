@@ -53,15 +53,19 @@ Pslg square(double side) {
   return p;
 }
 
-// A 12 x 8 sea with a 2 x 2 island, all coast (marker 1).
-Pslg small_sea() {
+// A sea (ring `outer`) with one island (ring `island` around `hole`), all
+// coast (marker 1).
+Pslg sea_around(const std::vector<Point>& outer, const std::vector<Point>& island, Point hole) {
   Pslg sea;
-  add_ring(sea, {{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {1});
-  add_ring(sea, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {1});
-  sea.holes = {{5, 4}};
+  add_ring(sea, outer, {1});
+  add_ring(sea, island, {1});
+  sea.holes = {hole};
   madd::validate(sea);
   return sea;
 }
+
+// A 12 x 8 sea with a 2 x 2 island.
+Pslg small_sea() { return sea_around({{0, 0}, {12, 0}, {12, 8}, {0, 8}}, {{4, 3}, {6, 3}, {6, 5}, {4, 5}}, {5, 4}); }
 
 double segment_distance(Point p, Point a, Point b) {
   const Point ab = b - a;
@@ -134,12 +138,7 @@ double triangle_gradient(const madd::detail::SizeBackground& bg, std::size_t t) 
 // A 20 x 12 sea with one island, and a field with every term, for the
 // reading's own properties (threads, hints).
 Pslg sea_with_island() {
-  Pslg sea;
-  add_ring(sea, {{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {1});
-  add_ring(sea, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {1});
-  sea.holes = {{6.5, 5.5}};
-  madd::validate(sea);
-  return sea;
+  return sea_around({{0, 0}, {20, 0}, {20, 12}, {0, 12}}, {{5, 5}, {7, 4}, {8, 6}, {6, 7.5}}, {6.5, 5.5});
 }
 
 MeshSizeOptions every_term() {
