@@ -259,6 +259,19 @@ GridMesh grid_mesh(std::uint32_t k, std::uint32_t strips, bool sheared = false) 
   return g;
 }
 
+// verify_mesh on one thread (the public function), and on 2, 3 and 7: the
+// parallel checks split the vertices and triangles in parts, one per
+// thread or more, and must find the same problems, in the same order.
+madd::Verification verified(const Mesh& m, const Pslg& domain, const MeshSizeOptions& size) {
+  const madd::Verification one = madd::verify_mesh(m, domain, size);
+  const madd::detail::AreaBound bound(size, &domain);
+  for (const unsigned threads : {2u, 3u, 7u}) {
+    CAPTURE(threads);
+    CHECK(madd::detail::verify_mesh(m, domain, bound, threads).problems == one.problems);
+  }
+  return one;
+}
+
 }  // namespace
 
 TEST_SUITE("verify_mesh") {
@@ -275,7 +288,7 @@ TEST_CASE("verify_mesh: valid meshes of the bundled domains pass") {
       CAPTURE(name);
       CAPTURE(n);
       const Mesh m = madd::test::mesh_without_steiner_points(decomposition_of(domain, n));
-      const madd::Verification v = madd::verify_mesh(m, domain, {});
+      const madd::Verification v = verified(m, domain, {});
       show(v);
       CHECK(v.ok());
     }
@@ -287,23 +300,23 @@ TEST_CASE("verify_mesh: a synthetic grid mesh passes at its exact bounds") {
   MeshSizeOptions size;
   size.max_triangle_area = 0.5;  // every triangle's area exactly
   const madd::Verification v =
-      madd::verify_mesh(g.mesh, g.domain, size);  // min_triangle_angle_deg 45: every smallest angle exactly
+      verified(g.mesh, g.domain, size);  // min_triangle_angle_deg 45: every smallest angle exactly
   show(v);
   CHECK(v.ok());
   size.max_triangle_area = 0.4999;
-  CHECK(mentions(madd::verify_mesh(g.mesh, g.domain, size), "above the size bound"));
+  CHECK(mentions(verified(g.mesh, g.domain, size), "above the size bound"));
   GridMesh sheared = grid_mesh(40, 4, true);
   size.max_triangle_area = 0.5;
-  CHECK(madd::verify_mesh(sheared.mesh, sheared.domain, size).ok());
+  CHECK(verified(sheared.mesh, sheared.domain, size).ok());
   sheared.mesh.min_triangle_angle_deg = 53.2;  // above 53.13: every triangle short
-  CHECK(mentions(madd::verify_mesh(sheared.mesh, sheared.domain, size), "3200 triangles have a smallest angle below"));
+  CHECK(mentions(verified(sheared.mesh, sheared.domain, size), "3200 triangles have a smallest angle below"));
 }
 
 TEST_CASE("verify_mesh: a flipped triangle") {
   Mesh m = pipe8().mesh;
   std::swap(m.triangles[10][1], m.triangles[10][2]);
   std::swap(m.neighbours[10][1], m.neighbours[10][2]);
-  const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
+  const madd::Verification v = verified(m, pipe8().domain, {});
   CHECK(mentions(v, "triangle 10 (subdomain 0)"));
   CHECK(mentions(v, "is clockwise"));
   CHECK(mentions(v, "in the same direction"));
@@ -312,7 +325,7 @@ TEST_CASE("verify_mesh: a flipped triangle") {
 TEST_CASE("verify_mesh: a degenerate triangle") {
   Mesh m = pipe8().mesh;
   m.triangles[3][2] = m.triangles[3][1];
-  CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "is degenerate"));
+  CHECK(mentions(verified(m, pipe8().domain, {}), "is degenerate"));
 }
 
 TEST_CASE("verify_mesh: a broken neighbour link") {
@@ -321,12 +334,12 @@ TEST_CASE("verify_mesh: a broken neighbour link") {
   SUBCASE("pointing elsewhere") {
     Mesh m = base;
     m.neighbours[e.t][e.i] = e.u == 0 ? 1 : 0;
-    CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "as their neighbours across it"));
+    CHECK(mentions(verified(m, pipe8().domain, {}), "as their neighbours across it"));
   }
   SUBCASE("no_index across a shared edge") {
     Mesh m = base;
     m.neighbours[e.t][e.i] = no_index;
-    CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "as their neighbours across it"));
+    CHECK(mentions(verified(m, pipe8().domain, {}), "as their neighbours across it"));
   }
   SUBCASE("a neighbour across a boundary edge") {
     Mesh m = base;
@@ -334,8 +347,8 @@ TEST_CASE("verify_mesh: a broken neighbour link") {
       for (int i = 0; i < 3; ++i)
         if (m.neighbours[t][i] == no_index) {
           m.neighbours[t][i] = t == 0 ? 1 : 0;
-          const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
-          CHECK(mentions(v, "which no other triangle has the other way"));
+          const madd::Verification v = verified(m, pipe8().domain, {});
+          CHECK(mentions(v, "which that triangle does not have the other way"));
           return;
         }
     FAIL("no boundary edge");
@@ -352,21 +365,41 @@ TEST_CASE("verify_mesh: a dropped triangle leaves a gap") {
   for (auto& n : m.neighbours)
     for (auto& u : n)
       if (u == last) u = no_index;
-  const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
+  const madd::Verification v = verified(m, pipe8().domain, {});
   CHECK(mentions(v, "a gap or an overlap"));
   CHECK(mentions(v, "a hole or a tear"));
 }
 
 TEST_CASE("verify_mesh: a doubled triangle is an overlap") {
   Mesh m = pipe8().mesh;
-  // A second copy of triangle 0 in the last subdomain, with no neighbours.
+  // A second copy of triangle 0 in the last subdomain, with no neighbours:
+  // its edges are free and no segment, and the area counts it twice.
   m.triangles.push_back(m.triangles[0]);
   m.neighbours.push_back({no_index, no_index, no_index});
   m.triangle_subdomain.push_back(m.subdomain_count() - 1);
   ++m.subdomain_first_triangle.back();
-  const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
-  CHECK(mentions(v, "in the same direction"));
+  const madd::Verification v = verified(m, pipe8().domain, {});
+  CHECK(mentions(v, "a hole or a tear"));
   CHECK(mentions(v, "a gap or an overlap"));
+}
+
+TEST_CASE("verify_mesh: a doubled triangle linked in place of the first") {
+  // The copy takes the original's place in its neighbours' links: the links
+  // are mutual, every free edge a segment, and only the original is left
+  // unlinked (its edges free) and the area counts twice.
+  Mesh m = pipe8().mesh;
+  const auto copy = static_cast<std::uint32_t>(m.triangles.size());
+  m.triangles.push_back(m.triangles[0]);
+  m.neighbours.push_back(m.neighbours[0]);
+  m.triangle_subdomain.push_back(m.subdomain_count() - 1);
+  ++m.subdomain_first_triangle.back();
+  for (auto& n : m.neighbours)
+    for (auto& u : n)
+      if (u == 0) u = copy;
+  m.neighbours[0] = {no_index, no_index, no_index};
+  const madd::Verification v = verified(m, pipe8().domain, {});
+  CHECK(mentions(v, "a gap or an overlap"));
+  CHECK_FALSE(v.ok());
 }
 
 TEST_CASE("verify_mesh: boundary vertices on their segments up to the derived bound") {
@@ -391,7 +424,7 @@ TEST_CASE("verify_mesh: boundary vertices on their segments up to the derived bo
   const auto moved = [&](Point to) {
     Mesh m = f.mesh;
     m.points[p] = m.decomposition.points[p] = to;
-    return madd::verify_mesh(m, f.domain, {});
+    return verified(m, f.domain, {});
   };
   SUBCASE("an ulp off passes") {
     const Point q = f.mesh.points[p];
@@ -423,7 +456,7 @@ TEST_CASE("verify_mesh: a hanging vertex") {
     m.triangles.insert(m.triangles.begin() + e.u + 1, {y, mid_id, w});
     m.triangle_subdomain.insert(m.triangle_subdomain.begin() + e.u + 1, m.triangle_subdomain[e.u]);
     rebuild(m);
-    const madd::Verification v_ = madd::verify_mesh(m, f.domain, {});
+    const madd::Verification v_ = verified(m, f.domain, {});
     CHECK(mentions(v_, "vertex " + std::to_string(mid_id)));
     CHECK(mentions(v_, "(a hanging vertex)"));
     CHECK(mentions(v_, "a hole or a tear"));
@@ -449,7 +482,7 @@ TEST_CASE("verify_mesh: a flipped edge is found non-Delaunay exactly when it is"
     m.triangles[e.t] = {x, v, y};
     m.triangles[e.u] = {y, w, x};
     rebuild(m);
-    const madd::Verification check = madd::verify_mesh(m, domain, {});
+    const madd::Verification check = verified(m, domain, {});
     const bool on_circle = madd::incircle(P[v], P[w], P[x], P[y]) == 0.0;
     CAPTURE(v);
     CAPTURE(w);
@@ -471,20 +504,20 @@ TEST_CASE("verify_mesh: separators") {
   SUBCASE("an edge between subdomains that is no separator segment") {
     Mesh m = f.mesh;
     m.segments.erase(m.segments.begin() + sep);
-    const madd::Verification v = madd::verify_mesh(m, f.domain, {});
+    const madd::Verification v = verified(m, f.domain, {});
     CHECK(mentions(v, "no separator segment"));
     CHECK(mentions(v, "separator " + std::to_string(f.mesh.segments[sep].piece) + " has no mesh segments"));
   }
   SUBCASE("a separator segment with a boundary marker") {
     Mesh m = f.mesh;
     m.segments[sep].marker = 1;
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "has marker 1, expected 0"));
+    CHECK(mentions(verified(m, f.domain, {}), "has marker 1, expected 0"));
   }
   SUBCASE("a triangle moved to another subdomain") {
     Mesh m = f.mesh;
     // The first triangle of subdomain 1 claims subdomain 0: the ranges break.
     m.triangle_subdomain[m.subdomain_first_triangle[1]] = 0;
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "but triangle_subdomain says 0"));
+    CHECK(mentions(verified(m, f.domain, {}), "but triangle_subdomain says 0"));
   }
 }
 
@@ -493,22 +526,22 @@ TEST_CASE("verify_mesh: inconsistent subdomain ranges") {
   SUBCASE("shifted") {
     Mesh m = f.mesh;
     ++m.subdomain_first_triangle[1];
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "triangle_subdomain says"));
+    CHECK(mentions(verified(m, f.domain, {}), "triangle_subdomain says"));
   }
   SUBCASE("decreasing") {
     Mesh m = f.mesh;
     m.subdomain_first_triangle[2] = m.subdomain_first_triangle[1] - 1;
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "decreases at subdomain 1"));
+    CHECK(mentions(verified(m, f.domain, {}), "decreases at subdomain 1"));
   }
   SUBCASE("one offset short") {
     Mesh m = f.mesh;
     m.subdomain_first_triangle.pop_back();
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "offsets for 8 subdomains"));
+    CHECK(mentions(verified(m, f.domain, {}), "offsets for 8 subdomains"));
   }
   SUBCASE("not ending at the triangle count") {
     Mesh m = f.mesh;
     --m.subdomain_first_triangle.back();
-    CHECK(mentions(madd::verify_mesh(m, f.domain, {}), "instead of 0 to the triangle count"));
+    CHECK(mentions(verified(m, f.domain, {}), "instead of 0 to the triangle count"));
   }
 }
 
@@ -524,23 +557,23 @@ TEST_CASE("verify_mesh: malformed meshes are reported, never thrown") {
   bad[6].decomposition.points.pop_back();
   for (const Mesh& m : bad) {
     madd::Verification v;
-    CHECK_NOTHROW(v = madd::verify_mesh(m, f.domain, {}));
+    CHECK_NOTHROW(v = verified(m, f.domain, {}));
     CHECK_FALSE(v.ok());
   }
   Mesh empty;
-  CHECK_NOTHROW((void)madd::verify_mesh(empty, f.domain, {}));
-  CHECK_FALSE(madd::verify_mesh(empty, f.domain, {}).ok());
+  CHECK_NOTHROW((void)verified(empty, f.domain, {}));
+  CHECK_FALSE(verified(empty, f.domain, {}).ok());
 }
 
 TEST_CASE("verify_mesh: point markers by Triangle's rule") {
   GridMesh g = grid_mesh(6, 2);
-  CHECK(madd::verify_mesh(g.mesh, g.domain, {}).ok());
+  CHECK(verified(g.mesh, g.domain, {}).ok());
   const auto inner = std::find(g.mesh.point_markers.begin(), g.mesh.point_markers.end(), 0);
   REQUIRE(inner != g.mesh.point_markers.end());
   *inner = 3;
-  CHECK(mentions(madd::verify_mesh(g.mesh, g.domain, {}), "has marker 3, expected 0 (on no boundary segment)"));
+  CHECK(mentions(verified(g.mesh, g.domain, {}), "has marker 3, expected 0 (on no boundary segment)"));
   g.mesh.point_markers[0] = 2;
-  CHECK(mentions(madd::verify_mesh(g.mesh, g.domain, {}), "has marker 2, expected 1 (the largest"));
+  CHECK(mentions(verified(g.mesh, g.domain, {}), "has marker 2, expected 1 (the largest"));
 }
 
 TEST_CASE("verify_mesh: the size bound") {
@@ -549,18 +582,18 @@ TEST_CASE("verify_mesh: the size bound") {
   for (std::uint32_t t = 0; t < f.mesh.triangles.size(); ++t) largest = std::max(largest, 0.5 * twice_area(f.mesh, t));
   MeshSizeOptions size;
   size.max_triangle_area = largest;
-  CHECK(madd::verify_mesh(f.mesh, f.domain, size).ok());
+  CHECK(verified(f.mesh, f.domain, size).ok());
   size.max_triangle_area = largest * (1.0 - 1e-9);
-  CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, size), "above the size bound"));
+  CHECK(mentions(verified(f.mesh, f.domain, size), "above the size bound"));
   // The same bound from the function, and from a background sample.
   MeshSizeOptions by_function;
   by_function.triangle_area_function = [&](double, double) { return largest * 0.9; };
-  CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, by_function), "above the size bound"));
+  CHECK(mentions(verified(f.mesh, f.domain, by_function), "above the size bound"));
   MeshSizeOptions by_samples;
   by_samples.triangle_area_samples = {{{0.0, 0.0}, largest * 0.9}};
-  CHECK(mentions(madd::verify_mesh(f.mesh, f.domain, by_samples), "above the size bound"));
+  CHECK(mentions(verified(f.mesh, f.domain, by_samples), "above the size bound"));
   by_samples.triangle_area_samples[0].value = largest;
-  CHECK(madd::verify_mesh(f.mesh, f.domain, by_samples).ok());
+  CHECK(verified(f.mesh, f.domain, by_samples).ok());
 }
 
 // The per-triangle checks run on threads (detail::verify_mesh's `threads`):
@@ -595,19 +628,19 @@ TEST_CASE("verify_mesh: the angle bound against the shortfall count") {
   const auto below =
       static_cast<std::size_t>(std::count_if(angles.begin(), angles.end(), [](double a) { return a < 25.0 - 1e-9; }));
   REQUIRE(below > 0);
-  const madd::Verification v = madd::verify_mesh(m, pipe8().domain, {});
+  const madd::Verification v = verified(m, pipe8().domain, {});
   CHECK(mentions(v, std::to_string(below) +
                         " triangles have a smallest angle below the bound 25 deg, but the shortfall counts 0"));
   const auto worst = std::min_element(angles.begin(), angles.end()) - angles.begin();
   CHECK(mentions(v, "of triangle " + std::to_string(worst) + " "));
   m.shortfall.input_angle = below - 1;
   m.shortfall.limit = 1;
-  CHECK(madd::verify_mesh(m, pipe8().domain, {}).ok());
+  CHECK(verified(m, pipe8().domain, {}).ok());
   m.shortfall.limit = 2;
-  CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "but the shortfall counts " + std::to_string(below + 1)));
+  CHECK(mentions(verified(m, pipe8().domain, {}), "but the shortfall counts " + std::to_string(below + 1)));
   // No bound (0) and a claimed shortfall: a mismatch too.
   m.min_triangle_angle_deg = 0.0;
-  CHECK(mentions(madd::verify_mesh(m, pipe8().domain, {}), "0 triangles have a smallest angle below"));
+  CHECK(mentions(verified(m, pipe8().domain, {}), "0 triangles have a smallest angle below"));
 }
 
 TEST_CASE("area_bound_at: the smallest of the three bounds") {
@@ -723,7 +756,7 @@ TEST_CASE("one size bound: the mesher's refinement and verify_mesh ask the same 
   o.size = size;
   o.size.min_triangle_angle_deg = 30;
   const Mesh m = madd::mesh_decomposition(f.decomposition, f.domain, o).mesh;
-  const madd::Verification v = madd::verify_mesh(m, f.domain, o.size);
+  const madd::Verification v = verified(m, f.domain, o.size);
   show(v);
   CHECK(v.ok());
   CHECK(m.triangles.size() > 8.0 / 0.05);
@@ -777,7 +810,7 @@ TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
   const Mesh& good = im.mesh;
   const Pslg& domain = im.f.domain;
   {
-    const madd::Verification v = madd::verify_mesh(good, domain, im.size);
+    const madd::Verification v = verified(good, domain, im.size);
     show(v);
     REQUIRE(v.ok());
   }
@@ -790,7 +823,7 @@ TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
     from.erase(std::find(from.begin(), from.end(), piece));
     auto& to = m.decomposition.subdomains[1 - k].interior_segments;
     to.insert(std::lower_bound(to.begin(), to.end(), piece), piece);
-    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    const madd::Verification v = verified(m, domain, im.size);
     CHECK(mentions(v, "lies inside subdomain " + std::to_string(k)));
     CHECK(mentions(v, "its piece is interior to subdomain " + std::to_string(1 - k)));
   }
@@ -801,7 +834,7 @@ TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
     m.triangle_subdomain.erase(m.triangle_subdomain.begin() + e.u);
     m.triangle_attribute.erase(m.triangle_attribute.begin() + e.u);
     rebuild(m);
-    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    const madd::Verification v = verified(m, domain, im.size);
     CHECK(mentions(v, "interior segment "));
     CHECK(mentions(v, "is in one triangle only"));
   }
@@ -810,31 +843,31 @@ TEST_CASE("verify_mesh: interior segments, isolated vertices and regions") {
     const InteriorEdge e = an_interior_edge(m);
     const std::uint32_t piece = m.segments[e.segment].piece;
     m.segments.erase(m.segments.begin() + e.segment);
-    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    const madd::Verification v = verified(m, domain, im.size);
     CHECK(mentions(v, "interior piece " + std::to_string(piece) + " "));
   }
   SUBCASE("an isolated vertex that is no mesh vertex of its subdomain") {
     Mesh m = good;
     m.decomposition.subdomains[0].interior_points.push_back(15);  // a vertex of subdomain 1's triangles only
-    CHECK(mentions(madd::verify_mesh(m, domain, im.size),
+    CHECK(mentions(verified(m, domain, im.size),
                    "isolated input vertex 15 (3, 1.1000000000000001) is no vertex of subdomain 0"));
   }
   SUBCASE("a wrong region attribute") {
     Mesh m = good;
     const InteriorEdge e = an_interior_edge(m);
     m.triangle_attribute[e.t] += 1.0;
-    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "triangle " + std::to_string(e.t) + " (subdomain"));
-    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "has region attribute"));
+    CHECK(mentions(verified(m, domain, im.size), "triangle " + std::to_string(e.t) + " (subdomain"));
+    CHECK(mentions(verified(m, domain, im.size), "has region attribute"));
   }
   SUBCASE("region attributes missing") {
     Mesh m = good;
     m.triangle_attribute.clear();
-    CHECK(mentions(madd::verify_mesh(m, domain, im.size), "triangle_attribute has 0 entries"));
+    CHECK(mentions(verified(m, domain, im.size), "triangle_attribute has 0 entries"));
   }
   SUBCASE("a regional area bound exceeded") {
     Mesh m = good;
     m.decomposition.regions[1].max_area = 0.0005;  // the loop's triangles were made for 0.002
-    const madd::Verification v = madd::verify_mesh(m, domain, im.size);
+    const madd::Verification v = verified(m, domain, im.size);
     CHECK(mentions(v, "above the size bound 0.0005"));
     // Only the loop's region is bounded so: every complaint is about a triangle inside it.
     for (const std::string& p : v.problems)
@@ -851,7 +884,7 @@ TEST_CASE("verify_mesh: time on a large synthetic mesh") {
   MeshSizeOptions size;
   size.max_triangle_area = 0.5;
   const auto start = std::chrono::steady_clock::now();
-  const madd::Verification v = madd::verify_mesh(g.mesh, g.domain, size);
+  const madd::Verification v = verified(g.mesh, g.domain, size);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   show(v);
   CHECK(v.ok());

@@ -156,7 +156,7 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
     for (const std::uint32_t v : sub.interior_points) all_features.push_back({v, v, 0});
   const detail::FeatureDistance features(decomposition.points, all_features);
   // Regions with an area bound bound the segments beside them too.
-  const std::vector<double> regional = detail::region_view(decomposition).segment_area;
+  const std::vector<double> regional = detail::region_view(decomposition, threads).segment_area;
   const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features, regional);
   // Boundary pieces our refinement may split need only resolve the
   // separators near them (the decoupling); elsewhere it splits them itself.

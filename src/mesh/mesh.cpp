@@ -156,7 +156,7 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
                       std::vector<std::vector<Region>>& regions) {
   pieces.assign(d.subdomains.size(), SubdomainMesh{});
   // Splitting separators later changes no face, so the regions hold for every round.
-  regions = region_view(d).regions;
+  regions = region_view(d, options.decomposition.threads).regions;
   std::vector<std::uint32_t> todo;
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
     if (mine[k]) todo.push_back(k);

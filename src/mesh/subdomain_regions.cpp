@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "kernel/threads.hpp"
 #include "kernel/uniform_grid.hpp"
 #include "madd/predicates.hpp"
 #include "madd/triangulation.hpp"
@@ -116,19 +117,21 @@ std::vector<std::uint32_t> labels_at(const Triangulation& tri, const std::vector
 
 }  // namespace
 
-RegionView region_view(const Decomposition& d) {
+RegionView region_view(const Decomposition& d, unsigned threads) {
   RegionView out;
   out.regions.resize(d.subdomains.size());
   out.bounded_faces.resize(d.subdomains.size());
   out.segment_area.assign(d.segments.size(), std::numeric_limits<double>::infinity());
   if (d.regions.empty()) return out;
-  std::vector<Faces> faces;
+  // Each subdomain's faces from its own triangulation, into its own slot.
+  std::vector<Faces> faces(d.subdomains.size());
+  for_each_on_threads(d.subdomains.size(), threads,
+                      [&](std::size_t k) { faces[k] = faces_of(d, static_cast<std::uint32_t>(k)); });
   std::vector<Point> queries;
   std::vector<std::uint32_t> first;  // per subdomain: its first query
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
-    faces.push_back(faces_of(d, k));
     first.push_back(static_cast<std::uint32_t>(queries.size()));
-    queries.insert(queries.end(), faces.back().point.begin(), faces.back().point.end());
+    queries.insert(queries.end(), faces[k].point.begin(), faces[k].point.end());
   }
   const std::vector<std::uint32_t> labels = labels_at(labelled_domain(d), queries);
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {

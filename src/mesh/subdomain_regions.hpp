@@ -33,7 +33,8 @@ struct RegionView {
 // segment; no regions and no bounds when d.regions is empty. The region of
 // a face is decided once, on the constrained triangulation of every
 // boundary and interior piece of d, by Triangle's rule (of two region
-// points in one face the later wins). Deterministic.
-RegionView region_view(const Decomposition& d);
+// points in one face the later wins). The subdomains' faces are found on
+// `threads` threads; deterministic, the same for any count.
+RegionView region_view(const Decomposition& d, unsigned threads = 1);
 
 }  // namespace madd::detail

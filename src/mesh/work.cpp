@@ -310,7 +310,7 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
   const AreaBound& size = work.size;
   const NarrowGaps& gaps = work.gaps;
   const bool uniform = size.uniform();
-  const RegionView regions = region_view(d);
+  const RegionView regions = region_view(d, threads);
   const std::vector<double> excess = gap_excess_by_subdomain(d, work.gap_excess);
   // Each subdomain alone, into its own slot: under a varying bound, the
   // integral over its triangulation is a pass as long as a tenth of its

@@ -17,6 +17,9 @@ public:
   explicit ProblemLog(Verification& out, std::size_t cap = 40) : out_(out), cap_(cap) {}
   void add(std::string problem);
   void finish();  // appends "... and K more" when problems were dropped
+  // Adds what another log of `count` problems kept (`kept`: its first ones,
+  // in order), as if they had been added here one by one.
+  void absorb(std::vector<std::string>&& kept, std::size_t count);
   std::size_t count() const noexcept { return count_; }
 
 private:

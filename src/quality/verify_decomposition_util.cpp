@@ -18,6 +18,11 @@ void ProblemLog::add(std::string problem) {
   if (count_++ < cap_) out_.add(std::move(problem));
 }
 
+void ProblemLog::absorb(std::vector<std::string>&& kept, std::size_t count) {
+  for (std::string& problem : kept) add(std::move(problem));
+  if (count > kept.size()) count_ += count - kept.size();
+}
+
 void ProblemLog::finish() {
   if (count_ > cap_) out_.add("... and " + std::to_string(count_ - cap_) + " more problems");
 }

@@ -15,8 +15,10 @@
 
 #include "kernel/number_format.hpp"
 #include "madd/mesh.hpp"
+#include "kernel/threads.hpp"
 #include "madd/predicates.hpp"
 #include "quality/area_bound.hpp"
+#include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_bounded.hpp"
 #include "quality/verify_mesh_detail.hpp"
 #include "triangulation/exact_area.hpp"
@@ -149,16 +151,21 @@ bool attributes_sized(const Mesh& m, ProblemLog& log) {
 
 // Strictly counter-clockwise, decided exactly; a repeated or collinear
 // vertex fails too. Returns the flags the in-circle test needs.
-std::vector<std::uint8_t> check_orientation(const Mesh& m, ProblemLog& log) {
+std::vector<std::uint8_t> check_orientation(const Mesh& m, ProblemLog& log, unsigned threads) {
   std::vector<std::uint8_t> ccw(m.triangles.size(), 0);
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-    const auto& c = m.triangles[t];
-    const double o = orient2d(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
-    ccw[t] = o > 0.0 ? 1 : 0;
-    if (ccw[t] == 0)
-      log.add(detail::mesh_triangle_text(m, t) +
-              (o < 0.0 ? " is clockwise" : " is degenerate (collinear or repeated vertices)"));
-  }
+  const std::size_t parts = 4 * std::size_t{detail::thread_count(threads, m.triangles.size())};
+  detail::log_in_parts(m.triangles.size(), parts, threads, log,
+                       [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& part_log) {
+                         for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t) {
+                           const auto& c = m.triangles[t];
+                           const double o = orient2d(m.points[c[0]], m.points[c[1]], m.points[c[2]]);
+                           ccw[t] = o > 0.0 ? 1 : 0;
+                           if (ccw[t] == 0)
+                             part_log.add(
+                                 detail::mesh_triangle_text(m, t) +
+                                 (o < 0.0 ? " is clockwise" : " is degenerate (collinear or repeated vertices)"));
+                         }
+                       });
   return ccw;
 }
 
@@ -210,13 +217,13 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
   // area function; both become a problem).
   try {
     if (check_mesh_shape(mesh, domain, log)) {
-      const std::vector<std::uint8_t> ccw = check_orientation(mesh, log);
-      const detail::MeshEdges edges = detail::check_mesh_edges(mesh, ccw, log);
+      const std::vector<std::uint8_t> ccw = check_orientation(mesh, log, threads);
+      const detail::MeshEdges edges = detail::check_mesh_edges(mesh, ccw, log, threads);
       const double sliver = detail::check_mesh_segments(mesh, domain, log);
-      detail::check_hanging_vertices(mesh, edges.boundary, log);
+      detail::check_hanging_vertices(mesh, edges.boundary, log, threads);
       check_cover(edges.twice_area, domain, sliver, log);
       detail::check_interior_points(mesh, log);
-      const std::vector<std::uint32_t> region = detail::mesh_regions(mesh);
+      const std::vector<std::uint32_t> region = detail::mesh_regions(mesh, threads);
       if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log);
       detail::check_mesh_size(mesh, bound, region, log, threads);
       detail::check_mesh_angles(mesh, log, threads);

@@ -19,15 +19,19 @@ std::string mesh_triangle_text(const Mesh& mesh, std::uint32_t t);
 struct MeshEdges {
   // Twice the triangles' total signed area, exactly.
   ExactSum twice_area;
-  // Every edge found in exactly one triangle, directed as that triangle has it.
+  // Every edge no triangle is linked across (a free edge), directed as its
+  // triangle has it, in triangle order.
   std::vector<Segment> boundary;
 };
 
-// Adjacency, conformity across subdomains, boundary edges = boundary
-// segments, constrained Delaunay within each subdomain; one pass over the
-// edges grouped by their lower vertex. ccw[t] != 0 when triangle t is
-// strictly counter-clockwise (the in-circle test needs it).
-MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log);
+// Adjacency (mutual links across every shared edge), conformity across
+// subdomains, free edges = boundary segments, every segment one edge,
+// constrained Delaunay within each subdomain; in chunks of triangles on
+// `threads` threads, the same report for any count (verify_mesh_edges.cpp
+// says why this and the cover check rule out any overlap). ccw[t] != 0
+// when triangle t is strictly counter-clockwise (the in-circle test needs it).
+MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log,
+                           unsigned threads = 1);
 
 // The mesh segments against the decomposition and the input: markers, each
 // decomposition segment covered by one chain of its mesh segments, each input
@@ -36,8 +40,10 @@ MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& cc
 // input segments (for the cover check).
 double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log);
 
-// No triangle vertex strictly inside an edge that only one triangle has.
-void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& boundary, ProblemLog& log);
+// No triangle vertex strictly inside an edge that only one triangle has
+// (the vertices in parts on `threads` threads).
+void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& boundary, ProblemLog& log,
+                            unsigned threads = 1);
 
 // Every isolated input vertex (Subdomain::interior_points) a vertex of a
 // triangle of its subdomain.
@@ -47,8 +53,8 @@ void check_interior_points(const Mesh& mesh, ProblemLog& log);
 // whose flood holds it, 0 for none; the flood starts from the lowest
 // triangle whose closure holds the region point and crosses every edge but
 // boundary and interior segments, regions in input order, the later
-// winning. All 0 without regions.
-std::vector<std::uint32_t> mesh_regions(const Mesh& mesh);
+// winning. All 0 without regions. Found on `threads` threads, the same for any count.
+std::vector<std::uint32_t> mesh_regions(const Mesh& mesh, unsigned threads = 1);
 
 // mesh.triangle_attribute equal to the attribute of each triangle's region
 // by `label` (mesh_regions), 0 in none.

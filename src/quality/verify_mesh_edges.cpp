@@ -1,133 +1,119 @@
-// verify_mesh, the edge pass: every triangle edge and every mesh segment
-// grouped by undirected edge, with no global sort and no map. Directed edges
-// are bucketed by their lower vertex (a counting sort, linear), and each
-// vertex's few buckets sorted by the upper vertex, so an edge's triangles
-// and segments sit together. Per edge it checks:
-// - at most one triangle in each direction (so at most two in all);
-// - two triangles (one each way) name each other as neighbours across it,
-//   one triangle names no_index there;
-// - an edge in one triangle is a boundary segment (marker != 0, not on an
-//   interior piece): the free edges are exactly the boundary, so no hole and
-//   no tear;
-// - an edge between two subdomains is a separator segment (marker 0), and a
-//   separator lies between two triangles of different subdomains;
-// - a segment on an interior piece lies between two triangles of the
-//   subdomain the piece is interior to (interior_segment_owners), and is
-//   the only kind of segment inside a subdomain;
-// - between two triangles of one subdomain, off every segment, locally
-//   Delaunay (exact incircle; one test decides it, since the in-circle
-//   determinant of the other triangle and this one's far vertex is the same
-//   determinant under an even permutation of its four points).
+// verify_mesh, the edge pass: every edge of every triangle, in triangle
+// order, against the triangle its link names across it, and every mesh
+// segment against the edges it must be. In chunks of triangles on threads
+// (each chunk's triangles and their neighbours are near each other in
+// memory: a subdomain's triangles are numbered together), no sort and no
+// map but the segments'. Per directed edge a -> b of triangle t:
+// - linked (neighbour u): u has the edge the other way, b -> a, and names t
+//   across it (a mutual pair); two triangles with the edge the same way, a
+//   link to a triangle without the edge, or a link not returned, are
+//   reported;
+// - free (no neighbour): the edge is a boundary segment (marker != 0, not an
+//   interior piece), so no hole and no tear;
+// and per mutual pair, once, from its lower triangle:
+// - between two subdomains it is a separator segment (marker 0);
+// - inside a subdomain it is no segment but an interior piece of that
+//   subdomain (interior_segment_owners), and off every segment it is
+//   locally Delaunay (exact incircle; one test decides it, since the
+//   in-circle determinant of the other triangle and this one's far vertex is
+//   the same determinant under an even permutation of its four points);
+// and every mesh segment is exactly one such edge: one free edge or one pair.
+//
+// Why this rules out an overlap without comparing every triangle with every
+// other: the triangles' boundaries, added as chains, cancel on every mutual
+// pair and leave the free edges; so with every triangle counter-clockwise
+// (the orientation check) each point is covered by as many triangles as the
+// free edges wind around it. The free edges are exactly the boundary
+// segments, and the exact total area (below) equals the domain's (the cover
+// check): every point of the domain is covered once and nothing else is.
+// Two triangles with an edge the same way would overlap near it; a third
+// triangle on a shared edge would have it free and no segment there.
+//
 // It also sums twice the triangles' area exactly: the shoelace sum over all
-// triangle edges, where an edge walked once each way cancels exactly, is
-// sum over edges of (forward - backward) cross(lo, hi), so only free edges
-// cost exact arithmetic.
+// triangle edges, where the two edges of a mutual pair cancel exactly, is the
+// sum of cross(a, b) over every other directed edge, so only free (and
+// broken) edges cost exact arithmetic.
 #include <algorithm>
-#include <span>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
+#include "kernel/threads.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/predicates.hpp"
+#include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
 
 namespace {
 
-struct Half {
-  std::uint32_t hi;    // the other (higher) vertex of the edge
-  std::uint32_t code;  // 3 t + i: edge i of triangle t, opposite vertex i
-  bool operator<(const Half& o) const noexcept { return hi < o.hi || (hi == o.hi && code < o.code); }
-};
-
-struct SegEnd {
-  std::uint32_t hi;
-  std::uint32_t segment;
-  bool operator<(const SegEnd& o) const noexcept { return hi < o.hi || (hi == o.hi && segment < o.segment); }
-};
-
-// Counting sort of `count` items into buckets by key: CSR offsets, items in
-// increasing order within each bucket.
-template <class Key>
-void bucket(std::size_t buckets, std::uint32_t count, Key key, std::vector<std::uint32_t>& start,
-            std::vector<std::uint32_t>& items) {
-  start.assign(buckets + 1, 0);
-  for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint32_t b = key(k);
-    if (b != no_index) ++start[b + 1];
-  }
-  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-  items.resize(start[buckets]);
-  for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint32_t b = key(k);
-    if (b != no_index) items[start[b]++] = k;
-  }
-  // start[b] now holds the end of bucket b: shift back by one bucket.
-  for (std::size_t b = buckets; b > 0; --b) start[b] = start[b - 1];
-  start[0] = 0;
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
 }
+
+// The mesh segments by edge, with a flag per vertex on one, so that the
+// many edges with an end on none are known to be no segment without a
+// lookup. Two segments on one edge are reported here.
+class SegmentsByEdge {
+public:
+  SegmentsByEdge(const Mesh& m, ProblemLog& log) : on_(m.points.size(), 0) {
+    by_edge_.reserve(m.segments.size());
+    for (std::uint32_t s = 0; s < m.segments.size(); ++s) {
+      const MeshSegment& g = m.segments[s];
+      const auto [it, added] = by_edge_.emplace(edge_key(g.a, g.b), s);
+      if (!added)
+        log.add("mesh segments " + std::to_string(it->second) + " and " + std::to_string(s) + " are the same edge " +
+                std::to_string(std::min(g.a, g.b)) + "-" + std::to_string(std::max(g.a, g.b)));
+      on_[g.a] = on_[g.b] = 1;
+    }
+  }
+  // The segment on edge {a, b} (the first, when two are), or no_index.
+  std::uint32_t at(std::uint32_t a, std::uint32_t b) const {
+    if (on_[a] == 0 || on_[b] == 0) return no_index;
+    const auto it = by_edge_.find(edge_key(a, b));
+    return it == by_edge_.end() ? no_index : it->second;
+  }
+
+private:
+  std::vector<std::uint8_t> on_;
+  std::unordered_map<std::uint64_t, std::uint32_t> by_edge_;
+};
+
+// What one chunk of triangles finds besides its problems.
+struct ChunkEdges {
+  MeshEdges edges;
+  std::vector<std::uint32_t> segments;  // the segments its edges are, once per free edge or pair
+};
 
 class EdgePass {
 public:
-  EdgePass(const Mesh& m, const std::vector<std::uint8_t>& ccw, ProblemLog& log)
-      : m_(m), ccw_(ccw), log_(log), owner_(interior_segment_owners(m.decomposition)) {}
+  EdgePass(const Mesh& m, const std::vector<std::uint8_t>& ccw, const std::vector<std::uint32_t>& owner,
+           const SegmentsByEdge& segments, ProblemLog& log)
+      : m_(m), ccw_(ccw), owner_(owner), segments_(segments), log_(log) {}
 
-  MeshEdges run() {
-    const auto& T = m_.triangles;
-    const std::size_t np = m_.points.size();
-    std::vector<std::uint32_t> half_start, halves, seg_start, segs;
-    bucket(
-        np, static_cast<std::uint32_t>(3 * T.size()),
-        [&](std::uint32_t code) {
-          const std::uint32_t a = from(code), b = to(code);
-          return a == b ? no_index : std::min(a, b);  // a repeated vertex: reported by the orientation check
-        },
-        half_start, halves);
-    bucket(
-        np, static_cast<std::uint32_t>(m_.segments.size()),
-        [&](std::uint32_t s) { return std::min(m_.segments[s].a, m_.segments[s].b); }, seg_start, segs);
-    std::vector<Half> local;
-    std::vector<SegEnd> local_segs;
-    for (std::uint32_t v = 0; v < np; ++v) {
-      local.clear();
-      local_segs.clear();
-      for (std::uint32_t k = half_start[v]; k < half_start[v + 1]; ++k) {
-        const std::uint32_t code = halves[k];
-        local.push_back({std::max(from(code), to(code)), code});
-      }
-      for (std::uint32_t k = seg_start[v]; k < seg_start[v + 1]; ++k) {
-        const MeshSegment& g = m_.segments[segs[k]];
-        local_segs.push_back({std::max(g.a, g.b), segs[k]});
-      }
-      std::sort(local.begin(), local.end());
-      std::sort(local_segs.begin(), local_segs.end());
-      std::size_t i = 0, j = 0;
-      while (i < local.size() || j < local_segs.size()) {
-        const std::uint32_t w =
-            std::min(i < local.size() ? local[i].hi : no_index, j < local_segs.size() ? local_segs[j].hi : no_index);
-        const std::size_t i0 = i, j0 = j;
-        while (i < local.size() && local[i].hi == w) ++i;
-        while (j < local_segs.size() && local_segs[j].hi == w) ++j;
-        edge(v, w, std::span<const Half>(local.data() + i0, i - i0),
-             std::span<const SegEnd>(local_segs.data() + j0, j - j0));
-      }
-    }
+  ChunkEdges run(std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t t = begin; t < end; ++t)
+      for (std::uint32_t i = 0; i < 3; ++i) edge(t, i);
     return std::move(out_);
   }
 
 private:
-  std::uint32_t tri(std::uint32_t code) const noexcept { return code / 3; }
-  std::uint32_t side(std::uint32_t code) const noexcept { return code % 3; }
-  std::uint32_t from(std::uint32_t code) const noexcept { return m_.triangles[code / 3][(code % 3 + 1) % 3]; }
-  std::uint32_t to(std::uint32_t code) const noexcept { return m_.triangles[code / 3][(code % 3 + 2) % 3]; }
-  std::uint32_t neighbour(std::uint32_t code) const noexcept { return m_.neighbours[code / 3][code % 3]; }
-  std::uint32_t subdomain(std::uint32_t code) const noexcept { return m_.triangle_subdomain[code / 3]; }
+  std::uint32_t from(std::uint32_t t, std::uint32_t i) const noexcept { return m_.triangles[t][(i + 1) % 3]; }
+  std::uint32_t to(std::uint32_t t, std::uint32_t i) const noexcept { return m_.triangles[t][(i + 2) % 3]; }
+  // The side of triangle u that runs a -> b, or 3.
+  std::uint32_t side_of(std::uint32_t u, std::uint32_t a, std::uint32_t b) const noexcept {
+    std::uint32_t j = 0;
+    while (j < 3 && !(from(u, j) == a && to(u, j) == b)) ++j;
+    return j;
+  }
 
   std::string edge_text(std::uint32_t v, std::uint32_t w) const {
+    if (v > w) std::swap(v, w);
     return "edge " + std::to_string(v) + "-" + std::to_string(w) + " " + point_text(m_.points[v]) + "-" +
            point_text(m_.points[w]);
   }
-  std::string tri_text(std::uint32_t code) const { return mesh_triangle_text(m_, tri(code)); }
+  std::string tri_text(std::uint32_t t) const { return mesh_triangle_text(m_, t); }
   // The subdomain mesh segment s is an interior segment of, or no_index.
   std::uint32_t interior_owner(std::uint32_t s) const noexcept {
     const std::uint32_t piece = m_.segments[s].piece;
@@ -140,95 +126,126 @@ private:
            std::to_string(s);
   }
 
-  void edge(std::uint32_t v, std::uint32_t w, std::span<const Half> halves, std::span<const SegEnd> segs) {
-    // Forward halves run v -> w (v is the lower vertex), backward w -> v.
-    std::uint32_t forward = 0, backward = 0, f = no_index, b = no_index;
-    std::uint32_t twin = no_index, twin_of = no_index;  // two triangles with the edge the same way
-    for (const Half& h : halves) {
-      const bool ahead = from(h.code) == v;
-      std::uint32_t& same = ahead ? f : b;
-      if (same != no_index && twin == no_index) {
-        twin = h.code;
-        twin_of = same;
-      }
-      same = h.code;
-      ++(ahead ? forward : backward);
-    }
-    // Twice the area: what this edge adds to the triangles' shoelace sums.
-    for (std::uint32_t k = forward; k < backward; ++k) out_.twice_area.add_cross(m_.points[w], m_.points[v]);
-    for (std::uint32_t k = backward; k < forward; ++k) out_.twice_area.add_cross(m_.points[v], m_.points[w]);
-    if (segs.size() > 1)
-      log_.add("mesh segments " + std::to_string(segs[0].segment) + " and " + std::to_string(segs[1].segment) +
-               " are the same " + edge_text(v, w));
-    if (twin != no_index) {
-      log_.add(tri_text(twin_of) + " and " + tri_text(twin) + " both have " + edge_text(from(twin), to(twin)) +
-               " in the same direction (" + std::to_string(forward + backward) + " triangles share it)");
+  void edge(std::uint32_t t, std::uint32_t i) {
+    const std::uint32_t a = from(t, i), b = to(t, i);
+    if (a == b) return;  // a repeated vertex: reported by the orientation check
+    const std::uint32_t u = m_.neighbours[t][i];
+    if (u == no_index) return free_edge(t, a, b);
+    const std::uint32_t j = side_of(u, b, a);
+    if (j == 3 || m_.neighbours[u][j] != t) return broken_link(t, u, j, a, b);
+    if (u < t) return;  // the pair, once, from its lower triangle
+    pair(t, u, j, a, b);
+  }
+
+  void free_edge(std::uint32_t t, std::uint32_t a, std::uint32_t b) {
+    out_.edges.boundary.push_back({a, b, 0});
+    out_.edges.twice_area.add_cross(m_.points[a], m_.points[b]);
+    const std::uint32_t s = segments_.at(a, b);
+    if (s == no_index) {
+      log_.add(edge_text(a, b) + " of " + tri_text(t) +
+               " is in no other triangle but is no boundary segment: a hole or a tear in the mesh");
       return;
     }
-    const bool has_seg = !segs.empty();
-    const std::uint32_t s = has_seg ? segs[0].segment : no_index;
-    const bool separator = has_seg && m_.segments[s].marker == 0;
-    if (forward + backward == 0) {
-      log_.add(seg_text(s) + " (" + edge_text(v, w) + ") is not an edge of any triangle");
-      return;
+    out_.segments.push_back(s);
+    if (m_.segments[s].marker == 0 || interior_owner(s) != no_index)
+      log_.add(seg_text(s) + " (" + edge_text(a, b) + ") is in one triangle only, " + tri_text(t));
+  }
+
+  // t names u across a -> b, but u has no side b -> a naming t back (j: u's
+  // side b -> a, or 3). This side's edge counts in the area as a free one.
+  void broken_link(std::uint32_t t, std::uint32_t u, std::uint32_t j, std::uint32_t a, std::uint32_t b) {
+    out_.edges.twice_area.add_cross(m_.points[a], m_.points[b]);
+    if (j != 3) {
+      log_.add(tri_text(t) + " and " + tri_text(u) + " share " + edge_text(a, b) + " but name " + std::to_string(u) +
+               " and " + std::to_string(m_.neighbours[u][j]) + " as their neighbours across it");
+    } else if (side_of(u, a, b) != 3) {
+      log_.add(tri_text(t) + " and " + tri_text(u) + " both have " + edge_text(a, b) + " in the same direction (and " +
+               std::to_string(t) + " names " + std::to_string(u) + " as its neighbour across it)");
+    } else {
+      log_.add(tri_text(t) + " names triangle " + std::to_string(u) + " as its neighbour across " + edge_text(a, b) +
+               ", which that triangle does not have the other way");
     }
-    if (forward + backward == 1) {
-      const std::uint32_t code = forward == 1 ? f : b;
-      out_.boundary.push_back({from(code), to(code), 0});
-      if (neighbour(code) != no_index)
-        log_.add(tri_text(code) + " names triangle " + std::to_string(neighbour(code)) + " as its neighbour across " +
-                 edge_text(v, w) + ", which no other triangle has the other way");
-      if (!has_seg)
-        log_.add(edge_text(v, w) + " of " + tri_text(code) +
-                 " is in no other triangle but is no boundary segment: a hole or a tear in the mesh");
-      else if (separator || interior_owner(s) != no_index)
-        log_.add(seg_text(s) + " (" + edge_text(v, w) + ") is in one triangle only, " + tri_text(code));
-      return;
-    }
-    // One triangle each way.
-    if (neighbour(f) != tri(b) || neighbour(b) != tri(f)) {
-      log_.add(tri_text(f) + " and " + tri_text(b) + " share " + edge_text(v, w) + " but name " +
-               std::to_string(neighbour(f)) + " and " + std::to_string(neighbour(b)) +
-               " as their neighbours across it");
-    }
-    const std::uint32_t kf = subdomain(f), kb = subdomain(b);
-    if (kf != kb) {
+  }
+
+  // t and u, t < u, glued mutually along t's side a -> b (u's side j, b -> a).
+  void pair(std::uint32_t t, std::uint32_t u, std::uint32_t j, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t s = segments_.at(a, b);
+    const bool separator = s != no_index && m_.segments[s].marker == 0;
+    if (s != no_index) out_.segments.push_back(s);
+    const std::uint32_t kt = m_.triangle_subdomain[t], ku = m_.triangle_subdomain[u];
+    if (kt != ku) {
       if (!separator)
-        log_.add(edge_text(v, w) + " between subdomains " + std::to_string(kf) + " and " + std::to_string(kb) + " (" +
-                 tri_text(f) + ", " + tri_text(b) + ") is " +
-                 (has_seg ? "a boundary segment" : "no separator segment"));
+        log_.add(edge_text(a, b) + " between subdomains " + std::to_string(kt) + " and " + std::to_string(ku) + " (" +
+                 tri_text(t) + ", " + tri_text(u) + ") is " +
+                 (s != no_index ? "a boundary segment" : "no separator segment"));
       return;
     }
-    if (has_seg) {
+    if (s != no_index) {
       // A constraint inside the subdomain: no Delaunay test across it.
-      if (!separator && interior_owner(s) == kf) return;
-      log_.add(seg_text(s) + " (" + edge_text(v, w) + ") lies inside subdomain " + std::to_string(kf) + ", between " +
-               tri_text(f) + " and " + tri_text(b) +
+      if (!separator && interior_owner(s) == kt) return;
+      log_.add(seg_text(s) + " (" + edge_text(a, b) + ") lies inside subdomain " + std::to_string(kt) + ", between " +
+               tri_text(t) + " and " + tri_text(u) +
                (interior_owner(s) != no_index
                     ? " (its piece is interior to subdomain " + std::to_string(interior_owner(s)) + ")"
                     : ""));
       return;
     }
-    if (ccw_[tri(f)] == 0 || ccw_[tri(b)] == 0) return;  // already reported; the test needs CCW
-    const auto& c = m_.triangles[tri(f)];
-    const std::uint32_t far = m_.triangles[tri(b)][side(b)];
+    if (ccw_[t] == 0 || ccw_[u] == 0) return;  // already reported; the test needs CCW
+    const auto& c = m_.triangles[t];
+    const std::uint32_t far = m_.triangles[u][j];
     if (incircle(m_.points[c[0]], m_.points[c[1]], m_.points[c[2]], m_.points[far]) > 0.0)
-      log_.add(edge_text(v, w) + " of subdomain " + std::to_string(kf) + " is not locally Delaunay: vertex " +
-               std::to_string(far) + " " + point_text(m_.points[far]) + " of " + tri_text(b) +
-               " is strictly inside the circumcircle of " + tri_text(f));
+      log_.add(edge_text(a, b) + " of subdomain " + std::to_string(kt) + " is not locally Delaunay: vertex " +
+               std::to_string(far) + " " + point_text(m_.points[far]) + " of " + tri_text(u) +
+               " is strictly inside the circumcircle of " + tri_text(t));
   }
 
   const Mesh& m_;
   const std::vector<std::uint8_t>& ccw_;
+  const std::vector<std::uint32_t>& owner_;  // per decomposition segment: the subdomain it is interior to
+  const SegmentsByEdge& segments_;
   ProblemLog& log_;
-  std::vector<std::uint32_t> owner_;  // per decomposition segment: the subdomain it is interior to
-  MeshEdges out_;
+  ChunkEdges out_;
 };
+
+// Every mesh segment is exactly one free edge or one mutual pair: `found`
+// lists the segment of each (chunk by chunk, in triangle order).
+void check_segments_found(const Mesh& m, const std::vector<ChunkEdges>& found, ProblemLog& log) {
+  std::vector<std::uint32_t> times(m.segments.size(), 0);
+  for (const ChunkEdges& chunk : found)
+    for (const std::uint32_t s : chunk.segments) ++times[s];
+  for (std::uint32_t s = 0; s < m.segments.size(); ++s) {
+    if (times[s] == 1) continue;
+    const MeshSegment& g = m.segments[s];
+    const std::string which = (g.marker == 0 ? "separator segment " : "mesh segment ") + std::to_string(s) + " (edge " +
+                              std::to_string(std::min(g.a, g.b)) + "-" + std::to_string(std::max(g.a, g.b)) + ")";
+    if (times[s] == 0) log.add(which + " is not an edge of any triangle");
+    else
+      log.add(which + " is an edge of " + std::to_string(times[s]) +
+              " places of the mesh: two triangles lie on one side of it");
+  }
+}
 
 }  // namespace
 
-MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log) {
-  return EdgePass(mesh, ccw, log).run();
+// In chunks of triangles (four per thread), their problems, areas, free
+// edges and segments joined in chunk order: the same report for any count.
+MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& ccw, ProblemLog& log, unsigned threads) {
+  const std::vector<std::uint32_t> owner = interior_segment_owners(mesh.decomposition);
+  const SegmentsByEdge segments(mesh, log);
+  const std::size_t nt = mesh.triangles.size();
+  const std::size_t parts = 4 * std::size_t{thread_count(threads, nt)};
+  std::vector<ChunkEdges> found(std::clamp<std::size_t>(parts, 1, std::max<std::size_t>(nt, 1)));
+  log_in_parts(nt, parts, threads, log, [&](std::size_t part, std::size_t begin, std::size_t end, ProblemLog& mine) {
+    found[part] = EdgePass(mesh, ccw, owner, segments, mine)
+                      .run(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end));
+  });
+  check_segments_found(mesh, found, log);
+  MeshEdges edges;
+  for (ChunkEdges& chunk : found) {
+    edges.twice_area.add(chunk.edges.twice_area);
+    edges.boundary.insert(edges.boundary.end(), chunk.edges.boundary.begin(), chunk.edges.boundary.end());
+  }
+  return edges;
 }
 
 }  // namespace madd::detail

@@ -9,7 +9,9 @@
 #include <algorithm>
 
 #include "kernel/segment_grid.hpp"
+#include "kernel/threads.hpp"
 #include "madd/predicates.hpp"
+#include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
@@ -24,24 +26,28 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
 
 }  // namespace
 
-void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary, ProblemLog& log) {
+void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary, ProblemLog& log, unsigned threads) {
   if (boundary.empty()) return;
   const auto& P = m.points;
   std::vector<std::uint8_t> vertex(P.size(), 0);
   for (const auto& c : m.triangles)
     for (const std::uint32_t v : c) vertex[v] = 1;
   const SegmentGrid grid(P, boundary);
-  for (std::uint32_t v = 0; v < P.size(); ++v) {
-    if (vertex[v] == 0 || !grid.contains(P[v])) continue;
-    for (const SegmentGrid::Entry& e : grid.cell_at(P[v])) {
-      const Segment& s = boundary[e.item];
-      if (s.a == v || s.b == v) continue;
-      if (orient2d(P[s.a], P[s.b], P[v]) == 0.0 && strictly_between(P[s.a], P[s.b], P[v]))
-        log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " + std::to_string(s.a) +
-                "-" + std::to_string(s.b) + " " + point_text(P[s.a]) + "-" + point_text(P[s.b]) +
-                ", which only one triangle has (a hanging vertex)");
-    }
-  }
+  const std::size_t parts = 4 * std::size_t{thread_count(threads, P.size())};
+  log_in_parts(P.size(), parts, threads, log,
+               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& part_log) {
+                 for (auto v = static_cast<std::uint32_t>(begin); v < end; ++v) {
+                   if (vertex[v] == 0 || !grid.contains(P[v])) continue;
+                   for (const SegmentGrid::Entry& e : grid.cell_at(P[v])) {
+                     const Segment& s = boundary[e.item];
+                     if (s.a == v || s.b == v) continue;
+                     if (orient2d(P[s.a], P[s.b], P[v]) == 0.0 && strictly_between(P[s.a], P[s.b], P[v]))
+                       part_log.add("vertex " + std::to_string(v) + " " + point_text(P[v]) + " lies inside edge " +
+                                    std::to_string(s.a) + "-" + std::to_string(s.b) + " " + point_text(P[s.a]) + "-" +
+                                    point_text(P[s.b]) + ", which only one triangle has (a hanging vertex)");
+                   }
+                 }
+               });
 }
 
 }  // namespace madd::detail

@@ -9,6 +9,7 @@
 #include "kernel/threads.hpp"
 #include "quality/area_bound.hpp"
 #include "quality/mesh_angle.hpp"
+#include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
@@ -58,24 +59,26 @@ void check_mesh_size(const Mesh& m, const AreaBound& bound_at, const std::vector
   const auto& P = m.points;
   // A triangle within the least bound anywhere (AreaBound::least) is within
   // its own: no query (the check below then passes it with that bound).
-  const std::vector<double> at = per_triangle(m, threads, [&](std::uint32_t t, BoundHint& hint) {
-    const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    if (0.5 * std::abs(cross(b - a, c - a)) <= bound_at.least()) return bound_at.least();
-    return bound_at.area_at(triangle_centroid(a, b, c), &hint);
-  });
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-    const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
-    double bound = at[t];
-    if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
-      bound = std::min(bound, regions[label[t] - 1].max_area);
-    if (!(bound < std::numeric_limits<double>::infinity())) continue;
-    const Point ab = b - a, ac = c - a, bc = c - b;
-    const double twice = std::abs(cross(ab, ac));
-    const double longest2 = std::max({dot(ab, ab), dot(ac, ac), dot(bc, bc)});
-    if (twice > 2.0 * bound * (1.0 + 1e-12) + 32.0 * u * longest2)
-      log.add(mesh_triangle_text(m, t) + " has area " + number_text(0.5 * twice) + ", above the size bound " +
-              number_text(bound) + " at its centroid (the smallest of the size bound and its region's)");
-  }
+  const std::size_t parts = 4 * std::size_t{thread_count(threads, m.triangles.size())};
+  log_in_parts(m.triangles.size(), parts, threads, log,
+               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& part_log) {
+                 BoundHint hint;  // a subdomain's triangles are numbered together: near each other
+                 for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t) {
+                   const Point a = P[m.triangles[t][0]], b = P[m.triangles[t][1]], c = P[m.triangles[t][2]];
+                   const Point ab = b - a, ac = c - a, bc = c - b;
+                   const double twice = std::abs(cross(ab, ac));
+                   double bound = 0.5 * twice <= bound_at.least() ? bound_at.least()
+                                                                  : bound_at.area_at(triangle_centroid(a, b, c), &hint);
+                   if (t < label.size() && label[t] != 0 && regions[label[t] - 1].max_area > 0)
+                     bound = std::min(bound, regions[label[t] - 1].max_area);
+                   if (!(bound < std::numeric_limits<double>::infinity())) continue;
+                   const double longest2 = std::max({dot(ab, ab), dot(ac, ac), dot(bc, bc)});
+                   if (twice > 2.0 * bound * (1.0 + 1e-12) + 32.0 * u * longest2)
+                     part_log.add(mesh_triangle_text(m, t) + " has area " + number_text(0.5 * twice) +
+                                  ", above the size bound " + number_text(bound) +
+                                  " at its centroid (the smallest of the size bound and its region's)");
+                 }
+               });
 }
 
 // The angle measure is smallest_angle_deg (quality/mesh_angle.hpp), the one

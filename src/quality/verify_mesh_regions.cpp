@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "kernel/number_format.hpp"
+#include "kernel/threads.hpp"
 #include "madd/predicates.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
@@ -56,34 +57,78 @@ void check_interior_points(const Mesh& m, ProblemLog& log) {
   }
 }
 
-std::vector<std::uint32_t> mesh_regions(const Mesh& m) {
+// The flood of each region reaches the triangles connected to its first
+// one across edges that are no constraint: a component of that adjacency
+// (the mesh's links are mutual, or the edge pass has said otherwise). The
+// components are found per subdomain on `threads` threads (a flood inside
+// its triangle range, named by its first triangle), joined across the links
+// that leave a subdomain (separators, mostly) by union-find, and each
+// region colours its component, in input order, the later winning.
+std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
   const std::vector<Region>& regions = m.decomposition.regions;
   std::vector<std::uint32_t> label(m.triangles.size(), 0);
   if (regions.empty()) return label;
+  // The edges a flood does not cross; an edge is looked up only when both
+  // its ends lie on one (most edges have neither).
   std::unordered_set<std::uint64_t> constraint;
+  std::vector<std::uint8_t> on_constraint(m.points.size(), 0);
   for (const MeshSegment& s : m.segments)
-    if (!m.decomposition.is_separator(s.piece)) constraint.insert(key(s.a, s.b));
-  // Per triangle the last flood that reached it, so that each flood visits
-  // its face once.
-  std::vector<std::uint32_t> seen(m.triangles.size(), no_index), stack;
-  for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    const std::uint32_t t0 = triangle_at(m, regions[r].at);
-    if (t0 == no_index) continue;  // in a hole or outside: no region (Triangle ignores it too)
-    seen[t0] = r;
-    stack.assign(1, t0);
-    while (!stack.empty()) {
-      const std::uint32_t t = stack.back();
-      stack.pop_back();
-      label[t] = r + 1;
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t u = m.neighbours[t][i];
-        if (u == no_index || seen[u] == r) continue;
-        if (constraint.count(key(m.triangles[t][(i + 1) % 3], m.triangles[t][(i + 2) % 3])) != 0) continue;
-        seen[u] = r;
-        stack.push_back(u);
+    if (!m.decomposition.is_separator(s.piece)) {
+      constraint.insert(key(s.a, s.b));
+      on_constraint[s.a] = on_constraint[s.b] = 1;
+    }
+  const auto crosses = [&](std::uint32_t t, int i) {
+    const std::uint32_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
+    return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(key(a, b)) == 0;
+  };
+  const auto& first = m.subdomain_first_triangle;
+  const std::size_t n = first.size() - 1;
+  std::vector<std::uint32_t> component(m.triangles.size(), no_index);
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> leaving(n);  // links out of each subdomain
+  for_each_on_threads(n, threads, [&](std::size_t k) {
+    std::vector<std::uint32_t> stack;
+    for (std::uint32_t seed = first[k]; seed < first[k + 1]; ++seed) {
+      if (component[seed] != no_index) continue;
+      component[seed] = seed;
+      stack.assign(1, seed);
+      while (!stack.empty()) {
+        const std::uint32_t t = stack.back();
+        stack.pop_back();
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t u = m.neighbours[t][i];
+          if (u == no_index || !crosses(t, i)) continue;
+          if (u < first[k] || u >= first[k + 1]) {
+            leaving[k].emplace_back(t, u);
+          } else if (component[u] == no_index) {
+            component[u] = seed;
+            stack.push_back(u);
+          }
+        }
       }
     }
+  });
+  // Union-find on the components' first triangles, the lower one the root.
+  std::vector<std::uint32_t> parent(m.triangles.size());
+  for (std::uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+  const auto root = [&](std::uint32_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  };
+  for (const auto& links : leaving)
+    for (const auto& [t, u] : links) {
+      const std::uint32_t a = root(component[t]), b = root(component[u]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<std::uint32_t> region_of(m.triangles.size(), 0);  // per root: 1 + its region, 0 for none
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    const std::uint32_t t0 = triangle_at(m, regions[r].at);
+    if (t0 != no_index) region_of[root(component[t0])] = r + 1;  // in a hole or outside: no region (as Triangle)
   }
+  for (std::uint32_t t = 0; t < component.size(); ++t)
+    if (component[t] == t) region_of[t] = region_of[root(t)];  // every component's own name, then read in parallel
+  for_each_on_threads(n, threads, [&](std::size_t k) {
+    for (std::uint32_t t = first[k]; t < first[k + 1]; ++t) label[t] = region_of[component[t]];
+  });
   return label;
 }
 
