@@ -63,12 +63,13 @@ int mesh_body(void* context) {
   const MeshReport& report = run.report;
   progress.say("writing");
   OutputSet outputs;
-  add_mesh(outputs, m, args.prefix, line.formats);
+  add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
   if (!line.split_mesh_dir.empty()) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
     add_split_mesh(outputs, m, line.split_mesh_dir, stem, line.formats.first_index);
   }
-  const MeshMetrics figures = line.report || !line.quiet ? mesh_metrics(m, options.size) : MeshMetrics{};
+  const MeshMetrics figures =
+      line.report || !line.quiet ? mesh_metrics(m, options.size, options.decomposition.threads) : MeshMetrics{};
   std::string json;
   if (line.report) {
     std::vector<RunFigure> figures_of_run = run_figures(report);

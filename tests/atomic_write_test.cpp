@@ -113,4 +113,48 @@ TEST_CASE("a path named twice in one set is refused before anything is written")
   CHECK_FALSE(fs::exists(s.dir / "a.txt"));
 }
 
+// A file made in pieces while it is written: the pieces in order whatever
+// thread makes which, and a failure in any piece leaves nothing.
+TEST_CASE("a file made in pieces is the pieces in order, for any thread count") {
+  const Scratch s;
+  // Pieces of uneven size, so that later ones often finish before earlier
+  // ones when threads race.
+  const auto piece = [](std::size_t i) {
+    std::string text;
+    for (std::size_t k = 0; k < (i % 7) * 1000 + 1; ++k) text += static_cast<char>('a' + (i + k) % 26);
+    return text + "|" + std::to_string(i) + "\n";
+  };
+  std::string whole;
+  for (std::size_t i = 0; i < 200; ++i) whole += piece(i);
+  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+    CAPTURE(threads);
+    madd::OutputSet set;
+    set.add_file(s.path("p.txt"), madd::FilePieces{200, piece, threads});
+    set.add_file(s.path("empty.txt"), madd::FilePieces{0, piece, threads});
+    set.write();
+    CHECK(slurp(s.path("p.txt")) == whole);
+    CHECK(slurp(s.path("empty.txt")).empty());
+    CHECK(entries(s.dir) == 2);  // no temporary left
+  }
+}
+
+TEST_CASE("a piece that throws writes no file of the set and leaves no temporary") {
+  const Scratch s;
+  std::ofstream(s.dir / "p.txt") << "earlier";
+  const auto piece = [](std::size_t i) -> std::string {
+    if (i == 37) throw madd::OutputError("piece 37 failed");
+    return std::string(5000, 'x');
+  };
+  for (const unsigned threads : {1u, 3u}) {
+    CAPTURE(threads);
+    madd::OutputSet set;
+    set.add_file(s.path("q.txt"), "before the pieces");
+    set.add_file(s.path("p.txt"), madd::FilePieces{100, piece, threads});
+    CHECK_THROWS_WITH_AS(set.write(), doctest::Contains("piece 37 failed"), madd::OutputError);
+    CHECK(slurp(s.path("p.txt")) == "earlier");
+    CHECK_FALSE(fs::exists(s.dir / "q.txt"));
+    CHECK(entries(s.dir) == 1);
+  }
+}
+
 }  // TEST_SUITE("atomic write")

@@ -81,6 +81,16 @@ TEST_CASE("mesh_metrics: the counts, extremes and balance of the mesh's triangle
                                                        m.subdomains / static_cast<double>(m.triangles)));
 }
 
+TEST_CASE("mesh_metrics: the same figures on 1, 2 and 3 threads") {
+  // The angles are measured in chunks of 16,384 triangles: a mesh of several.
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/estuary.poly");
+  const madd::MeshOptions o = madd::test::options_for(12, 33, madd::domain_area(domain) / 20000);
+  const madd::Mesh mesh = madd::mesh(domain, o);
+  REQUIRE(mesh.triangles.size() > 2 * 16384);
+  const madd::MeshMetrics one = madd::mesh_metrics(mesh, o.size, 1);
+  for (const unsigned threads : {2u, 3u}) CHECK(madd::mesh_metrics(mesh, o.size, threads) == one);
+}
+
 TEST_CASE("mesh_metrics of an empty mesh: no triangle, no ratio") {
   const madd::MeshMetrics m = madd::mesh_metrics(madd::Mesh{});
   CHECK(m.triangles == 0);

@@ -19,10 +19,12 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
+#include "madd/mesh.hpp"
 #include "madd/mesh_output.hpp"
 #include "madd/output.hpp"
 #include "madd/poly_io.hpp"
 #include "mesh_fixtures.hpp"
+#include "output/mesh_text.hpp"
 #include "output_formats_test_support.hpp"
 #include "scratch_files.hpp"
 #include "mesh_output_test_support.hpp"
@@ -432,6 +434,32 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
                                                 "m-3.ele", "m-3.node", "notes.txt", "other-1.node"});
   CHECK(read_text(dir / "m-2.ele") == format_subdomain_mesh_ele(square_mesh(), 2));
   CHECK(tmp.names(tmp.path) == std::set<std::string>{"parts"});  // no staging directory left behind
+}
+
+// The Triangle files are made in pieces of 65,536 lines on the threads
+// while they are written (src/output/mesh_text.hpp): a mesh of several
+// pieces gives the same bytes on 1, 2 and 3 threads, those of format_mesh_*.
+TEST_CASE("write_mesh on threads: the same bytes, piece after piece") {
+  TempDir tmp("mesh-output-pieces");
+  MeshOptions o;
+  o.decomposition.subdomains = 8;
+  o.decomposition.threads = 2;
+  o.size.max_triangle_area = 0.002;
+  const Mesh m = mesh(read_domain(MADD_DATA_DIR "/pipe.poly"), o);
+  REQUIRE(m.triangles.size() > 2 * detail::mesh_lines_per_piece);  // three pieces of .ele at least
+  MeshFormats formats;
+  formats.neigh = true;
+  const std::string node = format_mesh_node(m), ele = format_mesh_ele(m), neigh = format_mesh_neigh(m);
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    CAPTURE(threads);
+    std::string name = "t";  // appended: GCC 12 warns (-Wrestrict, a false positive) on "t" + a temporary
+    name += std::to_string(threads);
+    const std::string prefix = (tmp.path / name).string();
+    write_mesh(m, prefix, formats, threads);
+    CHECK(read_text(prefix + ".node") == node);
+    CHECK(read_text(prefix + ".ele") == ele);
+    CHECK(read_text(prefix + ".neigh") == neigh);
+  }
 }
 
 TEST_CASE("write_mesh writes the chosen formats; a missing directory fails and leaves nothing") {

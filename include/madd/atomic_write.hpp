@@ -29,10 +29,23 @@ bool interrupt_output_writes() noexcept;
 // themselves are renames within each target's directory, which do not fail
 // for space; should one fail anyway, the error says which outputs were
 // already in place.
+// A file's text made in pieces: make(i) returns piece i of `count`, on any
+// of `threads` threads (several at once). The pieces are written in order,
+// each as soon as it and all before it are made, a few pieces ahead at the
+// most, so the whole text is never held at once and making overlaps writing;
+// the file is the same for any thread count. Whatever make reads must live
+// until the set is written.
+struct FilePieces {
+  std::size_t count = 0;
+  std::function<std::string(std::size_t piece)> make;
+  unsigned threads = 1;
+};
+
 class OutputSet {
 public:
   // One file. Throws OutputError when `path` is already in the set.
   void add_file(std::string path, std::string contents);
+  void add_file(std::string path, FilePieces pieces);
   // A directory holding `files` (name, contents; names without '/'), created
   // or updated: files of an existing `dir` for which `is_stale(name)` is true
   // and that are not in `files` are removed once the new ones are in place
@@ -52,6 +65,7 @@ public:
 private:
   struct File {
     std::string path, contents;
+    FilePieces pieces;  // when pieces.make: the contents, made while writing
   };
   struct Directory {
     std::string path;

@@ -47,11 +47,12 @@ struct MeshMetrics {
   friend bool operator==(const MeshMetrics&, const MeshMetrics&) = default;
 };
 
-// Every figure of `mesh`; max_area_bound from `size`.
-MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size = {});
+// Every figure of `mesh`; max_area_bound from `size`. The angles are measured
+// on `threads` threads (0: one per core), the same figures for any count.
+MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size = {}, unsigned threads = 1);
 // The same figures of one share's triangles (MeshPart::mesh): subdomains is
 // the whole count, largest_subdomain_triangles that of the share's largest.
-MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size = {});
+MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size = {}, unsigned threads = 1);
 
 // One figure of a run beside the mesh's own, as a report writes it after
 // them: a number, a list of seconds, or named seconds. Run figures (times,

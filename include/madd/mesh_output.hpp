@@ -96,10 +96,13 @@ struct MeshFormats {
 
 // Adds the chosen files of `mesh` under `prefix` to `outputs` (nothing is
 // written yet). Throws OptionError on a bad first_index, OutputError when a
-// path is already in the set.
-void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {});
+// path is already in the set. The .node, .ele and .neigh files are made
+// while they are written, on `threads` threads (0: one per core), the same
+// bytes for any count (FilePieces): `mesh` must outlive outputs.write().
+void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {},
+              unsigned threads = 1);
 // The same, written at once, all or nothing. Throws OutputError on I/O failure.
-void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {});
+void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {}, unsigned threads = 1);
 
 // --split-mesh DIR: directory `dir` (created when missing) holding, for every
 // subdomain k, split_mesh_file_name(stem, k, N, ".node") and ".ele". Files of

@@ -9,8 +9,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
 #include <system_error>
+#include <thread>
 
+#include "kernel/threads.hpp"
 #include "madd/error.hpp"
 
 namespace madd {
@@ -51,6 +57,98 @@ void write_temporary(const std::string& path, const std::string& tmp, std::strin
   const int saved = errno;
   const bool closed = std::fclose(f) == 0;
   if (interrupt_requested.load()) {  // a signal arrived while writing: leave nothing behind
+    std::remove(tmp.c_str());
+    throw_if_interrupted(path);
+  }
+  if (!written || !closed) {
+    std::remove(tmp.c_str());
+    throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
+  }
+}
+
+// The pieces' writer: make() runs on the workers, the calling thread writes
+// piece after piece in order, and the workers stay at most `window` pieces
+// ahead of it (the memory held is a few pieces, not the file).
+class PieceWriter {
+public:
+  PieceWriter(const FilePieces& pieces, std::FILE* f) : pieces_(pieces), f_(f), made_(pieces.count) {}
+
+  // True when every piece was written; throws what make() threw.
+  bool run() {
+    const unsigned workers = detail::thread_count(pieces_.threads, pieces_.count);
+    window_ = 4 * std::size_t{workers};
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < workers && pieces_.count > 0; ++w) pool.emplace_back([this] { work(); });
+    bool written = true;
+    for (std::size_t i = 0; i < pieces_.count && written; ++i) {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return made_[i].has_value() || error_; });
+      if (error_) break;
+      const std::string piece = std::move(*made_[i]);
+      made_[i].reset();
+      written_ = i + 1;
+      lock.unlock();
+      changed_.notify_all();
+      written = std::fwrite(piece.data(), 1, piece.size(), f_) == piece.size() && !interrupt_requested.load();
+    }
+    {
+      const std::lock_guard lock(mutex_);
+      stop_ = true;
+    }
+    changed_.notify_all();
+    for (std::thread& t : pool) t.join();
+    if (error_) std::rethrow_exception(error_);
+    return written;
+  }
+
+private:
+  void work() {
+    for (;;) {
+      std::size_t i = 0;
+      {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return stop_ || error_ || next_ >= pieces_.count || next_ < written_ + window_; });
+        if (stop_ || error_ || next_ >= pieces_.count) return;
+        i = next_++;
+      }
+      try {
+        std::string piece = pieces_.make(i);
+        const std::lock_guard lock(mutex_);
+        made_[i] = std::move(piece);
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+      }
+      changed_.notify_all();
+    }
+  }
+
+  const FilePieces& pieces_;
+  std::FILE* f_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::vector<std::optional<std::string>> made_;
+  std::size_t next_ = 0, written_ = 0, window_ = 1;
+  bool stop_ = false;
+  std::exception_ptr error_;
+};
+
+// The same as write_temporary, the contents made in pieces while writing.
+void write_temporary(const std::string& path, const std::string& tmp, const FilePieces& pieces) {
+  throw_if_interrupted(path);
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
+  bool written = false;
+  try {
+    written = PieceWriter(pieces, f).run();
+  } catch (...) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    throw;
+  }
+  const int saved = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (interrupt_requested.load()) {
     std::remove(tmp.c_str());
     throw_if_interrupted(path);
   }
@@ -158,7 +256,12 @@ void OutputSet::claim(const std::string& path) {
 
 void OutputSet::add_file(std::string path, std::string contents) {
   claim(path);
-  files_.push_back({std::move(path), std::move(contents)});
+  files_.push_back({std::move(path), std::move(contents), {}});
+}
+
+void OutputSet::add_file(std::string path, FilePieces pieces) {
+  claim(path);
+  files_.push_back({std::move(path), {}, std::move(pieces)});
 }
 
 void OutputSet::add_directory(std::string dir, std::vector<std::pair<std::string, std::string>> files,
@@ -182,7 +285,8 @@ void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
       Staged s;
       s.target = files_[k].path;
       s.staged = temporary_name(files_[k].path, k);
-      write_temporary(files_[k].path, s.staged.string(), files_[k].contents);
+      if (files_[k].pieces.make) write_temporary(files_[k].path, s.staged.string(), files_[k].pieces);
+      else write_temporary(files_[k].path, s.staged.string(), files_[k].contents);
       staged.push_back(std::move(s));
     }
     for (const Directory& d : directories_) {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "madd/atomic_write.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
 #include "kernel/number_format.hpp"
@@ -16,6 +17,15 @@ namespace madd::detail {
 
 // Throws OptionError unless first_index is 0 or 1 (Triangle's two numberings).
 void check_first_index(unsigned first_index);
+
+// The whole mesh's .node, .ele and .neigh in pieces of this many lines (the
+// header in the first), made on `threads` threads while they are written
+// (FilePieces); joined, they are format_mesh_node's, ...ele's and ...neigh's
+// text. They read `mesh`, which must outlive the write.
+inline constexpr std::size_t mesh_lines_per_piece = std::size_t{1} << 16;
+FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
+FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
+FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
 
 // One value of a line: integers as they are, doubles as %.17g, so a vertex
 // has the same text in the whole mesh's files and in its split pieces.

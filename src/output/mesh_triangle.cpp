@@ -53,41 +53,96 @@ int ele_attributes(const Mesh& mesh) { return detail::has_region_attributes(mesh
 
 }  // namespace
 
-std::string format_mesh_node(const Mesh& mesh, unsigned first_index) {
-  detail::check_first_index(first_index);
+namespace {
+
+// Piece `piece` of a file of `lines` lines after its header: lines
+// [piece L, (piece + 1) L), L = mesh_lines_per_piece, the header first in
+// piece 0; body(out, i) appends line i.
+template <typename Header, typename Body>
+std::string file_piece(std::size_t lines, std::size_t piece, std::size_t bytes_per_line, Header header, Body body) {
+  const std::size_t begin = piece * detail::mesh_lines_per_piece;
+  const std::size_t end = std::min(lines, begin + detail::mesh_lines_per_piece);
   std::string out;
-  out.reserve(48 * mesh.points.size() + 32);
-  line(out, mesh.points.size(), 2, 0, 1);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-    const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
-    line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
-  }
+  out.reserve(bytes_per_line * (end > begin ? end - begin : 0) + 32);
+  if (piece == 0) header(out);
+  for (std::size_t i = begin; i < end; ++i) body(out, i);
   return out;
+}
+
+// The whole file: its pieces joined.
+std::string joined(const FilePieces& pieces) {
+  std::string out;
+  for (std::size_t i = 0; i < pieces.count; ++i) out += pieces.make(i);
+  return out;
+}
+
+std::size_t piece_count(std::size_t lines) { return lines / detail::mesh_lines_per_piece + 1; }
+
+}  // namespace
+
+namespace detail {
+
+FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  check_first_index(first_index);
+  const std::size_t n = mesh.points.size();
+  return {piece_count(n),
+          [&mesh, first_index, n](std::size_t piece) {
+            return file_piece(
+                n, piece, 48, [&](std::string& out) { line(out, n, 2, 0, 1); },
+                [&](std::string& out, std::size_t v) {
+                  const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
+                  line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
+                });
+          },
+          threads};
+}
+
+FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  check_first_index(first_index);
+  const std::size_t n = mesh.triangles.size();
+  return {piece_count(n),
+          [&mesh, first_index, n](std::size_t piece) {
+            const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
+            return file_piece(
+                n, piece, 40, [&](std::string& out) { line(out, n, 3, ele_attributes(mesh)); },
+                [&](std::string& out, std::size_t t) {
+                  append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
+                                       mesh.triangle_subdomain[t], mesh, t);
+                });
+          },
+          threads};
+}
+
+FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  check_first_index(first_index);
+  const std::size_t n = mesh.neighbours.size();
+  return {piece_count(n),
+          [&mesh, first_index, n](std::size_t piece) {
+            const auto id_of = [first_index](std::uint32_t t) {
+              return t == no_index ? -1 : std::int64_t{t} + first_index;
+            };
+            return file_piece(
+                n, piece, 36, [&](std::string& out) { line(out, mesh.triangles.size(), 3); },
+                [&](std::string& out, std::size_t t) {
+                  const auto& u = mesh.neighbours[t];
+                  line(out, t + first_index, id_of(u[0]), id_of(u[1]), id_of(u[2]));
+                });
+          },
+          threads};
+}
+
+}  // namespace detail
+
+std::string format_mesh_node(const Mesh& mesh, unsigned first_index) {
+  return joined(detail::mesh_node_pieces(mesh, first_index, 1));
 }
 
 std::string format_mesh_ele(const Mesh& mesh, unsigned first_index) {
-  detail::check_first_index(first_index);
-  std::string out;
-  out.reserve(40 * mesh.triangles.size() + 32);
-  line(out, mesh.triangles.size(), 3, ele_attributes(mesh));
-  const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
-                         mesh.triangle_subdomain[t], mesh, t);
-  return out;
+  return joined(detail::mesh_ele_pieces(mesh, first_index, 1));
 }
 
 std::string format_mesh_neigh(const Mesh& mesh, unsigned first_index) {
-  detail::check_first_index(first_index);
-  std::string out;
-  out.reserve(36 * mesh.triangles.size() + 32);
-  line(out, mesh.triangles.size(), 3);
-  const auto id_of = [first_index](std::uint32_t t) { return t == no_index ? -1 : std::int64_t{t} + first_index; };
-  for (std::size_t t = 0; t < mesh.neighbours.size(); ++t) {
-    const auto& n = mesh.neighbours[t];
-    line(out, t + first_index, id_of(n[0]), id_of(n[1]), id_of(n[2]));
-  }
-  return out;
+  return joined(detail::mesh_neigh_pieces(mesh, first_index, 1));
 }
 
 // Each edge once, from the lower-numbered of its two triangles (or its only

@@ -43,21 +43,22 @@ std::string split_mesh_file_name(std::string_view stem, std::uint32_t k, std::ui
   return name;
 }
 
-void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats) {
+void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats,
+              unsigned threads) {
   detail::check_first_index(formats.first_index);
   if (formats.triangle) {
-    outputs.add_file(prefix + ".node", format_mesh_node(mesh, formats.first_index));
-    outputs.add_file(prefix + ".ele", format_mesh_ele(mesh, formats.first_index));
+    outputs.add_file(prefix + ".node", detail::mesh_node_pieces(mesh, formats.first_index, threads));
+    outputs.add_file(prefix + ".ele", detail::mesh_ele_pieces(mesh, formats.first_index, threads));
   }
-  if (formats.neigh) outputs.add_file(prefix + ".neigh", format_mesh_neigh(mesh, formats.first_index));
+  if (formats.neigh) outputs.add_file(prefix + ".neigh", detail::mesh_neigh_pieces(mesh, formats.first_index, threads));
   if (formats.edge) outputs.add_file(prefix + ".edge", format_mesh_edge(mesh, formats.first_index));
   if (formats.msh) outputs.add_file(prefix + ".msh", format_mesh_msh(mesh));
   if (formats.vtu) outputs.add_file(prefix + ".vtu", format_mesh_vtu(mesh));
 }
 
-void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats) {
+void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats, unsigned threads) {
   OutputSet outputs;
-  add_mesh(outputs, mesh, prefix, formats);
+  add_mesh(outputs, mesh, prefix, formats, threads);
   outputs.write();
 }
 
