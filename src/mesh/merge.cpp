@@ -6,6 +6,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "kernel/threads.hpp"
 #include "madd/error.hpp"
 
 namespace madd::detail {
@@ -67,7 +68,7 @@ std::vector<std::uint32_t> global_ids(const LocalDomain& local, const SubdomainM
 // The edges of each boundary or interior piece (refinement may split both),
 // along its local segment: its end, the Steiner points on it by parameter,
 // its other end.
-void add_boundary_segments(Mesh& m, const LocalDomain& local, const SubdomainMesh& piece,
+void add_boundary_segments(std::vector<MeshSegment>& out, const LocalDomain& local, const SubdomainMesh& piece,
                            const std::vector<std::uint32_t>& ids) {
   std::vector<std::tuple<std::uint32_t, double, std::uint32_t>> on;  // (local segment, parameter, vertex)
   for (std::size_t v = local.to_global.size(); v < piece.points.size(); ++v) {
@@ -82,108 +83,159 @@ void add_boundary_segments(Mesh& m, const LocalDomain& local, const SubdomainMes
     std::uint32_t from = ids[seg.a];
     for (; at < on.size() && std::get<0>(on[at]) == s; ++at) {
       const std::uint32_t v = ids[std::get<2>(on[at])];
-      m.segments.push_back({from, v, seg.marker, local.piece[s]});
+      out.push_back({from, v, seg.marker, local.piece[s]});
       from = v;
     }
-    m.segments.push_back({from, ids[seg.b], seg.marker, local.piece[s]});
+    out.push_back({from, ids[seg.b], seg.marker, local.piece[s]});
   }
 }
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
+// One subdomain's side of each of its separator segments: the separator
+// (global id) and the edge 3 t + i (global t) of the triangle along it.
+using SeparatorSides = std::vector<std::pair<std::uint32_t, std::uint64_t>>;
 
-// Triangles on the two sides of a separator edge see each other: each side
-// has the edge as a neighbourless edge; they are paired by their vertices.
-void link_across_separators(Mesh& m) {
-  std::unordered_map<std::uint64_t, std::uint64_t> open;  // edge -> 3 t + i of the first side seen
-  for (const MeshSegment& s : m.segments) {
-    if (s.marker == 0 && m.decomposition.is_separator(s.piece)) open.emplace(edge_key(s.a, s.b), ~std::uint64_t{0});
-  }
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+// Subdomain k's triangles along its separator segments (never split, so each
+// is one edge with no neighbour across, between the segment's own ends).
+SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p, std::uint32_t first_triangle) {
+  std::unordered_map<std::uint64_t, std::uint32_t> separator;  // local edge -> local segment
+  for (std::uint32_t s = 0; s < local.pslg.segments.size(); ++s)
+    if (!local.splittable[s]) {
+      const Segment& g = local.pslg.segments[s];
+      separator.emplace((std::uint64_t{std::min(g.a, g.b)} << 32) | std::max(g.a, g.b), s);
+    }
+  SeparatorSides sides;
+  if (separator.empty()) return sides;
+  for (std::uint32_t t = 0; t < p.triangles.size(); ++t)
     for (std::uint32_t i = 0; i < 3; ++i) {
-      if (m.neighbours[t][i] != no_index) continue;
-      const auto it = open.find(edge_key(m.triangles[t][(i + 1) % 3], m.triangles[t][(i + 2) % 3]));
-      if (it == open.end()) continue;
-      if (it->second == ~std::uint64_t{0}) {
-        it->second = 3 * std::uint64_t{t} + i;
+      if (p.neighbours[t][i] != no_index) continue;
+      const std::uint32_t a = p.triangles[t][(i + 1) % 3], b = p.triangles[t][(i + 2) % 3];
+      const auto it = separator.find((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b));
+      if (it != separator.end()) sides.emplace_back(local.piece[it->second], 3 * std::uint64_t{first_triangle + t} + i);
+    }
+  return sides;
+}
+
+// Triangles on the two sides of a separator edge see each other: each
+// subdomain found its side; the second side found (in subdomain order)
+// links the two.
+void link_across_separators(Mesh& m, const std::vector<SeparatorSides>& sides) {
+  std::vector<std::uint64_t> first_side(m.decomposition.segments.size(), ~std::uint64_t{0});
+  for (const SeparatorSides& mine : sides)
+    for (const auto& [j, code] : mine) {
+      if (first_side[j] == ~std::uint64_t{0}) {
+        first_side[j] = code;
         continue;
       }
-      const auto u = static_cast<std::uint32_t>(it->second / 3);
-      const auto j = static_cast<std::uint32_t>(it->second % 3);
-      m.neighbours[t][i] = u;
-      m.neighbours[u][j] = t;
+      const auto t = static_cast<std::uint32_t>(code / 3), u = static_cast<std::uint32_t>(first_side[j] / 3);
+      m.neighbours[t][code % 3] = u;
+      m.neighbours[u][first_side[j] % 3] = t;
     }
+}
+
+// Where each subdomain's Steiner points and triangles go in the merged mesh.
+struct Placement {
+  std::vector<std::uint32_t> first_point, first_triangle;  // per subdomain, N + 1 entries
+};
+
+Placement place(const Decomposition& d, const std::vector<SubdomainMesh>& pieces, const std::vector<LocalDomain>& local,
+                const std::vector<bool>& kept) {
+  Placement at;
+  std::size_t points = d.points.size(), triangles = 0;
+  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+    at.first_point.push_back(static_cast<std::uint32_t>(points));
+    at.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
+    if (!kept[k]) continue;
+    points += pieces[k].points.size() - local[k].to_global.size();
+    triangles += pieces[k].triangles.size();
   }
+  if (points >= no_index || triangles >= no_index)
+    throw LimitError("the merged mesh would have " + std::to_string(points) + " points and " +
+                     std::to_string(triangles) + " triangles: more than 32-bit indices can number");
+  at.first_point.push_back(static_cast<std::uint32_t>(points));
+  at.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
+  return at;
+}
+
+// Subdomain k's points and triangles into their places (its own ranges:
+// any number of subdomains at once); ids: its points' global ids, base: its
+// first triangle.
+void copy_piece(Mesh& m, const LocalDomain& local, const SubdomainMesh& p, const std::vector<std::uint32_t>& ids,
+                std::uint32_t k, std::uint32_t base) {
+  for (std::size_t v = local.to_global.size(); v < p.points.size(); ++v) {
+    const std::uint32_t g = ids[v];
+    m.points[g] = p.points[v];
+    const std::uint32_t s = p.point_segment[v];
+    m.point_markers[g] = s == no_index ? 0 : local.pslg.segments[s].marker;
+  }
+  for (std::uint32_t t = 0; t < p.triangles.size(); ++t) {
+    const auto& tri = p.triangles[t];
+    m.triangles[base + t] = {ids[tri[0]], ids[tri[1]], ids[tri[2]]};
+    const auto& n = p.neighbours[t];
+    m.neighbours[base + t] = {n[0] == no_index ? no_index : base + n[0], n[1] == no_index ? no_index : base + n[1],
+                              n[2] == no_index ? no_index : base + n[2]};
+    m.triangle_subdomain[base + t] = k;
+  }
+  if (!m.decomposition.regions.empty() && p.triangle_attribute.size() == p.triangles.size())
+    std::copy(p.triangle_attribute.begin(), p.triangle_attribute.end(), m.triangle_attribute.begin() + base);
 }
 
 }  // namespace
 
+// Every subdomain on its own thread into its own ranges (placed by prefix
+// sums in subdomain order), then the short serial steps: the segments in
+// decomposition order and the links across separators.
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
-           const std::vector<bool>* kept) {
-  const auto is_kept = [kept](std::uint32_t k) { return kept == nullptr || (*kept)[k]; };
+           const std::vector<bool>* kept_or_all, unsigned threads) {
+  const std::vector<bool> kept = kept_or_all != nullptr ? *kept_or_all : std::vector<bool>(pieces.size(), true);
+  std::vector<LocalDomain> local(pieces.size());
+  for_each_on_threads(pieces.size(), threads, [&](std::size_t k) {
+    if (kept[k]) local[k] = local_domain(d, static_cast<std::uint32_t>(k));
+  });
+  const Placement at = place(d, pieces, local, kept);
   Mesh m;
   m.decomposition = d;
   m.min_triangle_angle_deg = min_triangle_angle_deg;
   m.points = d.points;
-  m.point_markers.assign(d.points.size(), 0);
+  m.points.resize(at.first_point.back());
+  m.point_markers.assign(at.first_point.back(), 0);
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     if (d.is_separator(j)) continue;
     const Segment& s = d.segments[j];
     m.point_markers[s.a] = std::max(m.point_markers[s.a], s.marker);
     m.point_markers[s.b] = std::max(m.point_markers[s.b], s.marker);
   }
-  std::size_t triangles = 0;
-  for (const SubdomainMesh& p : pieces) triangles += p.triangles.size();
-  m.triangles.reserve(triangles);
-  m.neighbours.reserve(triangles);
-  m.triangle_subdomain.reserve(triangles);
-  if (!d.regions.empty()) m.triangle_attribute.reserve(triangles);
-  m.subdomain_first_triangle.push_back(0);
-  std::vector<std::vector<MeshSegment>> boundary(d.segments.size());
-  std::vector<bool> kept_separator(d.segments.size(), kept == nullptr);
+  const std::uint32_t triangles = at.first_triangle.back();
+  m.triangles.resize(triangles);
+  m.neighbours.resize(triangles);
+  m.triangle_subdomain.resize(triangles);
+  if (!d.regions.empty()) m.triangle_attribute.assign(triangles, 0.0);  // 0: a subdomain in no region
+  m.subdomain_first_triangle = at.first_triangle;
   for (std::uint32_t k = 0; k < pieces.size(); ++k) {
-    if (!is_kept(k)) {
-      m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
-      continue;
-    }
+    if (!kept[k]) continue;
+    m.shortfall.input_angle += pieces[k].shortfall.input_angle;
+    m.shortfall.separator += pieces[k].shortfall.separator;
+    m.shortfall.precision += pieces[k].shortfall.precision;
+    m.shortfall.limit += pieces[k].shortfall.limit;
+  }
+  std::vector<std::vector<MeshSegment>> segments_of(pieces.size());
+  std::vector<SeparatorSides> sides(pieces.size());
+  for_each_on_threads(pieces.size(), threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    if (!kept[k]) return;
+    SubdomainMesh& p = pieces[k];
+    const std::vector<std::uint32_t> ids = global_ids(local[k], p, at.first_point[k]);
+    add_boundary_segments(segments_of[k], local[k], p, ids);
+    sides[k] = separator_sides(local[k], p, at.first_triangle[k]);
+    copy_piece(m, local[k], p, ids, k, at.first_triangle[k]);
+    p = SubdomainMesh{};  // release as we go
+  });
+  std::vector<std::vector<MeshSegment>> boundary(d.segments.size());
+  std::vector<bool> kept_separator(d.segments.size(), kept_or_all == nullptr);
+  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+    if (!kept[k]) continue;
     for (const auto& ring : d.subdomains[k].ring_segments)
       for (const std::uint32_t j : ring) kept_separator[j] = true;
-    SubdomainMesh& p = pieces[k];
-    const LocalDomain local = local_domain(d, k);
-    const auto first_steiner = static_cast<std::uint32_t>(m.points.size());
-    const std::vector<std::uint32_t> ids = global_ids(local, p, first_steiner);
-    for (std::size_t v = local.to_global.size(); v < p.points.size(); ++v) {
-      m.points.push_back(p.points[v]);
-      const std::uint32_t s = p.point_segment[v];
-      m.point_markers.push_back(s == no_index ? 0 : local.pslg.segments[s].marker);
-    }
-    const auto base = static_cast<std::uint32_t>(m.triangles.size());
-    for (std::size_t t = 0; t < p.triangles.size(); ++t) {
-      const auto& tri = p.triangles[t];
-      m.triangles.push_back({ids[tri[0]], ids[tri[1]], ids[tri[2]]});
-      const auto& n = p.neighbours[t];
-      m.neighbours.push_back({n[0] == no_index ? no_index : base + n[0], n[1] == no_index ? no_index : base + n[1],
-                              n[2] == no_index ? no_index : base + n[2]});
-      m.triangle_subdomain.push_back(k);
-    }
-    if (!d.regions.empty()) {
-      if (p.triangle_attribute.size() == p.triangles.size())
-        m.triangle_attribute.insert(m.triangle_attribute.end(), p.triangle_attribute.begin(),
-                                    p.triangle_attribute.end());
-      else m.triangle_attribute.resize(m.triangles.size(), 0.0);  // a subdomain in no region
-    }
-    m.subdomain_first_triangle.push_back(static_cast<std::uint32_t>(m.triangles.size()));
-    std::vector<MeshSegment> mine;
-    std::swap(m.segments, mine);
-    add_boundary_segments(m, local, p, ids);
-    for (const MeshSegment& s : m.segments) boundary[s.piece].push_back(s);
-    std::swap(m.segments, mine);
-    m.shortfall.input_angle += p.shortfall.input_angle;
-    m.shortfall.separator += p.shortfall.separator;
-    m.shortfall.precision += p.shortfall.precision;
-    m.shortfall.limit += p.shortfall.limit;
-    p = SubdomainMesh{};  // release as we go
+    for (const MeshSegment& s : segments_of[k]) boundary[s.piece].push_back(s);
   }
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     if (d.is_separator(j)) {
@@ -192,7 +244,7 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
       m.segments.insert(m.segments.end(), boundary[j].begin(), boundary[j].end());
     }
   }
-  link_across_separators(m);
+  link_across_separators(m, sides);
   return m;
 }
 

@@ -195,7 +195,7 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Dom
   std::vector<std::vector<Region>> regions;
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces, regions);
   report.phases.push_back({"refine", clock.lap()});
-  run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg);
+  run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg, nullptr, options.decomposition.threads);
   report.phases.push_back({"merge", clock.lap()});
   const Verification v =
       options.verify ? detail::verify_mesh(run.mesh, domain, field, options.decomposition.threads) : Verification{};

@@ -233,7 +233,8 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
   part.total_points = d.points.size() + steiner_total;
 
-  take_merged(detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine), part);
+  take_merged(detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine, options.decomposition.threads),
+              part);
   const std::size_t p = d.points.size();
   std::vector<std::uint64_t> ids(part.mesh.points.size());
   std::iota(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(p), std::uint64_t{0});
