@@ -52,31 +52,35 @@ using detail::ProblemLog;
 
 // Sizes, offsets and index ranges: everything after relies on these, so a
 // failure here ends the check.
-bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log) {
+bool check_mesh_shape(const Mesh& m, const Pslg& domain, ProblemLog& log, unsigned threads) {
   const std::size_t before = log.count();
   const Decomposition& d = m.decomposition;
   const std::size_t np = m.points.size(), nt = m.triangles.size();
   if (m.point_markers.size() != np)
     log.add("point_markers has " + std::to_string(m.point_markers.size()) + " entries for " + std::to_string(np) +
             " points");
-  for (std::size_t p = 0; p < np; ++p)
-    if (!std::isfinite(m.points[p].x) || !std::isfinite(m.points[p].y))
-      log.add("point " + std::to_string(p) + " " + detail::point_text(m.points[p]) + " is not finite");
-  // The edge pass numbers directed edges 3t + i in 32 bits.
-  if (nt > (std::numeric_limits<std::uint32_t>::max() - 2) / 3)
-    log.add(std::to_string(nt) + " triangles: more than verify_mesh can index");
+  const std::size_t parts = 4 * std::size_t{detail::thread_count(threads, nt)};
+  detail::log_in_parts(np, parts, threads, log, [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+    for (std::size_t p = begin; p < end; ++p)
+      if (!std::isfinite(m.points[p].x) || !std::isfinite(m.points[p].y))
+        mine.add("point " + std::to_string(p) + " " + detail::point_text(m.points[p]) + " is not finite");
+  });
+  // Indices are 32 bits, no_index reserved.
+  if (nt >= no_index) log.add(std::to_string(nt) + " triangles: more than 32-bit indices can number");
   if (m.neighbours.size() != nt || m.triangle_subdomain.size() != nt)
     log.add("triangles, neighbours and triangle_subdomain differ in size (" + std::to_string(nt) + ", " +
             std::to_string(m.neighbours.size()) + ", " + std::to_string(m.triangle_subdomain.size()) + ")");
-  for (std::uint32_t t = 0; t < nt; ++t)
-    for (int i = 0; i < 3; ++i) {
-      if (m.triangles[t][i] >= np)
-        log.add("triangle " + std::to_string(t) + " has vertex " + std::to_string(m.triangles[t][i]) +
-                ", out of range");
-      if (t < m.neighbours.size() && m.neighbours[t][i] != no_index && m.neighbours[t][i] >= nt)
-        log.add("triangle " + std::to_string(t) + " has neighbour " + std::to_string(m.neighbours[t][i]) +
-                ", out of range");
-    }
+  detail::log_in_parts(nt, parts, threads, log, [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+    for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t)
+      for (int i = 0; i < 3; ++i) {
+        if (m.triangles[t][i] >= np)
+          mine.add("triangle " + std::to_string(t) + " has vertex " + std::to_string(m.triangles[t][i]) +
+                   ", out of range");
+        if (t < m.neighbours.size() && m.neighbours[t][i] != no_index && m.neighbours[t][i] >= nt)
+          mine.add("triangle " + std::to_string(t) + " has neighbour " + std::to_string(m.neighbours[t][i]) +
+                   ", out of range");
+      }
+  });
   // Subdomain ranges: N + 1 non-decreasing offsets from 0 to the triangle
   // count, N the decomposition's subdomain count, matching triangle_subdomain.
   const std::size_t n = d.subdomains.size();
@@ -216,7 +220,7 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
   // (the only one possible is std::bad_alloc, or one thrown by the user's
   // area function; both become a problem).
   try {
-    if (check_mesh_shape(mesh, domain, log)) {
+    if (check_mesh_shape(mesh, domain, log, threads)) {
       const std::vector<std::uint8_t> ccw = check_orientation(mesh, log, threads);
       const detail::MeshEdges edges = detail::check_mesh_edges(mesh, ccw, log, threads);
       const double sliver = detail::check_mesh_segments(mesh, domain, log);

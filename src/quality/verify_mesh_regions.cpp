@@ -61,7 +61,7 @@ void check_interior_points(const Mesh& m, ProblemLog& log) {
 // one across edges that are no constraint: a component of that adjacency
 // (the mesh's links are mutual, or the edge pass has said otherwise). The
 // components are found per subdomain on `threads` threads (a flood inside
-// its triangle range, named by its first triangle), joined across the links
+// its triangle range, numbered in its order there), joined across the links
 // that leave a subdomain (separators, mostly) by union-find, and each
 // region colours its component, in input order, the later winning.
 std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
@@ -81,53 +81,60 @@ std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
     const std::uint32_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
     return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(key(a, b)) == 0;
   };
+  // label[t] first holds t's component, numbered within its subdomain.
   const auto& first = m.subdomain_first_triangle;
   const std::size_t n = first.size() - 1;
-  std::vector<std::uint32_t> component(m.triangles.size(), no_index);
+  std::vector<std::uint32_t> components(n, 0);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> leaving(n);  // links out of each subdomain
   for_each_on_threads(n, threads, [&](std::size_t k) {
     std::vector<std::uint32_t> stack;
+    std::vector<std::uint8_t> seen(first[k + 1] - first[k], 0);
     for (std::uint32_t seed = first[k]; seed < first[k + 1]; ++seed) {
-      if (component[seed] != no_index) continue;
-      component[seed] = seed;
+      if (seen[seed - first[k]] != 0) continue;
+      const std::uint32_t c = components[k]++;
+      seen[seed - first[k]] = 1;
       stack.assign(1, seed);
       while (!stack.empty()) {
         const std::uint32_t t = stack.back();
         stack.pop_back();
+        label[t] = c;
         for (int i = 0; i < 3; ++i) {
           const std::uint32_t u = m.neighbours[t][i];
           if (u == no_index || !crosses(t, i)) continue;
           if (u < first[k] || u >= first[k + 1]) {
             leaving[k].emplace_back(t, u);
-          } else if (component[u] == no_index) {
-            component[u] = seed;
+          } else if (seen[u - first[k]] == 0) {
+            seen[u - first[k]] = 1;
             stack.push_back(u);
           }
         }
       }
     }
   });
-  // Union-find on the components' first triangles, the lower one the root.
-  std::vector<std::uint32_t> parent(m.triangles.size());
-  for (std::uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+  // The components numbered across subdomains, joined along the links that
+  // leave them by union-find (the lower number the root).
+  std::vector<std::uint32_t> base(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) base[k + 1] = base[k] + components[k];
+  const auto component = [&](std::uint32_t t) { return base[m.triangle_subdomain[t]] + label[t]; };
+  std::vector<std::uint32_t> parent(base[n]);
+  for (std::uint32_t c = 0; c < parent.size(); ++c) parent[c] = c;
   const auto root = [&](std::uint32_t c) {
     while (parent[c] != c) c = parent[c] = parent[parent[c]];
     return c;
   };
   for (const auto& links : leaving)
     for (const auto& [t, u] : links) {
-      const std::uint32_t a = root(component[t]), b = root(component[u]);
+      const std::uint32_t a = root(component(t)), b = root(component(u));
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-  std::vector<std::uint32_t> region_of(m.triangles.size(), 0);  // per root: 1 + its region, 0 for none
+  std::vector<std::uint32_t> region_of(base[n], 0);  // per root: 1 + its region, 0 for none
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     const std::uint32_t t0 = triangle_at(m, regions[r].at);
-    if (t0 != no_index) region_of[root(component[t0])] = r + 1;  // in a hole or outside: no region (as Triangle)
+    if (t0 != no_index) region_of[root(component(t0))] = r + 1;  // in a hole or outside: no region (as Triangle)
   }
-  for (std::uint32_t t = 0; t < component.size(); ++t)
-    if (component[t] == t) region_of[t] = region_of[root(t)];  // every component's own name, then read in parallel
+  for (std::uint32_t c = 0; c < region_of.size(); ++c) region_of[c] = region_of[root(c)];
   for_each_on_threads(n, threads, [&](std::size_t k) {
-    for (std::uint32_t t = first[k]; t < first[k + 1]; ++t) label[t] = region_of[component[t]];
+    for (std::uint32_t t = first[k]; t < first[k + 1]; ++t) label[t] = region_of[base[k] + label[t]];
   });
   return label;
 }
