@@ -628,6 +628,12 @@ SubdomainMesh refine_subdomain(const Pslg& pslg, const std::vector<bool>& splitt
     out.point_segment[v] = m.vertex_segment(v);
     out.point_parameter[v] = m.vertex_parameter(v);
   }
+  // Exactly as long as they must be: every subdomain's piece is held until
+  // the merge.
+  std::uint32_t alive = 0;
+  for (std::uint32_t t = 0; t < m.slot_count(); ++t) alive += m.alive(t) ? 1 : 0;
+  out.triangles.reserve(alive);
+  if (!pslg.regions.empty()) out.triangle_attribute.reserve(alive);
   std::vector<std::uint32_t> index(m.slot_count(), no_index);
   for (std::uint32_t t = 0; t < m.slot_count(); ++t) {
     if (!m.alive(t)) continue;
