@@ -1,7 +1,8 @@
 #!/bin/sh
 # Whole-process wall time of `madd mesh` at -j 1 and -j 2 against Triangle
 # (issue 27's targets), K alternating runs each, medians, plus each run's
-# report phases (from --report) and its serial fraction.
+# report phases (from --report), the serial seconds of each phase by
+# Amdahl's model (2 T2 - T1) and the speed-ups they predict.
 #
 #   tests/bench/end_to_end.sh BUILD_DIR DOMAIN.poly AREA [K] [TRIANGLE] [N]
 #
@@ -49,6 +50,25 @@ for j, rs in sorted(reports.items()):
           '| in-library %.3f | triangles %d' % (st.median(r['seconds'] for r in rs), rs[0]['triangles']))
 if 'j1' in med and 'j2' in med:
     print('speed-up -j2 over -j1: %.2f' % (med['j1'] / med['j2']))
+    # Amdahl's model fitted per phase: a phase of one-thread time T1 and
+    # two-thread time T2 = s + (T1 - s) / 2 has s = 2 T2 - T1 seconds that
+    # do not speed up (serial code, and whatever does not scale: memory
+    # bandwidth, the last subdomain's tail). "rest" is the whole process
+    # outside the library's phases (reading, figures, writing, exit).
+    def phase_medians(j):
+        out = {}
+        for r in reports[j]:
+            for name, sec in r['phases'].items(): out.setdefault(name, []).append(sec)
+        return {name: st.median(v) for name, v in out.items()}
+    p1, p2 = phase_medians('1'), phase_medians('2')
+    p1['rest'] = med['j1'] - sum(p1.values())
+    p2['rest'] = med['j2'] - sum(p2.values())
+    serial = {name: max(0.0, 2 * p2[name] - p1[name]) for name in p1 if name in p2}
+    total = sum(serial.values())
+    print('serial seconds by phase (2 T2 - T1):', ', '.join('%s %.3f' % kv for kv in serial.items()))
+    f = total / med['j1']
+    print('serial fraction %.1f%% of the one-thread time; Amdahl predicts %s' % (
+        100 * f, ', '.join('%.1fx on %d cores' % (1 / (f + (1 - f) / c), c) for c in (2, 4, 16, 64))))
 if 'tri' in med:
     for j in ('j1', 'j2'):
         if j in med: print('%s / Triangle: %.2f' % (j, med[j] / med['tri']))
