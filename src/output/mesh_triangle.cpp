@@ -76,7 +76,13 @@ std::string joined(const FilePieces& pieces) {
   return out;
 }
 
-std::size_t piece_count(std::size_t lines) { return lines / detail::mesh_lines_per_piece + 1; }
+// A file of `lines` lines after its header, in pieces made on `threads`
+// threads; header and body as for file_piece, kept by value.
+template <typename Header, typename Body>
+FilePieces line_pieces(std::size_t lines, std::size_t bytes_per_line, Header header, Body body, unsigned threads) {
+  return {lines / detail::mesh_lines_per_piece + 1,
+          [=](std::size_t piece) { return file_piece(lines, piece, bytes_per_line, header, body); }, threads};
+}
 
 }  // namespace
 
@@ -85,50 +91,41 @@ namespace detail {
 FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
   const std::size_t n = mesh.points.size();
-  return {piece_count(n),
-          [&mesh, first_index, n](std::size_t piece) {
-            return file_piece(
-                n, piece, 48, [&](std::string& out) { line(out, n, 2, 0, 1); },
-                [&](std::string& out, std::size_t v) {
-                  const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
-                  line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
-                });
-          },
-          threads};
+  return line_pieces(
+      n, 48, [n](std::string& out) { line(out, n, 2, 0, 1); },
+      [&mesh, first_index](std::string& out, std::size_t v) {
+        const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
+        line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
+      },
+      threads);
 }
 
 FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
   const std::size_t n = mesh.triangles.size();
-  return {piece_count(n),
-          [&mesh, first_index, n](std::size_t piece) {
-            const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
-            return file_piece(
-                n, piece, 40, [&](std::string& out) { line(out, n, 3, ele_attributes(mesh)); },
-                [&](std::string& out, std::size_t t) {
-                  append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
-                                       mesh.triangle_subdomain[t], mesh, t);
-                });
-          },
-          threads};
+  return line_pieces(
+      n, 40, [&mesh, n](std::string& out) { line(out, n, 3, ele_attributes(mesh)); },
+      [&mesh, first_index](std::string& out, std::size_t t) {
+        const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
+        append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
+                             mesh.triangle_subdomain[t], mesh, t);
+      },
+      threads);
 }
 
 FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
   const std::size_t n = mesh.neighbours.size();
-  return {piece_count(n),
-          [&mesh, first_index, n](std::size_t piece) {
-            const auto id_of = [first_index](std::uint32_t t) {
-              return t == no_index ? -1 : std::int64_t{t} + first_index;
-            };
-            return file_piece(
-                n, piece, 36, [&](std::string& out) { line(out, mesh.triangles.size(), 3); },
-                [&](std::string& out, std::size_t t) {
-                  const auto& u = mesh.neighbours[t];
-                  line(out, t + first_index, id_of(u[0]), id_of(u[1]), id_of(u[2]));
-                });
-          },
-          threads};
+  return line_pieces(
+      n, 36, [&mesh](std::string& out) { line(out, mesh.triangles.size(), 3); },
+      [&mesh, first_index](std::string& out, std::size_t t) {
+        const auto id_of = [first_index](std::uint32_t u) {
+          return u == no_index ? -1 : std::int64_t{u} + first_index;
+        };
+        const auto& u = mesh.neighbours[t];
+        line(out, t + first_index, id_of(u[0]), id_of(u[1]), id_of(u[2]));
+      },
+      threads);
 }
 
 }  // namespace detail
