@@ -360,7 +360,7 @@ int run(const World& world, const cli::MeshArgs& args) {
   MeshPartFormats formats;
   formats.vtu = args.line.formats.vtu;
   formats.first_index = args.line.formats.first_index;
-  Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats); });
+  Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats, options.decomposition.threads); });
   const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
   const std::string json = world.rank == 0 && args.line.report ? report_json(world, f, seconds_since(start)) : "";
   if (staged.code == cli::exit_ok && !json.empty() && !args.line.report_file.empty())

@@ -14,36 +14,51 @@ namespace madd {
 
 using detail::line;
 
-std::string format_part_node(const MeshPart& part, unsigned first_index) {
+namespace {
+
+// The part's .node and .ele in pieces (detail::line_pieces), made while written.
+FilePieces part_node_pieces(const MeshPart& part, unsigned first_index, unsigned threads) {
   detail::check_first_index(first_index);
   const LocalMesh& m = part.mesh;
-  std::string out;
-  out.reserve(64 * m.points.size() + 32);
-  line(out, m.points.size(), 2, 2, 1);
-  for (std::size_t v = 0; v < m.points.size(); ++v)
-    line(out, v + first_index, m.points[v].x, m.points[v].y, part.point_ids[v] + first_index, part.point_owner[v],
-         m.point_markers[v]);
-  return out;
+  const std::size_t n = m.points.size();
+  return detail::line_pieces(
+      n, 64, [n](std::string& out) { line(out, n, 2, 2, 1); },
+      [&part, first_index](std::string& out, std::size_t v) {
+        const LocalMesh& lm = part.mesh;
+        line(out, v + first_index, lm.points[v].x, lm.points[v].y, part.point_ids[v] + first_index, part.point_owner[v],
+             lm.point_markers[v]);
+      },
+      threads);
+}
+
+FilePieces part_ele_pieces(const MeshPart& part, unsigned first_index, unsigned threads) {
+  detail::check_first_index(first_index);
+  const std::size_t n = part.mesh.triangles.size();
+  // With regions, a third attribute: the triangle's region attribute.
+  const bool regions = detail::has_region_attributes(part);
+  return detail::line_pieces(
+      n, 56, [n, regions](std::string& out) { line(out, n, 3, regions ? 3 : 2); },
+      [&part, first_index, regions](std::string& out, std::size_t t) {
+        const LocalMesh& m = part.mesh;
+        const auto& tri = m.triangles[t];
+        if (regions)
+          line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
+               m.triangle_subdomain[t], part.triangle_ids[t] + first_index, detail::region_attribute(m, t));
+        else
+          line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
+               m.triangle_subdomain[t], part.triangle_ids[t] + first_index);
+      },
+      threads);
+}
+
+}  // namespace
+
+std::string format_part_node(const MeshPart& part, unsigned first_index) {
+  return detail::joined(part_node_pieces(part, first_index, 1));
 }
 
 std::string format_part_ele(const MeshPart& part, unsigned first_index) {
-  detail::check_first_index(first_index);
-  const LocalMesh& m = part.mesh;
-  std::string out;
-  out.reserve(56 * m.triangles.size() + 32);
-  // With regions, a third attribute: the triangle's region attribute.
-  const bool regions = detail::has_region_attributes(part);
-  line(out, m.triangles.size(), 3, regions ? 3 : 2);
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    const auto& tri = m.triangles[t];
-    if (regions)
-      line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
-           m.triangle_subdomain[t], part.triangle_ids[t] + first_index, detail::region_attribute(m, t));
-    else
-      line(out, t + first_index, tri[0] + first_index, tri[1] + first_index, tri[2] + first_index,
-           m.triangle_subdomain[t], part.triangle_ids[t] + first_index);
-  }
-  return out;
+  return detail::joined(part_ele_pieces(part, first_index, 1));
 }
 
 std::string format_part_vtu(const MeshPart& part) {
@@ -90,8 +105,8 @@ std::pair<std::string, std::string> split_prefix(const std::string& prefix) {
 
 }  // namespace
 
-void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
-                   const MeshPartFormats& formats) {
+void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix, const MeshPartFormats& formats,
+                   unsigned threads) {
   detail::check_first_index(formats.first_index);
   // Not a structured binding: clang 14 cannot capture one in the lambda below.
   const std::pair<std::string, std::string> parts = split_prefix(prefix);
@@ -101,8 +116,8 @@ void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& 
     return part_file_name(stem, share, part.shares, extension);
   };
   if (formats.triangle) {
-    outputs.add_file(dir + name(part.share, ".node"), format_part_node(part, formats.first_index));
-    outputs.add_file(dir + name(part.share, ".ele"), format_part_ele(part, formats.first_index));
+    outputs.add_file(dir + name(part.share, ".node"), part_node_pieces(part, formats.first_index, threads));
+    outputs.add_file(dir + name(part.share, ".ele"), part_ele_pieces(part, formats.first_index, threads));
   }
   if (formats.vtu) {
     outputs.add_file(dir + name(part.share, ".vtu"), format_part_vtu(part));

@@ -1,6 +1,7 @@
 #pragma once
 // What the mesh writers (src/output/mesh_*.cpp) share: Triangle-style lines
 // of numbers, the first_index rule, and the marker of every boundary edge.
+#include <algorithm>
 #include <concepts>
 #include <cstdint>
 #include <string>
@@ -23,6 +24,35 @@ void check_first_index(unsigned first_index);
 // (FilePieces); joined, they are format_mesh_node's, ...ele's and ...neigh's
 // text. They read `mesh`, which must outlive the write.
 inline constexpr std::size_t mesh_lines_per_piece = std::size_t{1} << 16;
+
+// Piece `piece` of a file of `lines` lines after its header: lines
+// [piece L, (piece + 1) L), L = mesh_lines_per_piece, the header first in
+// piece 0; header(out) appends the header, body(out, i) line i.
+template <typename Header, typename Body>
+std::string file_piece(std::size_t lines, std::size_t piece, std::size_t bytes_per_line, const Header& header,
+                       const Body& body) {
+  const std::size_t begin = piece * mesh_lines_per_piece;
+  const std::size_t end = std::min(lines, begin + mesh_lines_per_piece);
+  std::string out;
+  out.reserve(bytes_per_line * (end > begin ? end - begin : 0) + 32);
+  if (piece == 0) header(out);
+  for (std::size_t i = begin; i < end; ++i) body(out, i);
+  return out;
+}
+
+// Such a file in pieces made on `threads` threads (header and body kept by value).
+template <typename Header, typename Body>
+FilePieces line_pieces(std::size_t lines, std::size_t bytes_per_line, Header header, Body body, unsigned threads) {
+  return {lines / mesh_lines_per_piece + 1,
+          [=](std::size_t piece) { return file_piece(lines, piece, bytes_per_line, header, body); }, threads};
+}
+
+// The whole file: its pieces joined, in order.
+inline std::string joined(const FilePieces& pieces) {
+  std::string out;
+  for (std::size_t i = 0; i < pieces.count; ++i) out += pieces.make(i);
+  return out;
+}
 FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
 FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
 FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);

@@ -53,39 +53,6 @@ int ele_attributes(const Mesh& mesh) { return detail::has_region_attributes(mesh
 
 }  // namespace
 
-namespace {
-
-// Piece `piece` of a file of `lines` lines after its header: lines
-// [piece L, (piece + 1) L), L = mesh_lines_per_piece, the header first in
-// piece 0; body(out, i) appends line i.
-template <typename Header, typename Body>
-std::string file_piece(std::size_t lines, std::size_t piece, std::size_t bytes_per_line, Header header, Body body) {
-  const std::size_t begin = piece * detail::mesh_lines_per_piece;
-  const std::size_t end = std::min(lines, begin + detail::mesh_lines_per_piece);
-  std::string out;
-  out.reserve(bytes_per_line * (end > begin ? end - begin : 0) + 32);
-  if (piece == 0) header(out);
-  for (std::size_t i = begin; i < end; ++i) body(out, i);
-  return out;
-}
-
-// The whole file: its pieces joined.
-std::string joined(const FilePieces& pieces) {
-  std::string out;
-  for (std::size_t i = 0; i < pieces.count; ++i) out += pieces.make(i);
-  return out;
-}
-
-// A file of `lines` lines after its header, in pieces made on `threads`
-// threads; header and body as for file_piece, kept by value.
-template <typename Header, typename Body>
-FilePieces line_pieces(std::size_t lines, std::size_t bytes_per_line, Header header, Body body, unsigned threads) {
-  return {lines / detail::mesh_lines_per_piece + 1,
-          [=](std::size_t piece) { return file_piece(lines, piece, bytes_per_line, header, body); }, threads};
-}
-
-}  // namespace
-
 namespace detail {
 
 FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
@@ -131,15 +98,15 @@ FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned th
 }  // namespace detail
 
 std::string format_mesh_node(const Mesh& mesh, unsigned first_index) {
-  return joined(detail::mesh_node_pieces(mesh, first_index, 1));
+  return detail::joined(detail::mesh_node_pieces(mesh, first_index, 1));
 }
 
 std::string format_mesh_ele(const Mesh& mesh, unsigned first_index) {
-  return joined(detail::mesh_ele_pieces(mesh, first_index, 1));
+  return detail::joined(detail::mesh_ele_pieces(mesh, first_index, 1));
 }
 
 std::string format_mesh_neigh(const Mesh& mesh, unsigned first_index) {
-  return joined(detail::mesh_neigh_pieces(mesh, first_index, 1));
+  return detail::joined(detail::mesh_neigh_pieces(mesh, first_index, 1));
 }
 
 // Each edge once, from the lower-numbered of its two triangles (or its only
