@@ -66,7 +66,7 @@ int mesh_body(void* context) {
   add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
   if (!line.split_mesh_dir.empty()) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
-    add_split_mesh(outputs, m, line.split_mesh_dir, stem, line.formats.first_index);
+    add_split_mesh(outputs, m, line.split_mesh_dir, stem, line.formats.first_index, options.decomposition.threads);
   }
   const MeshMetrics figures =
       line.report || !line.quiet ? mesh_metrics(m, options.size, options.decomposition.threads) : MeshMetrics{};

@@ -438,7 +438,8 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
 
 // The Triangle files are made in pieces of 65,536 lines on the threads
 // while they are written (src/output/mesh_text.hpp): a mesh of several
-// pieces gives the same bytes on 1, 2 and 3 threads, those of format_mesh_*.
+// pieces gives the same bytes on 1, 2 and 3 threads, those of format_mesh_*;
+// the split mesh's files, formatted on threads, those of format_subdomain_mesh_*.
 TEST_CASE("write_mesh on threads: the same bytes, piece after piece") {
   TempDir tmp("mesh-output-pieces");
   MeshOptions o;
@@ -459,6 +460,16 @@ TEST_CASE("write_mesh on threads: the same bytes, piece after piece") {
     CHECK(read_text(prefix + ".node") == node);
     CHECK(read_text(prefix + ".ele") == ele);
     CHECK(read_text(prefix + ".neigh") == neigh);
+  }
+  // --split-mesh formats the subdomains' files on the threads.
+  const fs::path dir = tmp.path / "parts";
+  write_split_mesh(m, dir.string(), "s", 1, 3);
+  for (std::uint32_t k = 0; k < m.subdomain_count(); ++k) {
+    CAPTURE(k);
+    CHECK(read_text(dir / split_mesh_file_name("s", k, m.subdomain_count(), ".node")) ==
+          format_subdomain_mesh_node(m, k));
+    CHECK(read_text(dir / split_mesh_file_name("s", k, m.subdomain_count(), ".ele")) ==
+          format_subdomain_mesh_ele(m, k));
   }
 }
 

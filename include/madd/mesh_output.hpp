@@ -108,8 +108,11 @@ void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& 
 // subdomain k, split_mesh_file_name(stem, k, N, ".node") and ".ele". Files of
 // an earlier run named "<stem>-<digits>.node" or ".ele" that this run does
 // not produce are removed, so `dir` holds exactly this mesh's pieces.
+// The subdomains' files are formatted on `threads` threads (0: one per
+// core), the same bytes for any count.
 void add_split_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& dir, std::string_view stem,
-                    unsigned first_index = 1);
-void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index = 1);
+                    unsigned first_index = 1, unsigned threads = 1);
+void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index = 1,
+                      unsigned threads = 1);
 
 }  // namespace madd

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/threads.hpp"
 #include "madd/mesh_output.hpp"
 #include "madd/output.hpp"
 #include "output/mesh_text.hpp"
@@ -63,22 +64,24 @@ void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& 
 }
 
 void add_split_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& dir, std::string_view stem,
-                    unsigned first_index) {
+                    unsigned first_index, unsigned threads) {
   detail::check_first_index(first_index);
   const std::uint32_t count = mesh.subdomain_count();
-  std::vector<std::pair<std::string, std::string>> files;
-  files.reserve(2 * std::size_t{count});
-  for (std::uint32_t k = 0; k < count; ++k) {
-    files.emplace_back(split_mesh_file_name(stem, k, count, ".node"), format_subdomain_mesh_node(mesh, k, first_index));
-    files.emplace_back(split_mesh_file_name(stem, k, count, ".ele"), format_subdomain_mesh_ele(mesh, k, first_index));
-  }
+  // Each subdomain's two files on the threads, into their own slots.
+  std::vector<std::pair<std::string, std::string>> files(2 * std::size_t{count});
+  detail::for_each_on_threads(count, threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    files[2 * i] = {split_mesh_file_name(stem, k, count, ".node"), format_subdomain_mesh_node(mesh, k, first_index)};
+    files[2 * i + 1] = {split_mesh_file_name(stem, k, count, ".ele"), format_subdomain_mesh_ele(mesh, k, first_index)};
+  });
   outputs.add_directory(dir, std::move(files),
                         [stem = std::string(stem)](const std::string& name) { return is_split_mesh_name(name, stem); });
 }
 
-void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index) {
+void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index,
+                      unsigned threads) {
   OutputSet outputs;
-  add_split_mesh(outputs, mesh, dir, stem, first_index);
+  add_split_mesh(outputs, mesh, dir, stem, first_index, threads);
   outputs.write();
 }
 
