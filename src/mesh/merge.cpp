@@ -90,6 +90,10 @@ void add_boundary_segments(std::vector<MeshSegment>& out, const LocalDomain& loc
   }
 }
 
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+}
+
 // One subdomain's side of each of its separator segments: the separator
 // (global id) and the edge 3 t + i (global t) of the triangle along it.
 using SeparatorSides = std::vector<std::pair<std::uint32_t, std::uint64_t>>;
@@ -101,7 +105,7 @@ SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p,
   for (std::uint32_t s = 0; s < local.pslg.segments.size(); ++s)
     if (!local.splittable[s]) {
       const Segment& g = local.pslg.segments[s];
-      separator.emplace((std::uint64_t{std::min(g.a, g.b)} << 32) | std::max(g.a, g.b), s);
+      separator.emplace(edge_key(g.a, g.b), s);
     }
   SeparatorSides sides;
   if (separator.empty()) return sides;
@@ -109,7 +113,7 @@ SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p,
     for (std::uint32_t i = 0; i < 3; ++i) {
       if (p.neighbours[t][i] != no_index) continue;
       const std::uint32_t a = p.triangles[t][(i + 1) % 3], b = p.triangles[t][(i + 2) % 3];
-      const auto it = separator.find((std::uint64_t{std::min(a, b)} << 32) | std::max(a, b));
+      const auto it = separator.find(edge_key(a, b));
       if (it != separator.end()) sides.emplace_back(local.piece[it->second], 3 * std::uint64_t{first_triangle + t} + i);
     }
   return sides;
