@@ -436,7 +436,7 @@ TEST_CASE("split mesh: names are padded, an older run's pieces are removed, othe
   CHECK(tmp.names(tmp.path) == std::set<std::string>{"parts"});  // no staging directory left behind
 }
 
-// The Triangle files are made in pieces of 65,536 lines on the threads
+// The Triangle files and the .vtu are made in pieces of 65,536 lines on the threads
 // while they are written (src/output/mesh_text.hpp): a mesh of several
 // pieces gives the same bytes on 1, 2 and 3 threads, those of format_mesh_*;
 // the split mesh's files, formatted on threads, those of format_subdomain_mesh_*.
@@ -449,8 +449,9 @@ TEST_CASE("write_mesh on threads: the same bytes, piece after piece") {
   const Mesh m = mesh(read_domain(MADD_DATA_DIR "/pipe.poly"), o);
   REQUIRE(m.triangles.size() > 2 * detail::mesh_lines_per_piece);  // three pieces of .ele at least
   MeshFormats formats;
-  formats.neigh = true;
+  formats.neigh = formats.vtu = true;
   const std::string node = format_mesh_node(m), ele = format_mesh_ele(m), neigh = format_mesh_neigh(m);
+  const std::string vtu = format_mesh_vtu(m);
   for (const unsigned threads : {1u, 2u, 3u}) {
     CAPTURE(threads);
     std::string name = "t";  // appended: GCC 12 warns (-Wrestrict, a false positive) on "t" + a temporary
@@ -460,6 +461,7 @@ TEST_CASE("write_mesh on threads: the same bytes, piece after piece") {
     CHECK(read_text(prefix + ".node") == node);
     CHECK(read_text(prefix + ".ele") == ele);
     CHECK(read_text(prefix + ".neigh") == neigh);
+    CHECK(read_text(prefix + ".vtu") == vtu);
   }
   // --split-mesh formats the subdomains' files on the threads.
   const fs::path dir = tmp.path / "parts";

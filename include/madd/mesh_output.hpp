@@ -96,7 +96,7 @@ struct MeshFormats {
 
 // Adds the chosen files of `mesh` under `prefix` to `outputs` (nothing is
 // written yet). Throws OptionError on a bad first_index, OutputError when a
-// path is already in the set. The .node, .ele and .neigh files are made
+// path is already in the set. The .node, .ele, .neigh and .vtu files are made
 // while they are written, on `threads` threads (0: one per core), the same
 // bytes for any count (FilePieces): `mesh` must outlive outputs.write().
 void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {},

@@ -48,8 +48,8 @@ struct MeshPartFormats {
 
 // Adds the part's files under `prefix` to `outputs` (share 0 also adds
 // PREFIX.pvtu naming every share's .vtu). Throws OptionError on a bad
-// first_index, OutputError when a path is already in the set. The .node and
-// .ele are made while they are written, on `threads` threads (FilePieces):
+// first_index, OutputError when a path is already in the set. The .node,
+// .ele and .vtu are made while they are written, on `threads` threads (FilePieces):
 // `part` must outlive outputs.write().
 void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& prefix,
                    const MeshPartFormats& formats = {}, unsigned threads = 1);

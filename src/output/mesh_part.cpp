@@ -120,7 +120,9 @@ void add_mesh_part(OutputSet& outputs, const MeshPart& part, const std::string& 
     outputs.add_file(dir + name(part.share, ".ele"), part_ele_pieces(part, formats.first_index, threads));
   }
   if (formats.vtu) {
-    outputs.add_file(dir + name(part.share, ".vtu"), format_part_vtu(part));
+    const detail::VtuGlobalIds global{&part.point_ids, &part.point_owner, &part.triangle_ids, part.share};
+    outputs.add_file(dir + name(part.share, ".vtu"),
+                     detail::vtu_pieces(part.mesh, detail::has_region_attributes(part), global, threads));
     if (part.share == 0) {
       std::vector<std::string> pieces;
       for (std::uint32_t r = 0; r < part.shares; ++r) pieces.push_back(name(r, ".vtu"));

@@ -3,6 +3,8 @@
 // of numbers, the first_index rule, and the marker of every boundary edge.
 #include <algorithm>
 #include <concepts>
+#include <functional>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -46,6 +48,29 @@ FilePieces line_pieces(std::size_t lines, std::size_t bytes_per_line, Header hea
   return {lines / mesh_lines_per_piece + 1,
           [=](std::size_t piece) { return file_piece(lines, piece, bytes_per_line, header, body); }, threads};
 }
+
+// A text of sections, each some fixed text then `count` lines made by
+// body(out, i), cut into pieces of at most mesh_lines_per_piece lines (a
+// section's fixed text opens its first piece): a file of several arrays
+// (.vtu) made while it is written. The bodies may read what they capture
+// until the pieces are all made.
+class SectionedText {
+public:
+  using Body = std::function<void(std::string& out, std::size_t i)>;
+  // The fixed text before the next lines (append to it).
+  std::string& text() { return pending_; }
+  void lines(std::size_t count, Body body);
+  FilePieces pieces(unsigned threads);
+
+private:
+  struct Section {
+    std::string before;
+    std::size_t count = 0;
+    Body body;
+  };
+  std::vector<Section> sections_;
+  std::string pending_;
+};
 
 // The whole file: its pieces joined, in order.
 inline std::string joined(const FilePieces& pieces) {
@@ -105,5 +130,12 @@ struct VtuGlobalIds {
 // format_mesh_vtu of a part's local mesh, with its global ids; `regions`:
 // with the region attribute of every triangle.
 std::string format_vtu(const LocalMesh& mesh, bool regions, const VtuGlobalIds& global);
+// The same in pieces made on `threads` threads; the mesh and the arrays
+// `global` points to must outlive the write (`global` itself need not).
+FilePieces vtu_pieces(const LocalMesh& mesh, bool regions, const VtuGlobalIds& global, unsigned threads);
+
+// The whole mesh's .vtu in pieces made on `threads` threads (joined:
+// format_mesh_vtu's text); `mesh` must outlive the write.
+FilePieces mesh_vtu_pieces(const Mesh& mesh, unsigned threads);
 
 }  // namespace madd::detail

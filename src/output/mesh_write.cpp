@@ -54,7 +54,7 @@ void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, c
   if (formats.neigh) outputs.add_file(prefix + ".neigh", detail::mesh_neigh_pieces(mesh, formats.first_index, threads));
   if (formats.edge) outputs.add_file(prefix + ".edge", format_mesh_edge(mesh, formats.first_index));
   if (formats.msh) outputs.add_file(prefix + ".msh", format_mesh_msh(mesh));
-  if (formats.vtu) outputs.add_file(prefix + ".vtu", format_mesh_vtu(mesh));
+  if (formats.vtu) outputs.add_file(prefix + ".vtu", detail::mesh_vtu_pieces(mesh, threads));
 }
 
 void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats, unsigned threads) {
