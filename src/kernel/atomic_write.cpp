@@ -47,13 +47,23 @@ bool interrupt_output_writes() noexcept {
 
 namespace {
 
-// Writes `contents` to the new file `tmp` (the staging name of `path`);
-// removes it and throws OutputError on failure or on an interrupt.
-void write_temporary(const std::string& path, const std::string& tmp, std::string_view contents) {
+// Creates the new file `tmp` (the staging name of `path`) and lets
+// write(f) fill it (true when every byte was written); removes it and
+// throws OutputError on failure or on an interrupt (and rethrows what
+// write threw).
+template <typename Write>
+void write_temporary_with(const std::string& path, const std::string& tmp, const Write& write) {
   throw_if_interrupted(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
-  const bool written = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
+  bool written = false;
+  try {
+    written = write(f);
+  } catch (...) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    throw;
+  }
   const int saved = errno;
   const bool closed = std::fclose(f) == 0;
   if (interrupt_requested.load()) {  // a signal arrived while writing: leave nothing behind
@@ -64,6 +74,11 @@ void write_temporary(const std::string& path, const std::string& tmp, std::strin
     std::remove(tmp.c_str());
     throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
   }
+}
+
+void write_temporary(const std::string& path, const std::string& tmp, std::string_view contents) {
+  write_temporary_with(
+      path, tmp, [&](std::FILE* f) { return std::fwrite(contents.data(), 1, contents.size(), f) == contents.size(); });
 }
 
 // The pieces' writer: make() runs on the workers, the calling thread writes
@@ -133,29 +148,9 @@ private:
   std::exception_ptr error_;
 };
 
-// The same as write_temporary, the contents made in pieces while writing.
+// The same, the contents made in pieces while writing.
 void write_temporary(const std::string& path, const std::string& tmp, const FilePieces& pieces) {
-  throw_if_interrupted(path);
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (f == nullptr) throw OutputError(path + ": cannot create '" + tmp + "': " + std::strerror(errno));
-  bool written = false;
-  try {
-    written = PieceWriter(pieces, f).run();
-  } catch (...) {
-    std::fclose(f);
-    std::remove(tmp.c_str());
-    throw;
-  }
-  const int saved = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (interrupt_requested.load()) {
-    std::remove(tmp.c_str());
-    throw_if_interrupted(path);
-  }
-  if (!written || !closed) {
-    std::remove(tmp.c_str());
-    throw OutputError(path + ": cannot write '" + tmp + "': " + std::strerror(written ? errno : saved));
-  }
+  write_temporary_with(path, tmp, [&](std::FILE* f) { return PieceWriter(pieces, f).run(); });
 }
 
 std::string temporary_name(const std::string& path, std::size_t serial) {

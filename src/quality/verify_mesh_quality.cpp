@@ -17,21 +17,6 @@ namespace madd::detail {
 
 namespace {
 
-// f(t) for every triangle t of `m`, computed in chunks on `threads`
-// threads; `f(t, hint)` gets a BoundHint of its chunk's own.
-template <typename F>
-std::vector<double> per_triangle(const Mesh& m, unsigned threads, const F& f) {
-  constexpr std::size_t chunk = 2048;
-  const std::size_t n = m.triangles.size();
-  std::vector<double> out(n);
-  for_each_on_threads((n + chunk - 1) / chunk, threads, [&](std::size_t c) {
-    BoundHint hint;  // a subdomain's triangles are numbered together: near each other
-    for (std::size_t t = c * chunk; t < std::min(n, (c + 1) * chunk); ++t)
-      out[t] = f(static_cast<std::uint32_t>(t), hint);
-  });
-  return out;
-}
-
 // The triangle's smallest angle (the corner smallest_angle_deg measures:
 // opposite the shortest edge) is at least the angle whose tangent is
 // `tangent`, by a margin far above rounding: tan of that corner is
@@ -129,15 +114,14 @@ void check_mesh_angles(const Mesh& m, ProblemLog& log, unsigned threads) {
     for (const std::size_t k : counts) count += k;
   }
   if (count == claimed) return;
-  // A wrong count: every angle, to name the smallest.
-  const std::vector<double> angles = per_triangle(m, threads, [&](std::uint32_t t, BoundHint&) {
-    return smallest_angle_deg(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]);
-  });
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
-    if (angles[t] < worst) {
-      worst = angles[t];
+  // A wrong count (a failed check): every angle, to name the smallest.
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const double angle = smallest_angle_deg(P[m.triangles[t][0]], P[m.triangles[t][1]], P[m.triangles[t][2]]);
+    if (angle < worst) {
+      worst = angle;
       worst_t = t;
     }
+  }
   std::string text = std::to_string(count) + " triangles have a smallest angle below the bound " +
                      number_text(m.min_triangle_angle_deg) + " deg, but the shortfall counts " +
                      std::to_string(claimed) + " (" + std::to_string(m.shortfall.input_angle) + " input angle, " +
