@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <vector>
 
@@ -173,6 +174,49 @@ TEST_CASE("a visibility walk finds the triangle holding a point, or a ghost outs
   // A point that is a vertex is held by a triangle at that vertex.
   const std::uint32_t t = madd::detail::walk_visibly(m, P, P[7], 0, random).triangle;
   CHECK(holds(m, P, t, P[7]));
+}
+
+TEST_CASE("a weighing walk gives p's exact-sign weights where it ends, or the hull edge p is beyond") {
+  // A square of random points, closed by its four sides (no ghosts), as the
+  // size field's background is.
+  madd::Pslg pslg;
+  pslg.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const Point p : random_points(200, 11)) pslg.points.push_back({0.01 + 0.98 * p.x, 0.01 + 0.98 * p.y});
+  for (std::uint32_t i = 0; i < 4; ++i) pslg.segments.push_back({i, (i + 1) % 4, 1});
+  HalfEdgeMesh m;
+  REQUIRE(madd::detail::constrained_delaunay(m, pslg, {}));
+  REQUIRE(m.ghost == no_index);
+  const std::vector<Point>& P = pslg.points;
+  madd::detail::WalkRandom random;
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  std::vector<Point> queries = {P[7], {0.5, 0.0}, {1.0, 1.0}, {0.0, 0.25}};
+  for (int i = 0; i < 1000; ++i) queries.push_back({u(rng), u(rng)});
+  for (const Point p : queries) {
+    const std::uint32_t start = static_cast<std::uint32_t>(rng() % m.slot_count());
+    std::array<double, 3> w{};
+    const madd::detail::WalkResult end = madd::detail::walk_weighing(m, P, p, start, random, w);
+    const bool in_square = p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1;
+    if (!in_square) {
+      REQUIRE(end.triangle == no_index);
+      REQUIRE(end.blocked_by != no_index);
+      CHECK(m.tn[end.blocked_by] == no_index);
+      CHECK(madd::orient2d(P[m.origin(end.blocked_by)], P[m.dest(end.blocked_by)], p) < 0);
+      continue;
+    }
+    REQUIRE(end.triangle != no_index);
+    const std::uint32_t t = end.triangle;
+    CHECK(holds(m, P, t, p));
+    double sum = 0;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const double exact = madd::orient2d(P[m.origin(3 * t + i)], P[m.dest(3 * t + i)], p);
+      CHECK((w[i] > 0) == (exact > 0));
+      CHECK((w[i] == 0) == (exact == 0));
+      sum += w[i];
+    }
+    const double twice_area = 2 * madd::signed_area(P[m.tv[3 * t]], P[m.tv[3 * t + 1]], P[m.tv[3 * t + 2]]);
+    CHECK(sum == doctest::Approx(twice_area).epsilon(1e-9));
+  }
 }
 
 TEST_CASE("compaction and edge search on a constrained triangulation") {

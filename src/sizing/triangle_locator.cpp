@@ -1,5 +1,5 @@
-// Point location by a grid of start triangles and a visibility walk
-// (triangle_locator.hpp).
+// Point location by a grid of start triangles and the core's visibility
+// walk (triangle_locator.hpp).
 #include "sizing/triangle_locator.hpp"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"
+#include "triangulation/walk.hpp"
 
 namespace madd::detail {
 
@@ -30,8 +31,36 @@ inline double side(Point db, Point dc, Point b, Point c, Point p) noexcept {
 
 }  // namespace
 
+namespace {
+
+// The view's triangles as the core's arrays: corners in order, and each
+// edge's twin found among the neighbour's edges (the same two corners the
+// other way round).
+HalfEdgeMesh half_edges_of(const TriangleView& view) {
+  HalfEdgeMesh m;
+  const auto count = static_cast<std::uint32_t>(view.triangles.size());
+  m.append_slots(count);
+  m.tv.resize(3 * std::size_t{count});
+  m.tn.resize(3 * std::size_t{count});
+  for (std::uint32_t t = 0; t < count; ++t)
+    for (std::uint32_t i = 0; i < 3; ++i) m.tv[3 * t + i] = view.triangles[t][i];
+  for (std::uint32_t t = 0; t < count; ++t)
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t u = view.neighbours[t][i];
+      m.tn[3 * t + i] = no_index;
+      if (u == no_index) continue;
+      const std::uint32_t to = view.triangles[t][(i + 2) % 3];  // the edge runs the other way in u
+      for (std::uint32_t j = 0; j < 3; ++j)
+        if (view.triangles[u][(j + 1) % 3] == to) m.tn[3 * t + i] = 3 * u + j;
+    }
+  return m;
+}
+
+}  // namespace
+
 TriangleLocator::TriangleLocator(const TriangleView& view) {
   if (view.triangles.empty()) return;
+  mesh_ = half_edges_of(view);
   Point lo{infinity, infinity}, hi{-infinity, -infinity};
   for (const auto& t : view.triangles)
     for (const std::uint32_t v : t) {
@@ -99,8 +128,8 @@ Location TriangleLocator::lowest_holding(const TriangleView& view, Point p, Loca
   if (zeros == 0 || zeros == 3) return at;
   std::uint32_t best = at.triangle;
   if (zeros == 1) {
-    const std::uint32_t u = view.neighbours[at.triangle][edge];
-    if (u != no_index && u < best) best = u;
+    const std::uint32_t h = mesh_.tn[3 * at.triangle + edge];
+    if (h != no_index && h / 3 < best) best = h / 3;
   } else {
     int corner = 0;  // the corner p is on: its weight is the nonzero one
     while (at.weight[corner] == 0.0) ++corner;
@@ -111,8 +140,9 @@ Location TriangleLocator::lowest_holding(const TriangleView& view, Point p, Loca
       for (std::size_t guard = 0; guard < view.triangles.size(); ++guard) {
         const auto& tv = view.triangles[t];
         const int k = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        const std::uint32_t u = view.neighbours[t][(k + way) % 3];
-        if (u == no_index || u == at.triangle) break;
+        const std::uint32_t h = mesh_.tn[3 * t + (k + way) % 3];
+        if (h == no_index || h / 3 == at.triangle) break;
+        const std::uint32_t u = h / 3;
         best = std::min(best, u);
         t = u;
       }
@@ -121,49 +151,16 @@ Location TriangleLocator::lowest_holding(const TriangleView& view, Point p, Loca
   return best == at.triangle ? at : location_in(view, p, best);
 }
 
-// A visibility walk: cross an edge p lies strictly beyond, chosen, when
-// there are two, by a linear congruential generator (a fixed rule may
-// circle in a constrained triangulation; this one ends with probability
-// one, and the step bound only limits bad luck: a scan then decides). The
-// three sides of p are computed at once from p's offsets to the corners:
-// in the last triangle they are p's barycentric weights.
+// The core's visibility walk from t (a fresh random state at every query,
+// so that a query's answer never depends on the ones before it), which
+// leaves p's weights in the triangle it ends in. Beyond a hull edge p is
+// outside: the triangle behind that edge is the one to clamp to.
 Location TriangleLocator::walk(const TriangleView& view, Point p, std::uint32_t t) const noexcept {
-  const Point* P = view.points.data();
-  const auto* tv = view.triangles.data();
-  const auto* tn = view.neighbours.data();
-  std::uint32_t came = no_index;
-  std::uint32_t state = 12345u;
-  for (std::size_t steps = 4 * view.triangles.size() + 64; steps > 0; --steps) {
-    const std::array<std::uint32_t, 3>& v = tv[t];
-    const std::array<std::uint32_t, 3>& n = tn[t];
-    const Point a = P[v[0]], b = P[v[1]], c = P[v[2]];
-    const Point da = a - p, db = b - p, dc = c - p;
-    Location here{t, true, {side(db, dc, b, c, p), side(dc, da, c, a, p), side(da, db, a, b, p)}};
-    // The edges p is strictly beyond, less the one just crossed (p is on its inner side).
-    unsigned beyond = (here.weight[0] < 0 ? 1u : 0u) | (here.weight[1] < 0 ? 2u : 0u) | (here.weight[2] < 0 ? 4u : 0u);
-    for (int i = 0; i < 3; ++i)
-      if (n[i] == came && came != no_index) beyond &= ~(1u << i);
-    if (beyond == 0) return here;
-    int i = beyond == 1 ? 0 : beyond == 2 ? 1 : beyond == 4 ? 2 : -1;
-    if (i < 0) {  // two edges: choose at random
-      state = state * 1103515245u + 12345u;
-      const bool second = (state >> 16) & 1u;
-      const int first = (beyond & 1u) ? 0 : 1, other = (beyond & 4u) ? 2 : 1;
-      i = second ? other : first;
-    }
-    if (n[i] == no_index) return {t, false};  // beyond a hull edge: outside the hull
-    came = t;
-    t = n[i];
-  }
-  for (std::uint32_t u = 0; u < view.triangles.size(); ++u) {
-    bool in = true;
-    for (std::uint32_t i = 0; i < 3 && in; ++i) in = orient2d(P[tv[u][(i + 1) % 3]], P[tv[u][(i + 2) % 3]], p) >= 0;
-    if (in) {
-      const Point a = P[tv[u][0]] - p, b = P[tv[u][1]] - p, c = P[tv[u][2]] - p;
-      return {u, true, {cross(b, c), cross(c, a), cross(a, b)}};
-    }
-  }
-  return {t, false};
+  WalkRandom random;
+  std::array<double, 3> weights{};
+  const WalkResult end = walk_weighing(mesh_, view.points, p, t, random, weights);
+  if (end.triangle != no_index) return {end.triangle, true, {weights[0], weights[1], weights[2]}};
+  return {end.blocked_by != no_index ? end.blocked_by / 3 : t, false};
 }
 
 double interpolate(const TriangleView& view, std::span<const double> values, Location at, Point p) noexcept {

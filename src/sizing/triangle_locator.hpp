@@ -1,12 +1,13 @@
 #pragma once
 // Point location in a fixed triangulation, for many queries from several
 // threads: a uniform grid whose every cell names a triangle near its centre
-// (where a walk starts), and a visibility walk from there with exact
-// orient2d. The size field asks once per triangle the mesher makes and the
-// --sizes samples once per query, so the walk must be short: the grid has
-// about one cell per triangle. const and free of shared mutable state, so
-// that any number of threads may locate at once; deterministic (the walk's
-// edge order comes from a generator restarted at every query).
+// (where a walk starts), and the core's visibility walk from there
+// (triangulation/walk.hpp, walk_weighing) over a half-edge copy of the
+// triangulation. The size field asks once per triangle the mesher makes and
+// the --sizes samples once per query, so the walk must be short: the grid
+// has about one cell per triangle. const and free of shared mutable state,
+// so that any number of threads may locate at once; deterministic (the
+// walk's edge order comes from a generator restarted at every query).
 #include <array>
 #include <cstdint>
 #include <span>
@@ -14,6 +15,7 @@
 
 #include "kernel/uniform_grid.hpp"
 #include "madd/geometry.hpp"
+#include "triangulation/half_edge_mesh.hpp"
 
 namespace madd::detail {
 
@@ -63,6 +65,9 @@ public:
 private:
   Location walk(const TriangleView& view, Point p, std::uint32_t t) const noexcept;
   Location lowest_holding(const TriangleView& view, Point p, Location at) const noexcept;
+  // The view's triangles and adjacency in the core's layout, for its walk
+  // (a background is a few tens of thousands of triangles: the copy is small).
+  HalfEdgeMesh mesh_;
   UniformGrid frame_;                 // only its cells' frame: col_of, row_of
   std::vector<std::uint32_t> start_;  // per cell (row-major): a triangle near its centre
 };

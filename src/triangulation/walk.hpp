@@ -8,11 +8,14 @@
 //   point in a Delaunay triangulation or a constrained one, where any path
 //   will do; the rotating first edge only avoids the pathological orders of
 //   a fixed rule. It enters a ghost triangle (and stops there) when p lies
-//   outside the convex hull.
+//   outside the convex hull. walk_weighing steers the same way but computes
+//   all three sides of p in every triangle, so that it ends with p's
+//   barycentric weights: point location that interpolates.
 // - along the straight line from a point of the first triangle to p:
 //   refinement needs to know whether p is visible from a triangle, and if
 //   not, which segment is in the way (the segment whose diametral circle p
 //   then encroaches).
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -39,6 +42,14 @@ struct WalkRandom {
 // triangle; triangle is no_index only when no live triangle holds p.
 WalkResult walk_visibly(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
                         WalkRandom& random);
+
+// walk_visibly that also gives p's weights in the triangle it ends in:
+// weights[i] is twice the signed area of p with the edge opposite corner i
+// (its sign exact: orient2d's), p's barycentric weights unnormalised. For a
+// mesh without ghosts, the point location of a fixed triangulation that
+// interpolates over it (src/sizing/triangle_locator.hpp).
+WalkResult walk_weighing(const HalfEdgeMesh& m, std::span<const Point> points, Point p, std::uint32_t start,
+                         WalkRandom& random, std::array<double, 3>& weights);
 
 // A walk along the straight line from `from` (a point inside the live
 // triangle `start`) to p, crossing only unconstrained edges: blocked_by is
