@@ -4,39 +4,48 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <string>
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "input_domain.hpp"
 #include "option_table.hpp"
 #include "point_set.hpp"
+#include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
+#include "madd/model_output.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/polygons.hpp"
 #include "madd/pslg.hpp"
 #include "madd/triangulation.hpp"
 
 namespace madd::cli {
 namespace {
 
-constexpr const char* check_intro =
-    "usage: madd check [options] FILE.poly|FILE.node\n\n"
-    "Reads and validates a domain (Triangle .poly) and prints a summary: vertices,\n"
-    "segments, holes, regions, area, bounding box and shortest segment, and the\n"
-    "interior constraints it holds (interior and dangling segments, isolated\n"
-    "vertices, vertices on segments).\n"
-    "A PSLG that is not a domain (segments or isolated vertices outside it, open\n"
-    "polylines, parts apart: what madd triangulate takes) is accepted too; its\n"
-    "summary counts each kind, and says why madd decompose and madd mesh refuse it.\n"
-    "A point set (a .node, or a .poly without segments and holes: what madd\n"
-    "triangulate takes) is checked for coordinates, duplicates and at least one\n"
-    "triangle; the summary gives points, bounding box, convex hull and closest pair.\n\n"
-    "options:\n";
+constexpr const char* check_intro = "usage: madd check [options] FILE.poly|FILE.node|FILE.geojson|FILE.shp|FILE.14\n\n"
+                                    "Reads and validates a domain (Triangle .poly) and prints a summary: vertices,\n"
+                                    "segments, holes, regions, area, bounding box and shortest segment, and the\n"
+                                    "interior constraints it holds (interior and dangling segments, isolated\n"
+                                    "vertices, vertices on segments).\n"
+                                    "A PSLG that is not a domain (segments or isolated vertices outside it, open\n"
+                                    "polylines, parts apart: what madd triangulate takes) is accepted too; its\n"
+                                    "summary counts each kind, and says why madd decompose and madd mesh refuse it.\n"
+                                    "A point set (a .node, or a .poly without segments and holes: what madd\n"
+                                    "triangulate takes) is checked for coordinates, duplicates and at least one\n"
+                                    "triangle; the summary gives points, bounding box, convex hull and closest pair.\n"
+                                    "A GeoJSON file or shapefile of water polygons is made a domain as madd mesh\n"
+                                    "makes it (clipped, projected, cleaned: docs/coastal.md) and that domain is\n"
+                                    "summarised, with what cleaning did. An ADCIRC fort.14 (FILE.14) is read back\n"
+                                    "and checked: counts, orientation, boundary lists, islands closed.\n\n"
+                                    "options:\n";
 
 constexpr const char* check_exit_codes =
     "\nexit codes: 0 valid, 2 usage error, 3 bad input (one line: path:line:column: message)\n";
 
 struct CheckArgs {
+  CommandLine line;
   std::string path;
   bool quiet = false;
 };
@@ -141,8 +150,50 @@ void print_pslg_summary(const std::string& path, const Pslg& pslg, const Invalid
   std::printf("  madd triangulate takes it; madd decompose and madd mesh refuse it:\n  %s\n", not_a_domain.what());
 }
 
+// A GeoJSON file or shapefile: the domain its water makes (clipped,
+// projected, cleaned), what cleaning did, and the domain written on request.
+int check_polygon_file(const CheckArgs& args) {
+  const CoastDomain coast = read_input_domain(args.path, args.line, nullptr);
+  if (!args.line.write_poly_file.empty())
+    write_file_atomically(args.line.write_poly_file,
+                          format_poly(coast.domain, "the domain of " + args.path + " as madd cleaned it, in metres"));
+  if (!args.quiet) {
+    std::printf("%s\n", coast_report_line(args.path, coast).c_str());
+    print_summary(args.path, coast.domain);
+  }
+  return exit_ok;
+}
+
+// An ADCIRC fort.14 (FILE.14): read strictly, then checked (counts,
+// orientation, every boundary edge in exactly one list, islands closed).
+bool is_fort14(const std::string& path) { return std::filesystem::path(path).extension() == ".14"; }
+
+int check_fort14_file(const CheckArgs& args) {
+  const Fort14 grid = read_fort14_file(args.path);
+  const Verification check = check_fort14(grid);
+  if (!check.ok()) {
+    std::string message = args.path + ": not a valid fort.14: " + check.problems.front();
+    if (check.problems.size() > 1) message += " (and " + std::to_string(check.problems.size() - 1) + " more problems)";
+    throw InvalidInputError(InputProblem::other, message);
+  }
+  if (args.quiet) return exit_ok;
+  std::size_t islands = 0, nodes = 0;
+  for (const Fort14Boundary& b : grid.land_boundaries) islands += b.type % 10 == 1 ? 1 : 0;
+  for (const Fort14Boundary& b : grid.open_boundaries) nodes += b.nodes.size();
+  std::printf("%s: valid fort.14\n", args.path.c_str());
+  std::printf("  title             %s\n", grid.title.c_str());
+  std::printf("  nodes             %zu\n", grid.points.size());
+  std::printf("  elements          %zu\n", grid.elements.size());
+  std::printf("  open boundaries   %zu (%zu nodes)\n", grid.open_boundaries.size(), nodes);
+  std::printf("  land boundaries   %zu (%zu islands, %llu nodes)\n", grid.land_boundaries.size(), islands,
+              static_cast<unsigned long long>(grid.declared_land_nodes));
+  return exit_ok;
+}
+
 int check_body(void* context) {
   const auto& args = *static_cast<CheckArgs*>(context);
+  if (is_polygon_file(args.path)) return check_polygon_file(args);
+  if (is_fort14(args.path)) return check_fort14_file(args);
   PolyFile file = read_poly_file(args.path);
   if (file.pslg.segments.empty() && file.pslg.holes.empty()) {
     ValidateOptions options;
@@ -170,6 +221,7 @@ int run_check(int argc, char** argv) {
           read_one_operand(options, argc, argv, line, check_intro + options_help(options) + check_exit_codes))
     return *done;
   CheckArgs args;
+  args.line = line;
   args.path = line.operands.front();
   args.quiet = line.quiet;
   return run_guarded("check", check_body, &args);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "input_domain.hpp"
 #include "command_line.hpp"
 #include "option_table.hpp"
 #include "progress.hpp"
@@ -165,7 +166,7 @@ int decompose_body(void* context) {
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;
-  const Pslg domain = read_domain(args.input, validation);
+  const Pslg domain = read_input_domain(args.input, line, line.quiet ? nullptr : stderr, validation).domain;
   times.push_back({"read", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();

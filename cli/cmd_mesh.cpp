@@ -10,6 +10,8 @@
 #include <string>
 
 #include "commands.hpp"
+#include "input_domain.hpp"
+#include "model_files.hpp"
 #include "mesh_arguments.hpp"
 #include "progress.hpp"
 #include "seconds.hpp"
@@ -26,7 +28,7 @@ extern volatile std::sig_atomic_t writing_outputs;  // main.cpp: interrupts unwi
 
 namespace {
 
-constexpr const char* mesh_intro = "usage: madd mesh [options] INPUT.poly\n\n"
+constexpr const char* mesh_intro = "usage: madd mesh [options] INPUT.poly|INPUT.geojson|INPUT.shp\n\n"
                                    "Decomposes the domain into N subdomains, splits every separator and boundary\n"
                                    "piece once to the local size (the Delaunay decoupling), refines every subdomain\n"
                                    "on its own thread with our Delaunay refinement (off-centres, small-angle rules)\n"
@@ -50,7 +52,10 @@ int mesh_body(void* context) {
     };
     options.progress = [&progress](std::uint32_t done, std::uint32_t total) { progress.count(done, total, "meshing"); };
   }
-  const Pslg domain = read_domain(args.input);
+  const CoastDomain input = read_input_domain(args.input, line, line.quiet ? nullptr : stderr);
+  const Pslg& domain = input.domain;
+  const std::optional<DepthField> depth = read_depth(line);
+  if (depth) set_depth(options.size, *depth, input.projection);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
   const MeshRun run = [&] {
     try {
@@ -63,7 +68,10 @@ int mesh_body(void* context) {
   const MeshReport& report = run.report;
   progress.say("writing");
   OutputSet outputs;
-  add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
+  ModelFiles model_files;
+  if (!add_model_files(outputs, model_files, m, line, args.prefix, input.projection, depth,
+                       options.decomposition.threads))
+    add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
   if (!line.split_mesh_dir.empty()) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
     add_split_mesh(outputs, m, line.split_mesh_dir, stem, line.formats.first_index, options.decomposition.threads);

@@ -10,12 +10,14 @@
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "input_domain.hpp"
 #include "option_table.hpp"
 #include "point_set.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/intersections.hpp"
 #include "madd/poly_io.hpp"
+#include "madd/polygons.hpp"
 #include "madd/triangulation.hpp"
 
 namespace madd::cli {
@@ -42,6 +44,7 @@ constexpr const char* triangulate_exit_codes =
     "exit codes: 0 ok, 2 usage error, 3 bad input, 5 output not written, 70 internal error\n";
 
 struct Args {
+  CommandLine line;  // a polygon input's options (cli/input_domain.hpp)
   std::string input;
   std::string prefix;
   bool quiet = false;
@@ -171,7 +174,9 @@ struct Triangulated {
 };
 
 Triangulated triangulate_input(const Args& args) {
-  PolyFile file = read_poly_file(args.input);
+  PolyFile file = is_polygon_file(args.input)
+                      ? PolyFile{read_input_domain(args.input, args.line, args.quiet ? nullptr : stderr).domain, {}}
+                      : read_poly_file(args.input);
   Triangulated out;
   if (file.pslg.segments.empty()) {
     validate_pslg(file.pslg, file.source);
@@ -221,6 +226,7 @@ int run_triangulate(int argc, char** argv) {
   const std::string help = triangulate_intro + options_help(options) + triangulate_exit_codes;
   if (const auto done = read_one_operand(options, argc, argv, line, help)) return *done;
   Args args;
+  args.line = line;
   args.input = line.operands.front();
   args.prefix = line.output;
   args.quiet = line.quiet;
@@ -228,9 +234,10 @@ int run_triangulate(int argc, char** argv) {
   args.options = line.triangulate;
   if (args.prefix.empty()) {
     std::string stem = args.input;
-    for (const char* ext : {".poly", ".node"}) {
-      if (stem.size() > 5 && ends_with(stem, ext)) {
-        stem.resize(stem.size() - 5);
+    for (const char* ext : {".poly", ".node", ".geojson", ".json", ".shp"}) {
+      const std::size_t n = std::string_view(ext).size();
+      if (stem.size() > n && ends_with(stem, ext)) {
+        stem.resize(stem.size() - n);
         break;
       }
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "madd/bisect.hpp"
+#include "madd/coast.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_output.hpp"
@@ -37,6 +38,16 @@ struct CommandLine {
   std::string output, split_dir, subdomains_file, svg_file, geo_file, vtk_file, geojson_file, split_mesh_dir;
   std::string weights_file, areas_file, sizes_file;
   MeshFormats formats;  // madd mesh's files besides PREFIX.node and PREFIX.ele
+
+  // A GIS polygon input (docs/coastal.md): how it becomes a domain, and the
+  // coastal model's files and depths.
+  CoastOptions coast;
+  bool min_island_area_given = false;  // else 4 hmin^2 when --hmin is given
+  std::string write_poly_file;         // check: the domain as cleaned, in metres
+  std::string depth_file;
+  bool depth_up = false;  // the depth file holds elevations, positive up
+  std::string fort14_file, gr3_file, sms_file;
+  bool lonlat = false;  // mesh: PREFIX.node/.msh/.vtu in longitude/latitude
   bool report = false;
   std::string report_file;  // --report=FILE; empty: on stdout
 

@@ -13,6 +13,13 @@ namespace {
 using enum Letter;
 
 constexpr OptionUse decompose_uses[] = {
+    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
+    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
+             "projected); its sides become open boundary (marker 2)"},
+    {"water-at", "keep the water body holding this point (default: the largest)"},
+    {"min-island-area", "remove islands and lakes below A square metres\n"
+                        "(default 4 hmin^2 with --hmin, else none)"},
+    {nullptr, ""},
     {nullptr, "decomposition:"},
     {"subdomains", "number of subdomains (default 2)"},
     {"min-angle", "smallest angle a separator may make (Phi0; default 60; 0 < DEG < 90)"},
@@ -84,6 +91,15 @@ constexpr OptionUse decompose_uses[] = {
 };
 
 constexpr OptionUse mesh_uses[] = {
+    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
+    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
+             "projected); its sides become open boundary (marker 2)"},
+    {"water-at", "keep the water body holding this point (default: the largest)"},
+    {"min-island-area", "remove islands and lakes below A square metres\n"
+                        "(default 4 hmin^2 with --hmin, else none)"},
+    {"depth", "bathymetry: an Esri ASCII grid (.asc) or x y z scatter, in the\n"
+              "input's coordinates, depth positive down; read at every node"},
+    {"depth-up", "the depth file holds elevations (positive up)"},
     {nullptr, "mesh:"},
     {"quality", "smallest angle of every triangle, away from smaller input\n"
                 "angles (default 30; 0 <= DEG < 60; the guarantee holds to 20.7,\n"
@@ -105,6 +121,9 @@ constexpr OptionUse mesh_uses[] = {
                      "h <= 2 x the local half-width of the water / R"},
     {"gradation", "h(x) <= h(y) + G |x - y|: sizes grow by at most G per unit\n"
                   "length (needs another size bound)"},
+    {"wavelength-cells", "h <= T sqrt(g depth) / K: K cells per M2 tidal wavelength\n"
+                         "(needs --depth)"},
+    {"slope-cells", "h <= 2 pi depth / (K |grad depth|) (needs --depth)"},
     {"coast-markers", "the boundary markers that are coast for --distance-rate and\n"
                       "--cells-across (default: every boundary segment)"},
     {nullptr, "decomposition:"},
@@ -122,6 +141,12 @@ constexpr OptionUse mesh_uses[] = {
     {"msh", "also PREFIX.msh (gmsh 4.1: a physical surface per subdomain)"},
     {"vtu", "also PREFIX.vtu (VTK; subdomain as cell data)"},
     {"split-mesh", "also one .node/.ele per subdomain in DIR, with global vertex ids"},
+    {"fort14", "also an ADCIRC fort.14 (lon/lat for a lon/lat input; open and\n"
+               "land boundaries from the markers; depths from --depth)"},
+    {"gr3", "also a SCHISM hgrid.gr3 (metres), and hgrid.ll beside it for a\n"
+            "lon/lat input"},
+    {"2dm", "also an SMS .2dm (nodestrings for the open and land boundaries)"},
+    {"lonlat", "write PREFIX.node, .msh and .vtu in lon/lat (default: metres)"},
     {"report", "the mesh figures as JSON on stdout (or in FILE)"},
     {"quiet", "print nothing on success", none},
     {"help", "this text"},
@@ -152,11 +177,24 @@ constexpr OptionUse script_uses[] = {
 };
 
 constexpr OptionUse check_uses[] = {
+    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
+    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
+             "projected); its sides become open boundary (marker 2)"},
+    {"water-at", "keep the water body holding this point (default: the largest)"},
+    {"min-island-area", "remove islands and lakes below A square metres\n"
+                        "(default 4 hmin^2 with --hmin, else none)"},
+    {"write-poly", "write the domain as it was cleaned and projected (metres)"},
     {"quiet", "print nothing on success; only the exit code tells"},
     {"help", "this text"},
 };
 
 constexpr OptionUse triangulate_uses[] = {
+    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
+    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
+             "projected); its sides become open boundary (marker 2)"},
+    {"water-at", "keep the water body holding this point (default: the largest)"},
+    {"min-island-area", "remove islands and lakes below A square metres\n"
+                        "(default 4 hmin^2 with --hmin, else none)"},
     {"convex-hull", "keep the whole convex hull but the holes (Triangle -pc)"},
     {"region-attributes", "give each triangle the attribute of its region (a\n"
                           "column of PREFIX.ele; 0 outside every region), as Triangle -A"},
@@ -169,7 +207,7 @@ constexpr OptionUse triangulate_uses[] = {
 
 const CommandOptions commands[] = {
     {"decompose", decompose_uses, 25}, {"mesh", mesh_uses, 25},   {"partition", partition_uses, 21},
-    {"script", script_uses, 25},       {"check", check_uses, 16}, {"triangulate", triangulate_uses, 23},
+    {"script", script_uses, 25},       {"check", check_uses, 25}, {"triangulate", triangulate_uses, 25},
 };
 
 }  // namespace

@@ -12,8 +12,10 @@ namespace madd::cli {
 
 namespace {
 
-// The files of the whole mesh, which one process of several cannot write.
-constexpr const char* whole_mesh_only[] = {"neigh", "edge", "msh", "split-mesh"};
+// The files of the whole mesh, which one process of several cannot write
+// (the coastal model files too: docs/coastal.md says how to make them from
+// madd-mpi's run with madd mesh).
+constexpr const char* whole_mesh_only[] = {"neigh", "edge", "msh", "split-mesh", "fort14", "gr3", "2dm", "lonlat"};
 
 // check_options of the decomposition and of the mesh, said with the flags.
 std::string option_problem(const CommandLine& line) {
@@ -25,6 +27,11 @@ std::string option_problem(const CommandLine& line) {
   MeshOptions mesh = line.mesh;
   // The --sizes file is read later; its presence is what a check needs (a size bound to grade).
   if (!line.sizes_file.empty()) mesh.size.triangle_area_samples = {{{0, 0}, 1.0}};
+  // Likewise the --depth file, read with the domain (its coordinates are the input's).
+  if (!line.depth_file.empty()) {
+    mesh.size.depth = [](double, double) { return 1.0; };
+    mesh.size.depth_gradient = [](double, double) { return Point{}; };
+  }
   try {
     check_options(mesh);
   } catch (const OptionError& e) {
@@ -54,8 +61,12 @@ std::string parse_mesh_arguments(int argc, char** argv, MeshArgs& args, bool req
   args.prefix = line.output;
   if (args.prefix.empty()) {
     args.prefix = args.input;
-    if (args.prefix.size() > 5 && args.prefix.compare(args.prefix.size() - 5, 5, ".poly") == 0)
-      args.prefix.resize(args.prefix.size() - 5);
+    for (const std::string ext : {".poly", ".geojson", ".json", ".shp"})
+      if (args.prefix.size() > ext.size() &&
+          args.prefix.compare(args.prefix.size() - ext.size(), ext.size(), ext) == 0) {
+        args.prefix.resize(args.prefix.size() - ext.size());
+        break;
+      }
   }
   return option_problem(line);
 }

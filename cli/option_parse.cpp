@@ -163,7 +163,7 @@ std::string cli_message(const OptionError& error, Scope scope, const CommandOpti
 }
 
 std::string cli_message(const OptionError& error, const CommandOptions& command, const CommandLine& line) {
-  for (const Scope scope : {Scope::decomposition, Scope::mesh_size, Scope::svg})
+  for (const Scope scope : {Scope::decomposition, Scope::mesh_size, Scope::svg, Scope::coast})
     if (row_setting(error.option(), scope, command) != nullptr) return cli_message(error, scope, command, line, false);
   return cli_message(error, Scope::decomposition, command, line, false);
 }

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -137,6 +138,39 @@ std::string balance(Text value, Flag flag, bool& by_work) {
   return {};
 }
 
+// K numbers separated by commas ("-70,43.5,-69.5,43.9").
+std::string numbers(Text value, Flag flag, std::size_t k, std::vector<double>& target) {
+  std::vector<double> list;
+  const std::string all = value;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t comma = std::min(all.find(',', from), all.size());
+    double x = 0;
+    if (!parse_number(all.substr(from, comma - from).c_str(), x)) break;
+    list.push_back(x);
+    if (comma == all.size()) break;
+    from = comma + 1;
+  }
+  if (list.size() != k)
+    return refused(flag, k == 4 ? "needs four numbers X0,Y0,X1,Y1" : "needs two numbers X,Y", value);
+  target = std::move(list);
+  return {};
+}
+
+std::string clip_box(Text value, Flag flag, std::optional<ClipBox>& target) {
+  std::vector<double> v;
+  std::string problem = numbers(value, flag, 4, v);
+  if (problem.empty()) target = ClipBox{v[0], v[1], v[2], v[3]};
+  return problem;
+}
+
+std::string point(Text value, Flag flag, std::optional<Point>& target) {
+  std::vector<double> v;
+  std::string problem = numbers(value, flag, 2, v);
+  if (problem.empty()) target = Point{v[0], v[1]};
+  return problem;
+}
+
 using enum Arity;
 using enum Scope;
 
@@ -215,6 +249,10 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.cells_across); }},
     {"gradation", 0, required, "G", mesh_size, "size_gradation",
      [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.size_gradation); }},
+    {"wavelength-cells", 0, required, "K", mesh_size, "wavelength_cells",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.wavelength_cells); }},
+    {"slope-cells", 0, required, "K", mesh_size, "slope_cells",
+     [](CommandLine& l, Text v, Flag f) { return number(v, f, l.mesh.size.slope_cells); }},
     {"coast-markers", 0, required, "M,...", mesh_size, "coast_markers",
      [](CommandLine& l, Text v, Flag f) { return markers(v, f, l.mesh.size.coast_markers); }},
     {"balance", 0, required, "area|work", front_end, nullptr,
@@ -223,6 +261,26 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text, Flag) { return switch_off(l.mesh.off_centres); }},
     {"no-verify", 0, none, nullptr, front_end, nullptr,
      [](CommandLine& l, Text, Flag) { return switch_off(l.mesh.verify); }},
+
+    // A GIS polygon input (CoastOptions, docs/coastal.md).
+    {"clip", 0, required, "X0,Y0,X1,Y1", coast, "clip",
+     [](CommandLine& l, Text v, Flag f) { return clip_box(v, f, l.coast.clip); }},
+    {"water-at", 0, required, "X,Y", coast, "water_at",
+     [](CommandLine& l, Text v, Flag f) { return point(v, f, l.coast.water_at); }},
+    {"min-island-area", 0, required, "A", coast, "min_island_area",
+     [](CommandLine& l, Text v, Flag f) {
+       l.min_island_area_given = true;
+       return number(v, f, l.coast.min_island_area);
+     }},
+    {"write-poly", 0, required, "FILE.poly", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.write_poly_file); }},
+    {"depth", 0, required, "FILE", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.depth_file); }},
+    {"depth-up", 0, none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { return switch_on(l.depth_up); }},
+    {"fort14", 0, required, "FILE", front_end, nullptr,
+     [](CommandLine& l, Text v, Flag) { return text(v, l.fort14_file); }},
+    {"gr3", 0, required, "FILE", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.gr3_file); }},
+    {"2dm", 0, required, "FILE", front_end, nullptr, [](CommandLine& l, Text v, Flag) { return text(v, l.sms_file); }},
+    {"lonlat", 0, none, nullptr, front_end, nullptr, [](CommandLine& l, Text, Flag) { return switch_on(l.lonlat); }},
 
     // Outputs.
     {"output", 'o', required, "FILE", front_end, nullptr,

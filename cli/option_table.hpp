@@ -18,7 +18,7 @@ enum class Arity { none, required, optional };
 // Which of the library's option structs holds a row's field, so that an
 // OptionError of its check_options (which names the field) finds the flag;
 // `front_end` for what only the front end holds.
-enum class Scope { front_end, decomposition, mesh_size, svg };
+enum class Scope { front_end, decomposition, mesh_size, svg, coast };
 
 // Reads `value` (nullptr for an option without one) into the command line;
 // returns "" or the problem, said with `flag` as typed ("-j needs a whole number").

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "cli/option_table.hpp"
+#include "cli_sandbox.hpp"
 #include "madd/decomposition.hpp"
 
 #ifdef MADD_CLI_PATH
@@ -23,36 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
-
-class CliSandbox {
-public:
-  CliSandbox() : dir_(fs::temp_directory_path() / ("madd-cli-options-" + std::to_string(::getpid()))) {
-    fs::create_directories(dir_);
-  }
-  ~CliSandbox() {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
-  CliRun run(const std::string& arguments) const {
-    const fs::path log = dir_ / "log";
-    const std::string command = std::string("cd '") + dir_.string() + "' && '" + MADD_CLI_PATH + "' " + arguments +
-                                " > '" + log.string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    std::ifstream in(log);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-  }
-
-private:
-  fs::path dir_;
-};
+using madd_test::CliRun;
+using madd_test::CliSandbox;
 
 const std::string key_poly = std::string(MADD_DATA_DIR) + "/key.poly";
 const std::string pipe_poly = std::string(MADD_DATA_DIR) + "/pipe.poly";
@@ -189,6 +162,8 @@ TEST_CASE("every option decompose and mesh share is taken by both commands") {
                 {"cells-across", " 3 --hmin 0.1"},
                 {"gradation", " 0.3 --hmax 0.5"},
                 {"coast-markers", " 1"}});
+  // A GeoJSON input's (tests/coast_cli_test.cpp has the rest).
+  value.insert({{"clip", " -70.45,43.05,-70.05,43.45"}, {"water-at", " -70.3,43.02"}, {"min-island-area", " 1e6"}});
   std::ofstream(box.path("s.node")) << "4 2 1 0\n1 -2 -2 0.05\n2 8 -2 0.05\n3 8 2 0.05\n4 -2 2 0.02\n";
   const madd::cli::CommandOptions& mesh = madd::cli::options_of("mesh");
   int shared = 0;
@@ -202,8 +177,11 @@ TEST_CASE("every option decompose and mesh share is taken by both commands") {
     ++shared;
     REQUIRE(value.count(use.name) == 1);
     const std::string option = " --" + std::string(use.name) + value.at(use.name);
-    const CliRun decompose = box.run(key_poly + " -n 4 --quiet" + option);
-    const CliRun meshed = box.run("mesh " + key_poly + " -n 4 --quiet -o m" + option);
+    // A GeoJSON input's options on a GeoJSON input.
+    const bool coast = madd::cli::find_option(use.name)->scope == madd::cli::Scope::coast;
+    const std::string input = coast ? std::string(MADD_DATA_DIR) + "/coast/lagoon.geojson" : key_poly;
+    const CliRun decompose = box.run(input + " -n 4 --quiet" + option);
+    const CliRun meshed = box.run("mesh " + input + " -n 4 --quiet -o m" + option);
     CHECK_MESSAGE(decompose.status == 0, decompose.output);
     CHECK_MESSAGE(meshed.status == 0, meshed.output);
   }

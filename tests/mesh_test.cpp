@@ -282,3 +282,37 @@ TEST_CASE("mesh: a triangle at a small input angle is still split when it is abo
     CHECK(madd::triangle_area(a, b, c) <= o.size.triangle_area_function(centre.x, centre.y));
   }
 }
+
+TEST_CASE("mesh: islands touching the coast and each other at a vertex, at every N (the touch in one subdomain)") {
+  // A coast with two islands: C touches the coast's vertex (0, 8), B touches
+  // A's corner (5, 4). Each ring passes its touching vertex once, so a
+  // subdomain holding the vertex has it on two of its rings: the mesher
+  // once made it two vertices of the subdomain ("duplicate vertex").
+  madd::Pslg p;
+  const auto ring = [&](std::vector<Point> points) {
+    std::vector<std::uint32_t> ids;
+    for (const Point q : points) {
+      const auto at = std::find(p.points.begin(), p.points.end(), q);
+      ids.push_back(static_cast<std::uint32_t>(at - p.points.begin()));
+      if (at == p.points.end()) p.points.push_back(q);
+    }
+    for (std::size_t k = 0; k < ids.size(); ++k) p.segments.push_back({ids[k], ids[(k + 1) % ids.size()], 1});
+  };
+  ring({{0, 0}, {12, 0}, {12, 8}, {0, 8}});
+  ring({{3, 2}, {5, 2}, {5, 4}, {3, 4}});
+  ring({{5, 4}, {7, 4}, {6, 6}});
+  ring({{0, 8}, {1, 6}, {2, 7}});
+  p.holes = {{4, 3}, {6, 4.6}, {1, 7}};
+  madd::validate(p);
+  const double area = 12 * 8 - 4 - 2 - 1.5;
+  for (std::uint32_t n = 1; n <= 6; ++n) {
+    CAPTURE(n);
+    const Mesh m = madd::mesh(p, options_for(n, 30, 0.3));  // verify_mesh passed inside
+    double total = 0;
+    for (const auto& t : m.triangles) total += madd::signed_area(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    CHECK(total == doctest::Approx(area));
+    for (const Point touch : {Point{0, 8}, Point{5, 4}})
+      CHECK(std::count(m.points.begin(), m.points.end(), touch) == 1);
+    check_mesh(m, p, 0.3);
+  }
+}

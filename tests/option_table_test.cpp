@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <set>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,7 +43,9 @@ std::string fingerprint(const CommandLine& l) {
       << static_cast<int>(s.sample_interpolation) << ' ' << s.min_edge_length << ' ' << s.max_edge_length << ' '
       << s.distance_rate << ' ' << s.cells_across << ' ' << s.size_gradation << ' ' << s.coast_markers.size() << ' '
       << l.mesh.balance_by_work << l.mesh.off_centres << l.mesh.verify << " | " << l.output << ' ' << l.report
-      << l.report_file << ' ' << l.quiet << l.verbose << l.help << l.subdomains_given;
+      << l.report_file << ' ' << l.quiet << l.verbose << l.help << l.subdomains_given << " | "
+      << l.coast.clip.has_value() << l.coast.water_at.has_value() << ' ' << l.coast.min_island_area << ' '
+      << l.min_island_area_given;
   return out.str();
 }
 
@@ -123,7 +126,9 @@ TEST_CASE("an option decompose and mesh share sets the same thing in both") {
     ++shared;
     const Option& row = *find_option(use.name);
     std::vector<std::string> words = {"--" + std::string(use.name)};
-    if (row.arity == Arity::required) words.push_back("3");  // a number, an expression and a file name alike
+    // A number, an expression and a file name alike; the coast's box and point take lists.
+    const std::map<std::string, std::string> lists = {{"clip", "0,0,1,1"}, {"water-at", "0.5,0.5"}};
+    if (row.arity == Arity::required) words.push_back(lists.count(use.name) ? lists.at(use.name) : "3");
     CommandLine a, b;
     CHECK(parse("decompose", words, a).empty());
     CHECK(parse("mesh", words, b).empty());
@@ -214,7 +219,7 @@ TEST_CASE("a bad size field value names the flag as typed; so do the library's s
   CHECK_MESSAGE(rate.rfind("--distance-rate needs --hmin > 0", 0) == 0, rate);
   const std::string grade = said("mesh", {"--gradation", "0.2"});
   CHECK_MESSAGE(grade.rfind("--gradation needs a size bound to grade (--hmax, --distance-rate, --cells-across, "
-                            "--max-area, --size-fn or --sizes)",
+                            "--wavelength-cells, --slope-cells, --max-area, --size-fn or --sizes)",
                             0) == 0,
                 grade);
   CHECK(said("mesh", {"--gradation", "0.2", "--hmax", "1"}).empty());

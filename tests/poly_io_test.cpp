@@ -272,3 +272,8 @@ TEST_CASE("write_file_atomically writes through a rename and reports failures") 
 }
 
 }  // TEST_SUITE("poly_io")
+
+TEST_CASE("read_poly_file of a directory is an input file error (it was bad_alloc: tellg of a directory)") {
+  CHECK_THROWS_AS(madd::read_poly_file(MADD_DATA_DIR), madd::InputFileError);
+  CHECK_THROWS_AS(madd::read_domain(MADD_DATA_DIR "/bad"), madd::InputFileError);
+}

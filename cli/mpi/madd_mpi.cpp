@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "../commands.hpp"
+#include "../input_domain.hpp"
 #include "../interrupts.hpp"
 #include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
@@ -339,7 +340,7 @@ int run(const World& world, const cli::MeshArgs& args) {
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
                            options = cli::with_background_files(args.line);
-                           domain = read_domain(args.input);
+                           domain = cli::read_input_domain(args.input, args.line, nullptr).domain;
                            decomposition = decompose_for_mesh(domain, options).decomposition;
                          }));
   if (code != cli::exit_ok) return code;

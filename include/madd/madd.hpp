@@ -1,7 +1,9 @@
 #pragma once
 // The whole public API of madd in one include.
 #include "madd/atomic_write.hpp"
+#include "madd/bathymetry.hpp"
 #include "madd/bisect.hpp"
+#include "madd/coast.hpp"
 #include "madd/decomposition.hpp"
 #include "madd/error.hpp"
 #include "madd/expression.hpp"
@@ -16,8 +18,10 @@
 #include "madd/mesh_share.hpp"
 #include "madd/metis_io.hpp"
 #include "madd/metrics.hpp"
+#include "madd/model_output.hpp"
 #include "madd/output.hpp"
 #include "madd/output_formats.hpp"
+#include "madd/polygons.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "madd/pslg.hpp"

@@ -55,9 +55,22 @@ struct MeshSizeOptions {
   // The boundary markers that count as coast for the distance and the
   // feature size (empty: every boundary segment is coast).
   std::vector<int> coast_markers;
+  // The depth rules of coastal models (docs/coastal.md, "Depth"), on the
+  // water depth (positive below the datum, in the domain's units) and its
+  // gradient, e.g. a DepthField's (madd/bathymetry.hpp) read through
+  // madd/coast.hpp's set_depth; where the depth is <= 0 (land, drying
+  // banks) they do not bind. Each term is floored at min_edge_length, like
+  // the feature-size term.
+  std::function<double(double x, double y)> depth;
+  std::function<Point(double x, double y)> depth_gradient;
+  double wavelength_cells = 0.0;  // --wavelength-cells K: h <= T_M2 sqrt(g depth) / K (needs depth)
+  double slope_cells = 0.0;       // --slope-cells K: h <= 2 pi depth / (K |grad depth|) (needs depth, depth_gradient)
 
-  // A field term that needs the domain: distance, feature size, gradation.
-  bool has_field_terms() const noexcept { return distance_rate > 0.0 || cells_across > 0.0 || size_gradation > 0.0; }
+  // A field term that needs the domain: distance, feature size, depth rules, gradation.
+  bool has_field_terms() const noexcept {
+    return distance_rate > 0.0 || cells_across > 0.0 || size_gradation > 0.0 || has_depth_terms();
+  }
+  bool has_depth_terms() const noexcept { return wavelength_cells > 0.0 || slope_cells > 0.0; }
   bool has_size_bound() const noexcept {
     return max_triangle_area > 0.0 || triangle_area_function || !triangle_area_samples.empty() ||
            max_edge_length > 0.0 || has_field_terms();

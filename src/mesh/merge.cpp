@@ -14,25 +14,11 @@ namespace madd::detail {
 LocalDomain local_domain(const Decomposition& d, std::uint32_t k) {
   const Subdomain& s = d.subdomains[k];
   LocalDomain out;
-  for (std::size_t r = 0; r < s.rings.size(); ++r) {
-    const auto first = static_cast<std::uint32_t>(out.pslg.points.size());
-    const std::size_t n = s.rings[r].size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t here = first + static_cast<std::uint32_t>(i);
-      const std::uint32_t next = i + 1 == n ? first : here + 1;
-      const std::uint32_t j = s.ring_segments[r][i];
-      out.pslg.points.push_back(d.points[s.rings[r][i]]);
-      out.to_global.push_back(s.rings[r][i]);
-      out.pslg.segments.push_back({here, next, d.segments[j].marker});
-      out.piece.push_back(j);
-      out.splittable.push_back(!d.is_separator(j));
-    }
-  }
-  // Interior pieces and isolated vertices: constraints inside the rings. A
-  // piece's end is a ring vertex (a segment from the boundary inwards) or
-  // another interior vertex, listed once, after the rings.
+  // Every global vertex is one local vertex, listed where it first appears:
+  // the rings' vertices in ring order, then the interior pieces' other ends
+  // and the isolated vertices. A vertex may stand on a ring twice, or on two
+  // rings, where they touch (an island touching the coast at a point).
   std::unordered_map<std::uint32_t, std::uint32_t> local_of;
-  for (std::uint32_t v = 0; v < out.to_global.size(); ++v) local_of.emplace(out.to_global[v], v);
   const auto local_vertex = [&](std::uint32_t g) {
     const auto [it, added] = local_of.emplace(g, static_cast<std::uint32_t>(out.to_global.size()));
     if (added) {
@@ -41,6 +27,22 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k) {
     }
     return it->second;
   };
+  for (std::size_t r = 0; r < s.rings.size(); ++r) {
+    const std::size_t n = s.rings[r].size();
+    const std::uint32_t first = local_vertex(s.rings[r][0]);
+    std::uint32_t here = first;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t next = i + 1 == n ? first : local_vertex(s.rings[r][i + 1]);
+      const std::uint32_t j = s.ring_segments[r][i];
+      out.pslg.segments.push_back({here, next, d.segments[j].marker});
+      out.piece.push_back(j);
+      out.splittable.push_back(!d.is_separator(j));
+      here = next;
+    }
+  }
+  // Interior pieces and isolated vertices: constraints inside the rings. A
+  // piece's end is a ring vertex (a segment from the boundary inwards) or
+  // another interior vertex, listed once, after the rings.
   for (const std::uint32_t j : s.interior_segments) {
     const Segment& g = d.segments[j];
     out.pslg.segments.push_back({local_vertex(g.a), local_vertex(g.b), g.marker});

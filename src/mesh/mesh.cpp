@@ -42,11 +42,11 @@ void check_options(const MeshOptions& options) {
       throw OptionError("triangle_area_samples", "every sample must have finite coordinates and a finite area > 0");
   }
   // The size field's terms (each 0 = off).
-  const std::pair<const char*, double> field_terms[] = {{"min_edge_length", s.min_edge_length},
-                                                        {"max_edge_length", s.max_edge_length},
-                                                        {"distance_rate", s.distance_rate},
-                                                        {"cells_across", s.cells_across},
-                                                        {"size_gradation", s.size_gradation}};
+  const std::pair<const char*, double> field_terms[] = {
+      {"min_edge_length", s.min_edge_length}, {"max_edge_length", s.max_edge_length},
+      {"distance_rate", s.distance_rate},     {"cells_across", s.cells_across},
+      {"size_gradation", s.size_gradation},   {"wavelength_cells", s.wavelength_cells},
+      {"slope_cells", s.slope_cells}};
   for (const auto& [field, value] : field_terms)
     if (!(value >= 0) || !std::isfinite(value)) throw OptionError(field, "must be finite and >= 0");
   if (s.min_edge_length > 0 && s.max_edge_length > 0 && s.max_edge_length < s.min_edge_length)
@@ -55,13 +55,17 @@ void check_options(const MeshOptions& options) {
     throw OptionError("distance_rate",
                       "needs min_edge_length > 0: the edge length at the coast, which grows by distance_rate per unit "
                       "of distance from it");
+  if (s.has_depth_terms() && !s.depth)
+    throw OptionError(s.wavelength_cells > 0 ? "wavelength_cells" : "slope_cells", "needs a depth (bathymetry)");
+  if (s.slope_cells > 0 && !s.depth_gradient)
+    throw OptionError("slope_cells", "needs the depth's gradient (bathymetry)");
   // Gradation only lowers a field some other bound sets.
   const bool other_bound = s.max_triangle_area > 0 || s.triangle_area_function || !s.triangle_area_samples.empty() ||
-                           s.max_edge_length > 0 || s.distance_rate > 0 || s.cells_across > 0;
+                           s.max_edge_length > 0 || s.distance_rate > 0 || s.cells_across > 0 || s.has_depth_terms();
   if (s.size_gradation > 0 && !other_bound)
     throw OptionError("size_gradation",
-                      "needs a size bound to grade (max_edge_length, distance_rate, cells_across, max_triangle_area, "
-                      "triangle_area_function or triangle_area_samples)");
+                      "needs a size bound to grade (max_edge_length, distance_rate, cells_across, wavelength_cells, "
+                      "slope_cells, max_triangle_area, triangle_area_function or triangle_area_samples)");
 }
 
 namespace {

@@ -11,6 +11,7 @@
 // last section are errors, and coordinates must be finite.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "madd/error.hpp"
@@ -146,6 +147,9 @@ std::string companion_node_path(const std::string& poly_path) {
 // One read of the whole file: the lexer then works on memory (fast, and the
 // file size bounds every count before allocation).
 bool read_whole_file(const std::string& path, std::string& text) {
+  // A directory opens, and tellg then gives a size no file has (bad_alloc, exit 70, once).
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return false;
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return false;
   const std::streamoff size = in.tellg();

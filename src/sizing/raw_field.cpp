@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "madd/bathymetry.hpp"
 #include "sizing/feature_width.hpp"
 #include "sizing/edge_length.hpp"
 
@@ -22,6 +23,15 @@ std::vector<ValuedPoint> valued(const std::vector<Point>& points) {
 }
 
 }  // namespace
+
+double RawField::depth_term(Point x) const {
+  if (!size_.has_depth_terms()) return infinity;
+  const double d = size_.depth(x.x, x.y);
+  double h = wavelength_edge(d, size_.wavelength_cells);
+  if (size_.slope_cells > 0.0)
+    h = std::min(h, slope_edge(d, length(size_.depth_gradient(x.x, x.y)), size_.slope_cells));
+  return std::isfinite(h) ? std::max(size_.min_edge_length, h) : infinity;
+}
 
 RawField::RawField(const Coast& coast, const MeshSizeOptions& size)
     : coast_(coast), size_(size), coast_vertices_(valued(coast.coast_vertices)), nearest_vertex_(coast_vertices_) {
@@ -62,6 +72,9 @@ RawSample RawField::at(Point x, Point inward) const {
     other = std::min(other, out.feature_term);
     h = std::min(h, out.feature_term);
   }
+  const double depth_term = this->depth_term(x);
+  other = std::min(other, depth_term);
+  h = std::min(h, depth_term);
   out.other = other;
   out.edge = h;
   return out;

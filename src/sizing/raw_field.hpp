@@ -4,6 +4,9 @@
 //   hmax;
 //   the distance term hmin + G_d d(x), d the exact distance to the coast;
 //   the feature-size term max(hmin, 2 width(x) / R) (feature_width.hpp);
+//   the depth rules (madd/bathymetry.hpp's wavelength_edge and slope_edge:
+//   the M2 tide's wavelength in K_w cells, the slope's 2 pi depth / (K_s
+//   |grad depth|)), each floored at hmin, not binding where depth <= 0;
 //   the user's bounds (-a, --size-fn, --sizes) as edge lengths, only when a
 //   gradation is asked for (the mesher applies them exactly at every point
 //   anyway; the background needs them only to grade them);
@@ -44,6 +47,7 @@ public:
   double extent() const noexcept { return extent_; }
 
 private:
+  double depth_term(Point x) const;
   const Coast& coast_;
   const MeshSizeOptions& size_;
   std::vector<ValuedPoint> coast_vertices_;

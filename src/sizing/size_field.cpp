@@ -78,6 +78,9 @@ void check_field_options(const MeshSizeOptions& size) {
   check_length("distance_rate", size.distance_rate);
   check_length("cells_across", size.cells_across);
   check_length("size_gradation", size.size_gradation);
+  check_length("wavelength_cells", size.wavelength_cells);
+  check_length("slope_cells", size.slope_cells);
+  if (size.has_depth_terms() && !size.depth) throw OptionError("wavelength_cells", "needs a depth (bathymetry)");
   if (size.min_edge_length > 0.0 && size.max_edge_length > 0.0 && size.min_edge_length > size.max_edge_length)
     throw OptionError("min_edge_length", "must be at most max_edge_length");
   if ((size.distance_rate > 0.0 || size.cells_across > 0.0) && !(size.min_edge_length > 0.0))

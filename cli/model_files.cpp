@@ -1,0 +1,53 @@
+#include "model_files.hpp"
+
+#include <filesystem>
+
+#include "madd/mesh_output.hpp"
+
+namespace madd::cli {
+
+namespace {
+
+// hgrid.ll beside hgrid.gr3: the same path with .ll for its extension.
+std::string ll_path(const std::string& gr3) { return std::filesystem::path(gr3).replace_extension(".ll").string(); }
+
+std::vector<Point> in_lonlat(const std::vector<Point>& points, const Projection& projection) {
+  std::vector<Point> out;
+  out.reserve(points.size());
+  for (const Point p : points) out.push_back(projection.to_lonlat(p));
+  return out;
+}
+
+}  // namespace
+
+std::optional<DepthField> read_depth(const CommandLine& line) {
+  if (line.depth_file.empty()) return std::nullopt;
+  return DepthField(read_bathymetry(line.depth_file, line.depth_up));
+}
+
+bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
+                     const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
+                     unsigned threads) {
+  const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
+  if (!model && !line.lonlat) return false;
+  const std::vector<Point> lonlat = projection.geographic ? in_lonlat(mesh.points, projection) : std::vector<Point>{};
+  const std::string title = std::filesystem::path(prefix).filename().string() + " (madd mesh)";
+  files.metres.title = title;
+  if (depth) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);
+  files.lonlat = files.metres;
+  files.lonlat.coordinates = lonlat;
+  const ModelGrid& written = projection.geographic ? files.lonlat : files.metres;
+  if (!line.fort14_file.empty()) add_fort14(outputs, line.fort14_file, mesh, written, threads);
+  if (!line.gr3_file.empty()) {
+    add_gr3(outputs, line.gr3_file, mesh, files.metres, threads);
+    if (projection.geographic) add_gr3(outputs, ll_path(line.gr3_file), mesh, files.lonlat, threads);
+  }
+  if (!line.sms_file.empty()) add_2dm(outputs, line.sms_file, mesh, line.lonlat ? written : files.metres, threads);
+  if (!line.lonlat) return false;
+  files.lonlat_mesh = mesh;
+  if (projection.geographic) files.lonlat_mesh.points = lonlat;
+  add_mesh(outputs, files.lonlat_mesh, prefix, line.formats, threads);
+  return true;
+}
+
+}  // namespace madd::cli
