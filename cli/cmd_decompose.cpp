@@ -166,7 +166,8 @@ int decompose_body(void* context) {
   // Boundary weights are only checked (finite, >= 0) when grading uses them (docs/formats.md).
   ValidateOptions validation;
   validation.check_weights = options.gradation > 0;
-  const Pslg domain = read_input_domain(args.input, line, line.quiet ? nullptr : stderr, validation).domain;
+  const CoastDomain input = read_input_domain(args.input, line, line.quiet ? nullptr : stderr, validation);
+  const Pslg& domain = input.domain;
   times.push_back({"read", seconds_since(start)});
 
   start = std::chrono::steady_clock::now();
@@ -192,7 +193,9 @@ int decompose_body(void* context) {
   // For external meshers: every segment split once to the size bound and the
   // local feature size, so that meshers keeping boundary segments join up.
   if (read.size.has_size_bound()) {
-    write_outputs(args, with_cli_option_names(line, [&] { return discretise(d, domain, read.size, options); }), m);
+    MeshSizeOptions size = read.size;
+    default_coast_markers(size, args.input, input, line);
+    write_outputs(args, with_cli_option_names(line, [&] { return discretise(d, domain, size, options); }), m);
   } else {
     write_outputs(args, d, m);
   }

@@ -54,6 +54,7 @@ int mesh_body(void* context) {
   }
   const CoastDomain input = read_input_domain(args.input, line, line.quiet ? nullptr : stderr);
   const Pslg& domain = input.domain;
+  default_coast_markers(options.size, args.input, input, line);
   const std::optional<DepthField> depth = read_depth(line);
   if (depth) set_depth(options.size, *depth, input.projection);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");

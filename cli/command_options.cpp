@@ -14,8 +14,8 @@ using enum Letter;
 
 constexpr OptionUse decompose_uses[] = {
     {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
-             "projected); its sides become open boundary (marker 2)"},
+    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
+             "when projected); its sides become open boundary (marker 2)"},
     {"water-at", "keep the water body holding this point (default: the largest)"},
     {"min-island-area", "remove islands and lakes below A square metres\n"
                         "(default 4 hmin^2 with --hmin, else none)"},
@@ -92,8 +92,8 @@ constexpr OptionUse decompose_uses[] = {
 
 constexpr OptionUse mesh_uses[] = {
     {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
-             "projected); its sides become open boundary (marker 2)"},
+    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
+             "when projected); its sides become open boundary (marker 2)"},
     {"water-at", "keep the water body holding this point (default: the largest)"},
     {"min-island-area", "remove islands and lakes below A square metres\n"
                         "(default 4 hmin^2 with --hmin, else none)"},
@@ -178,11 +178,13 @@ constexpr OptionUse script_uses[] = {
 
 constexpr OptionUse check_uses[] = {
     {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
-             "projected); its sides become open boundary (marker 2)"},
+    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
+             "when projected); its sides become open boundary (marker 2)"},
     {"water-at", "keep the water body holding this point (default: the largest)"},
     {"min-island-area", "remove islands and lakes below A square metres\n"
                         "(default 4 hmin^2 with --hmin, else none)"},
+    {"hmin", "the mesh's --hmin: islands below 4 hmin^2 are removed, as madd mesh\n"
+             "removes them (unless --min-island-area)"},
     {"write-poly", "write the domain as it was cleaned and projected (metres)"},
     {"quiet", "print nothing on success; only the exit code tells"},
     {"help", "this text"},
@@ -190,8 +192,8 @@ constexpr OptionUse check_uses[] = {
 
 constexpr OptionUse triangulate_uses[] = {
     {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to this box (lon/lat, or x/y when\n"
-             "projected); its sides become open boundary (marker 2)"},
+    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
+             "when projected); its sides become open boundary (marker 2)"},
     {"water-at", "keep the water body holding this point (default: the largest)"},
     {"min-island-area", "remove islands and lakes below A square metres\n"
                         "(default 4 hmin^2 with --hmin, else none)"},

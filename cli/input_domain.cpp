@@ -1,5 +1,7 @@
 #include "input_domain.hpp"
 
+#include <set>
+
 #include "option_table.hpp"
 #include "madd/error.hpp"
 #include "madd/poly_io.hpp"
@@ -12,6 +14,15 @@ CoastOptions coast_options(const CommandLine& line) {
   const double hmin = line.mesh.size.min_edge_length;
   if (!line.min_island_area_given && hmin > 0) options.min_island_area = 4 * hmin * hmin;
   return options;
+}
+
+void default_coast_markers(MeshSizeOptions& size, const std::string& path, const CoastDomain& coast,
+                           const CommandLine& line) {
+  if (!is_polygon_file(path) || !size.coast_markers.empty()) return;
+  std::set<int> land;
+  for (const Segment& s : coast.domain.segments)
+    if (s.marker != line.coast.open_marker) land.insert(s.marker);
+  if (coast.report.open_segments > 0 && !land.empty()) size.coast_markers.assign(land.begin(), land.end());
 }
 
 std::string coast_report_line(const std::string& path, const CoastDomain& coast) {

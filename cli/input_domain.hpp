@@ -21,6 +21,12 @@ CoastOptions coast_options(const CommandLine& line);
 CoastDomain read_input_domain(const std::string& path, const CommandLine& line, std::FILE* notes,
                               const ValidateOptions& validation = {});
 
+// For a polygon file without --coast-markers: every boundary marker but the
+// open marker is coast, so that the sides of the clip box (open sea) do not
+// pull the size field's distance and feature-size terms fine.
+void default_coast_markers(MeshSizeOptions& size, const std::string& path, const CoastDomain& coast,
+                           const CommandLine& line);
+
 // One line of what cleaning a coastline did, for the user.
 std::string coast_report_line(const std::string& path, const CoastDomain& coast);
 

@@ -263,7 +263,7 @@ constexpr Option rows[] = {
      [](CommandLine& l, Text, Flag) { return switch_off(l.mesh.verify); }},
 
     // A GIS polygon input (CoastOptions, docs/coastal.md).
-    {"clip", 0, required, "X0,Y0,X1,Y1", coast, "clip",
+    {"clip", 0, required, "BOX", coast, "clip",
      [](CommandLine& l, Text v, Flag f) { return clip_box(v, f, l.coast.clip); }},
     {"water-at", 0, required, "X,Y", coast, "water_at",
      [](CommandLine& l, Text v, Flag f) { return point(v, f, l.coast.water_at); }},

@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "madd/bathymetry.hpp"
+#include "madd/error.hpp"
 #include "madd/mesh.hpp"
 #include "madd/pslg.hpp"
 #include "madd/decomposition.hpp"
@@ -313,4 +315,44 @@ TEST_CASE("narrow gap: a needle of water under 3 degrees is a gap, a wider wedge
   // Near the wedge's tip it is 0.06 wide, but refinement leaves the angle be.
   CHECK(gaps.area_at({19.9, 10}, bound) == bound);
 }
+}
+
+TEST_CASE("depth rules: every triangle within the M2 wavelength's and the slope's edge at its centroid") {
+  // A 40 km square sea whose depth grows linearly eastwards, 5 m to 25 m:
+  // h_w = T sqrt(g d) / 40 runs from 2.5 to 5.5 km (below hmax 20 km), and
+  // the slope's 2 pi d / (K |grad d|) with |grad d| = 1/2000 from 1.6 to 7.9
+  // km at K 40. sqrt is concave and the slope term linear in d, so the
+  // background's linear reading of either lies below it: the raw rule at
+  // a triangle's centroid bounds it.
+  madd::Pslg sea;
+  sea.points = {{0, 0}, {40000, 0}, {40000, 40000}, {0, 40000}};
+  for (std::uint32_t i = 0; i < 4; ++i) sea.segments.push_back({i, (i + 1) % 4, 1});
+  const auto depth = [](double x, double) { return 5.0 + x / 2000.0; };
+  for (const bool slope : {false, true}) {
+    CAPTURE(slope);
+    madd::MeshOptions o;
+    o.decomposition.subdomains = 4;
+    o.decomposition.threads = 2;
+    o.size.min_edge_length = 500;
+    o.size.max_edge_length = 20000;
+    o.size.depth = depth;
+    o.size.depth_gradient = [](double, double) { return madd::Point{1.0 / 2000.0, 0.0}; };
+    (slope ? o.size.slope_cells : o.size.wavelength_cells) = 40;
+    const madd::Mesh m = madd::mesh(sea, o);
+    std::size_t near_bound = 0;
+    for (const auto& t : m.triangles) {
+      const madd::Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
+      const madd::Point g = madd::triangle_centroid(a, b, c);
+      const double d = depth(g.x, g.y);
+      const double h = slope ? madd::slope_edge(d, 1.0 / 2000.0, 40) : madd::wavelength_edge(d, 40);
+      const double bound = std::sqrt(3.0) / 4.0 * h * h;
+      REQUIRE(madd::triangle_area(a, b, c) <= bound * (1 + 1e-12));
+      near_bound += madd::triangle_area(a, b, c) > 0.25 * bound ? 1 : 0;
+    }
+    CHECK(near_bound > m.triangles.size() / 4);  // the rule is what sizes the mesh, not hmin
+  }
+  // Without a depth the rules are an option error.
+  madd::MeshOptions bad;
+  bad.size.wavelength_cells = 40;
+  CHECK_THROWS_AS(madd::check_options(bad), madd::OptionError);
 }

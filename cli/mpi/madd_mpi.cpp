@@ -340,7 +340,9 @@ int run(const World& world, const cli::MeshArgs& args) {
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
                            options = cli::with_background_files(args.line);
-                           domain = cli::read_input_domain(args.input, args.line, nullptr).domain;
+                           CoastDomain input = cli::read_input_domain(args.input, args.line, nullptr);
+                           cli::default_coast_markers(options.size, args.input, input, args.line);
+                           domain = std::move(input.domain);
                            decomposition = decompose_for_mesh(domain, options).decomposition;
                          }));
   if (code != cli::exit_ok) return code;
