@@ -12,10 +12,10 @@ namespace madd::cli {
 
 namespace {
 
-// The files of the whole mesh, which one process of several cannot write
-// (the coastal model files too: docs/coastal.md says how to make them from
-// madd-mpi's run with madd mesh).
-constexpr const char* whole_mesh_only[] = {"neigh", "edge", "msh", "split-mesh", "fort14", "gr3", "2dm", "lonlat"};
+// The files of the whole mesh, which one process of several does not write
+// (madd-mpi gathers the parts on rank 0 for the coastal model files only:
+// docs/mpi.md), and --lonlat, which is of PREFIX's files.
+constexpr const char* whole_mesh_only[] = {"neigh", "edge", "msh", "split-mesh", "lonlat"};
 
 // check_options of the decomposition and of the mesh, said with the flags.
 std::string option_problem(const CommandLine& line) {

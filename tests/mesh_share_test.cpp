@@ -121,6 +121,10 @@ void check_union_is(const madd::Mesh& whole, const std::vector<madd::MeshPart>& 
     }
   }
   CHECK(std::count(seen.begin(), seen.end(), 1) == static_cast<std::ptrdiff_t>(seen.size()));
+  // Joined, in any order, they are mesh()'s mesh (neighbours, segments, shortfall and all).
+  CHECK(madd::join_parts(parts) == whole);
+  const std::vector<madd::MeshPart> reversed(parts.rbegin(), parts.rend());
+  CHECK(madd::join_parts(reversed) == whole);
 }
 
 // A vertex's owner is the lowest share whose part has it.
@@ -180,6 +184,19 @@ TEST_CASE("mesh_share: 1, 2 and 3 shares of the key make mesh()'s mesh, ids incl
     CHECK(subdomains == whole.subdomain_count());
     check_figures_combine(whole, parts);
   }
+}
+
+TEST_CASE("join_parts: parts not of one run are refused") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
+  const madd::MeshOptions o = madd::test::options_for(6, 30, madd::domain_area(domain) / 500);
+  int rounds = 0;
+  std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, 3, rounds);
+  CHECK_THROWS_AS(madd::join_parts(std::vector<madd::MeshPart>(parts.begin(), parts.begin() + 2)),
+                  madd::InvalidInputError);
+  CHECK_THROWS_AS(madd::join_parts(std::vector<madd::MeshPart>{parts[0], parts[0], parts[1]}), madd::InvalidInputError);
+  parts[1].triangle_ids.front() = parts[1].total_triangles;
+  CHECK_THROWS_AS(madd::join_parts(parts), madd::InvalidInputError);
+  CHECK_THROWS_AS(madd::join_parts(std::vector<madd::MeshPart>{}), madd::InvalidInputError);
 }
 
 TEST_CASE("mesh_share: separator pieces split between rounds are agreed on by every share (the archipelago at q 33)") {

@@ -23,6 +23,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,8 +31,10 @@
 #include "../commands.hpp"
 #include "../input_domain.hpp"
 #include "../interrupts.hpp"
+#include "../model_files.hpp"
 #include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
+#include "gather_parts.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
 #include "madd/mesh_metrics.hpp"
@@ -46,7 +49,7 @@ namespace {
 using cli::ExitCode;
 using cli::seconds_since;
 
-constexpr const char* help_intro = "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly\n\n"
+constexpr const char* help_intro = "usage: mpirun -np P madd-mpi mesh [options] INPUT.poly|INPUT.geojson|INPUT.shp\n\n"
                                    "madd mesh on P processes: every rank decomposes the domain, meshes its share of\n"
                                    "the subdomains (balanced by expected triangles) on its own threads with no\n"
                                    "communication, and writes its part with global ids. The union of the parts is\n"
@@ -57,7 +60,8 @@ constexpr const char* help_outputs =
     "  PREFIX-R.node        \"id x y global owner marker\": global = the vertex's id in\n"
     "                       madd mesh's PREFIX.node, owner = the lowest rank that has it\n"
     "  PREFIX-R.ele         \"id a b c subdomain global\", local vertex ids\n"
-    "  PREFIX-R.vtu         with --vtu, and PREFIX.pvtu that opens all of them in ParaView\n\n"
+    "  PREFIX-R.vtu         with --vtu, and PREFIX.pvtu that opens all of them in ParaView\n"
+    "and on rank 0, of the whole mesh (the parts gathered there): --fort14, --gr3, --2dm\n\n"
     "exit codes: as madd's (0 ok, 2 usage, 3 bad input, 4 no decomposition, 5 output\n"
     "not written, 6 limit, 70 internal error); nothing is written unless all is.\n";
 
@@ -336,12 +340,17 @@ int run(const World& world, const cli::MeshArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   MeshOptions options;
   Pslg domain;
+  Projection projection;
+  std::optional<DepthField> depth;
   Decomposition decomposition;
   // Read and decompose: every rank alike.
   const int code = agree(world, attempt([&] {
                            options = cli::with_background_files(args.line);
                            CoastDomain input = cli::read_input_domain(args.input, args.line, nullptr);
                            cli::default_coast_markers(options.size, args.input, input, args.line);
+                           projection = input.projection;
+                           depth = cli::read_depth(args.line);
+                           if (depth) set_depth(options.size, *depth, projection);
                            domain = std::move(input.domain);
                            decomposition = decompose_for_mesh(domain, options).decomposition;
                          }));
@@ -364,6 +373,19 @@ int run(const World& world, const cli::MeshArgs& args) {
   formats.vtu = args.line.formats.vtu;
   formats.first_index = args.line.formats.first_index;
   Failure staged = attempt([&] { add_mesh_part(outputs, part, args.prefix, formats, options.decomposition.threads); });
+  // The coastal model files are of the whole mesh: rank 0 joins the parts and writes them.
+  Mesh whole;
+  cli::ModelFiles model_files;
+  if (!args.line.fort14_file.empty() || !args.line.gr3_file.empty() || !args.line.sms_file.empty()) {
+    std::vector<MeshPart> parts = gather_parts(part, world.rank, world.size);
+    if (world.rank == 0 && staged.code == cli::exit_ok)
+      staged = attempt([&] {
+        whole = join_parts(parts);
+        parts.clear();
+        cli::add_model_files(outputs, model_files, whole, args.line, args.prefix, projection, depth,
+                             options.decomposition.threads);
+      });
+  }
   const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
   const std::string json = world.rank == 0 && args.line.report ? report_json(world, f, seconds_since(start)) : "";
   if (staged.code == cli::exit_ok && !json.empty() && !args.line.report_file.empty())

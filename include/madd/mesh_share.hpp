@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "madd/decomposition.hpp"
@@ -105,5 +106,14 @@ struct MeshPartRun {
 // 0..shares-1 is mesh()'s mesh, for any `shares`.
 MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options,
                        std::uint32_t share, std::uint32_t shares, const ShareExchange& exchange);
+
+// The whole mesh from the parts of every share of one run (in any order):
+// mesh()'s Mesh, equal to it, for a driver that writes a file of the whole
+// mesh in one place (madd-mpi's model files, written by rank 0). The parts'
+// points and triangles go to their global ids; neighbours across shares are
+// matched by their shared edge; the segments are listed as mesh() lists
+// them. Throws InvalidInputError when the parts are not those of one run
+// (a share missing or twice, ids out of range, a triangle left out).
+Mesh join_parts(std::span<const MeshPart> parts);
 
 }  // namespace madd
