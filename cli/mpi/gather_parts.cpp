@@ -24,8 +24,8 @@ public:
   void put(const std::vector<T>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     put_value(static_cast<std::uint64_t>(values.size()));
-    const auto* bytes = reinterpret_cast<const char*>(values.data());
-    text_.append(bytes, values.size() * sizeof(T));
+    if (values.empty()) return;  // data() may be null
+    text_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
   template <typename T>
   void put_value(const T& value) {
@@ -48,7 +48,7 @@ public:
     if (n > (bytes_.size() - at_) / std::max<std::size_t>(sizeof(T), 1))
       throw InternalError("madd-mpi: a gathered part is shorter than its sizes say");
     values.resize(n);
-    std::memcpy(values.data(), bytes_.data() + at_, n * sizeof(T));
+    if (n > 0) std::memcpy(values.data(), bytes_.data() + at_, n * sizeof(T));
     at_ += n * sizeof(T);
   }
   template <typename T>

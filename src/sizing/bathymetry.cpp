@@ -218,7 +218,11 @@ public:
   explicit ScatterDepth(std::span<const ValuedPoint> points) : points_(points), nearest_(points) {
     std::vector<Point> at(points.size());
     values_.resize(points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) at[k] = points[k].at, values_[k] = points[k].value;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      at[k] = points[k].at, values_[k] = points[k].value;
+      x0_ = std::min(x0_, at[k].x), x1_ = std::max(x1_, at[k].x), y0_ = std::min(y0_, at[k].y),
+      y1_ = std::max(y1_, at[k].y);
+    }
     triangulation_ = delaunay(at);
     locator_ = TriangleLocator(view());
   }
@@ -226,12 +230,19 @@ public:
   // The hint only shortens the walk: the result is the same without it.
   DepthAndGradient at(Point p, WalkHint* hint) const {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return {};
+    // Off the points' box is off the hull: the nearest point, with no walk
+    // (whose exact predicates hold only for coordinates within [1e-40, 1e70]).
+    if (!(p.x >= x0_ && p.x <= x1_ && p.y >= y0_ && p.y <= y1_))
+      return {points_[nearest_.nearest(p)].value, {0.0, 0.0}};
+    const auto tame = [](double v) { return std::abs(v) < 1e-40 ? 0.0 : v; };
+    p = {tame(p.x), tame(p.y)};
     const Location where = locator_.locate(view(), p, hint);
     if (!where.inside) return {points_[nearest_.nearest(p)].value, {0.0, 0.0}};
     return {interpolate(view(), values_, where, p), gradient_of(where.triangle)};
   }
 
 private:
+  double x0_ = std::numeric_limits<double>::infinity(), x1_ = -x0_, y0_ = x0_, y1_ = -x0_;  // the points' box
   TriangleView view() const noexcept {
     return {triangulation_.points, triangulation_.triangles, triangulation_.neighbours};
   }
