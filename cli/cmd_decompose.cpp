@@ -30,7 +30,7 @@ extern volatile std::sig_atomic_t writing_outputs;  // main.cpp: interrupts unwi
 namespace {
 
 constexpr const char* decompose_intro =
-    "usage: madd [decompose] [options] INPUT.poly\n\n"
+    "usage: madd [decompose] [options] INPUT.poly|INPUT.geojson|INPUT.shp\n\n"
     "Splits the domain of INPUT.poly (Triangle .poly: outer boundary and holes) into N\n"
     "subdomains with the Medial Axis Domain Decomposition: every new angle >= the minimum\n"
     "angle, short separators, balanced areas. The result is self-checked before anything\n"

@@ -24,7 +24,7 @@ namespace madd::cli {
 namespace {
 
 constexpr const char* triangulate_intro =
-    "usage: madd triangulate [options] FILE.poly|FILE.node\n\n"
+    "usage: madd triangulate [options] FILE.poly|FILE.node|FILE.geojson|FILE.shp\n\n"
     "Constrained Delaunay triangulation of the planar straight line graph in\n"
     "FILE.poly: every vertex (isolated ones too) is a vertex of it, every segment\n"
     "(interior, dangling, split where a vertex lies on it) a chain of edges; the\n"
