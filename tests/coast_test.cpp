@@ -269,4 +269,105 @@ TEST_CASE("crossing islands are split where they meet and read as Triangle reads
   CHECK(madd::domain_area(d.domain) == doctest::Approx(100 - 7));
 }
 
+TEST_CASE("clip: an island's vertex on a box side leaves the rest of the box water") {
+  // The island's vertex (4, 10) is on the north side; the side is moved an ulp
+  // outwards, and both island edges cross it within an ulp of each other. Their
+  // rounded crossings tie; read as a tie the island's chain closed on itself
+  // and the box was lost ("no water inside the clip box"). They are ordered
+  // exactly by their edges.
+  const madd::PolygonSet set =
+      one_polygon(ring({{-5, -5}, {20, -5}, {20, 20}, {-5, 20}}), {ring({{4, 10}, {6, 12}, {5, 14}}, 1)});
+  madd::CoastOptions options;
+  options.clip = madd::ClipBox{0, 0, 10, 10};
+  const madd::CoastDomain d = madd::coast_domain(set, options);
+  CHECK(d.report.area_m2 == doctest::Approx(100).epsilon(1e-12));
+  CHECK(d.report.land_segments == 0);
+  CHECK(segment_length_with(d.domain, 2) == doctest::Approx(40).epsilon(1e-12));
+}
+
+TEST_CASE("clip: a water wedge pointing out of the box from its corner is no water") {
+  // The triangle's vertex (0.1, 0) is the box's north-west corner and its
+  // wedge of water points away from the box: inside the box (moved an ulp
+  // off the vertex) is a sliver of ulps. Crossings interpolated from the far
+  // end of an edge come out an ulp of 1.2 off and in the wrong order, and
+  // the whole box would be water: they are interpolated from the near end.
+  const madd::PolygonSet set = one_polygon(ring({{1.2, 1.5}, {0.6, 0.2}, {0.1, 0}}));
+  madd::CoastOptions options;
+  options.clip = madd::ClipBox{0.1, -0.1, 0.2, 0};
+  CHECK_THROWS_AS(madd::coast_domain(set, options), madd::InvalidInputError);
+  // Pointing out of the north-east corner: Liang and Barsky's rounded
+  // parameters tie there and pick the side the edge does not cross; the
+  // side is decided exactly.
+  options.clip = madd::ClipBox{-1, -1, 0, 0};
+  CHECK_THROWS_AS(madd::coast_domain(one_polygon(ring({{0, 0}, {10, 14}, {5, 15}})), options), madd::InvalidInputError);
+}
+
+TEST_CASE("clip: a ring crossing itself is still closed along the box") {
+  // The chains' entries and exits do not pair up: joining one ran into a
+  // chain already used and closed the ring with a diagonal "open" segment.
+  const madd::PolygonSet set = one_polygon(ring({{4, 0}, {5, 2}, {0, 0}, {5, 0}, {10, 2}, {10, 10}, {0, 10}}));
+  madd::CoastOptions options;
+  options.clip = madd::ClipBox{5, 1, 11, 5};
+  const madd::CoastDomain d = madd::coast_domain(set, options);
+  const madd::ClipBox moved{std::nextafter(5.0, 0.0), 1, 11, 5};  // off the vertices at x = 5
+  CHECK(open_segments_on_box(d.domain, moved));
+  CHECK(d.report.open_segments == 3);
+  // The box right of x = 5 above the coast edge (5, 0)-(10, 2), which leaves it at (7.5, 1).
+  CHECK(d.report.area_m2 == doctest::Approx(5 * 4 - 2.5 * 1 / 2.0).epsilon(1e-12));
+}
+
+TEST_CASE("parity: an island on the coast's edge is land, not a pocket of water") {
+  // The island's edge (5, 0)-(2, 0) lies on the coast's: the two become one
+  // segment, and a parity flipped across segments from the hull read the
+  // island as water (a pocket dropped; with overlaps from clipping, one face
+  // both water and land, and an internal error). The parity is the rings'
+  // winding at a point of each face.
+  const madd::PolygonSet set = one_polygon(square(0, 0, 10, 10), {ring({{2, 0}, {2, 3}, {5, 3}, {5, 0}}, 1)});
+  const madd::CoastDomain d = madd::coast_domain(set);
+  CHECK(d.report.area_m2 == doctest::Approx(91));
+  CHECK(d.report.pockets_dropped == 0);
+  CHECK(d.domain.holes.empty());
+}
+
+TEST_CASE("cleaning: a figure-of-eight island whose loops cancel is land, not collapsed") {
+  // Signed area 0, but it bounds two triangles of 4 (as Triangle reads it).
+  const madd::PolygonSet set = one_polygon(square(0, 0, 10, 10), {ring({{2, 2}, {6, 6}, {6, 2}, {2, 6}}, 1)});
+  const madd::CoastDomain d = madd::coast_domain(set);
+  CHECK(d.report.rings_collapsed == 0);
+  CHECK(d.report.area_m2 == doctest::Approx(100 - 8));
+  CHECK(d.domain.holes.size() == 2);
+}
+
+TEST_CASE("cleaning: a ring flat in degrees is flat, whatever the projection rounds it to") {
+  // (-69.25, 43.75), (-70, 43) and (-66.25, 46.75) lie on one line in degrees
+  // (after the spike at (-66.75, 43.5) goes), not in the projection's
+  // rounded metres: cleaned after projecting, the ring was a needle whose
+  // shoelace area had the wrong sign (an internal error). Spikes and
+  // duplicates are cleaned in the file's coordinates first.
+  madd::PolygonSet set =
+      one_polygon(ring({{-69.25, 43.75}, {-69.25, 43.75}, {-70, 43}, {-66.75, 43.5}, {-70, 43}, {-66.25, 46.75}}));
+  set.coordinates = madd::Coordinates::lonlat;
+  CHECK_THROWS_AS(madd::coast_domain(set), madd::InvalidInputError);
+}
+
+TEST_CASE("area check: a sliver's area is all cancellation, within the shoelace's rounding") {
+  // A sliver of about 1e-3 m^2 along 1200 km (the world in degrees cut to the
+  // far south): the domain's shoelace sum is off by 1% and a relative
+  // tolerance called it an internal error. The loops are checked exactly
+  // against the water's triangles, the area within a bound on the rounding.
+  madd::PolygonSet set;
+  set.polygons.push_back(
+      {ring({{-180, -90}, {-174.35294117647058, 90}, {180, -19.411764705882348}}),
+       {ring({{-38.823529411764696, -90}, {-180, -90}, {-161.64705882352942, 90}, {180, 90}, {180, 90}, {180, -90}},
+             1)},
+       3,
+       0,
+       0});
+  madd::CoastOptions options;
+  options.clip = madd::ClipBox{-40.235294117647044, -90, 180, -84.352941176470594};
+  const madd::CoastDomain d = madd::coast_domain(set, options);
+  CHECK(d.report.area_m2 == madd::domain_area(d.domain));
+  CHECK(d.report.area_m2 < 0.01);
+}
+
 }  // TEST_SUITE

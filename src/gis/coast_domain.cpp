@@ -121,7 +121,7 @@ void clean_bodies(std::vector<MarkedPolygon>& bodies, double merge_distance, Coa
   const auto clean = [&](MarkedRing& ring) {
     const detail::RingCleaning done = detail::clean_ring(ring, merge_distance);
     report.vertices_merged += done.merged, report.spikes_removed += done.spikes;
-    const bool collapsed = ring.size() < 3 || detail::signed_area_of(ring) == 0.0;
+    const bool collapsed = detail::flat(ring);
     report.rings_collapsed += collapsed ? 1 : 0;
     return collapsed;
   };
@@ -173,6 +173,10 @@ CoastDomain coast_domain(const PolygonSet& set, const CoastOptions& options, con
     const ClipBox box = detail::box_off_vertices(bodies, *options.clip);
     bodies = detail::clip_to_box(bodies, box, options.open_marker);
   }
+  // Spikes and duplicates as the file has them first: the projection's
+  // rounding would turn a spike whose return lies on its way out (exactly,
+  // in degrees) into a needle that no exact test calls a spike.
+  clean_bodies(bodies, 0.0, report);
   result.projection = projection_for(set, options, bodies);
   for_each_ring(bodies, [&](MarkedRing& ring) {
     for (Point& p : ring.points) p = tame(result.projection.to_metres(p));

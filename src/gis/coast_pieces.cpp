@@ -7,6 +7,7 @@
 
 #include "gis/ring_cleaning.hpp"
 #include "kernel/containment.hpp"
+#include "kernel/exact_sum.hpp"
 #include "kernel/rings.hpp"
 #include "madd/error.hpp"
 #include "madd/intersections.hpp"
@@ -110,10 +111,14 @@ void resolve_crossings(BodyPslg& body, const PolygonSet& set, const std::string&
 }
 
 // The faces of the rings: the triangles of the whole convex hull in
-// components joined across edges that are not segments; a face is water
-// when an odd number of segments part it from the outside (the faces at
-// the hull: across an unconstrained hull edge lies the outside, across a
-// constrained one the water).
+// components joined across edges that are not segments. A face is water
+// when the body's rings wind an odd number of times about it (even-odd, as
+// Triangle reads rings: an edge two rings share parts land from land) and
+// it does not reach the hull across an edge that is no segment (there lies
+// the outside). The parity is read from the rings themselves, at one point
+// of each face, not by flipping it across segments from the hull: where
+// rings overlap, resolve_intersections keeps one segment for an edge drawn
+// twice, and a flip across it would make one face both water and land.
 struct Faces {
   std::vector<std::uint32_t> face_of;  // per triangle
   std::vector<std::vector<std::uint32_t>> triangles;
@@ -142,7 +147,41 @@ std::vector<std::uint32_t> components(const Triangulation& t, const std::vector<
   return of;
 }
 
-Faces faces_of(const Triangulation& t) {
+// A point to read a face or region at: of its triangles, the largest whose
+// rounded centroid is still strictly inside it (exact orient2d), so off
+// every segment and far from them; in a sliver the rounded centroid can
+// fall on or across an edge. Fed every triangle of the face or region.
+struct Probe {
+  std::uint32_t triangle = no_index;
+  bool strictly = false;
+  double area = -1.0;
+
+  void offer(const Triangulation& t, std::uint32_t tri) {
+    const Point a = t.points[t.triangles[tri][0]], b = t.points[t.triangles[tri][1]], c = t.points[t.triangles[tri][2]];
+    const Point m = triangle_centroid(a, b, c);
+    const bool inside = orient2d(a, b, m) > 0.0 && orient2d(b, c, m) > 0.0 && orient2d(c, a, m) > 0.0;
+    const double size = triangle_area(a, b, c);
+    if (inside != strictly ? inside : size > area) triangle = tri, strictly = inside, area = size;
+  }
+  Point point(const Triangulation& t) const {
+    const auto& v = t.triangles[triangle];
+    return triangle_centroid(t.points[v[0]], t.points[v[1]], t.points[v[2]]);
+  }
+};
+
+// The winding of the body's rings, read at any point.
+WindingIndex body_winding(const MarkedPolygon& body, std::vector<Point>& points) {
+  std::vector<std::vector<std::uint32_t>> rings;
+  const auto add = [&](const MarkedRing& ring) {
+    std::vector<std::uint32_t>& cycle = rings.emplace_back();
+    for (Point p : ring.points) cycle.push_back(static_cast<std::uint32_t>(points.size())), points.push_back(p);
+  };
+  add(body.outer);
+  for (const MarkedRing& hole : body.holes) add(hole);
+  return WindingIndex(points, rings);
+}
+
+Faces faces_of(const Triangulation& t, const MarkedPolygon& body) {
   std::vector<bool> segment(3 * t.triangle_count());
   for (std::uint32_t tri = 0; tri < t.triangle_count(); ++tri)
     for (int i = 0; i < 3; ++i) segment[3 * tri + i] = t.is_constrained(tri, i);
@@ -151,27 +190,21 @@ Faces faces_of(const Triangulation& t) {
   std::uint32_t count = 0;
   for (std::uint32_t id : f.face_of) count = std::max(count, id + 1);
   f.triangles.resize(count), f.area.assign(count, 0.0);
-  std::vector<int> parity(count, -1);
-  std::vector<std::uint32_t> queue;
+  std::vector<bool> outside(count, false);
+  std::vector<Probe> probe(count);
   for (std::uint32_t tri = 0; tri < t.triangle_count(); ++tri) {
     const std::uint32_t face = f.face_of[tri];
     f.triangles[face].push_back(tri);
     const auto& v = t.triangles[tri];
     f.area[face] += signed_area(t.points[v[0]], t.points[v[1]], t.points[v[2]]);
+    probe[face].offer(t, tri);
     for (int i = 0; i < 3; ++i)
-      if (t.neighbours[tri][i] == no_index && parity[face] < 0)
-        parity[face] = t.is_constrained(tri, i) ? 1 : 0, queue.push_back(face);
+      if (t.neighbours[tri][i] == no_index && !t.is_constrained(tri, i)) outside[face] = true;
   }
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::uint32_t face = queue[head];
-    for (std::uint32_t tri : f.triangles[face])
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t n = t.neighbours[tri][i];
-        if (n == no_index || parity[f.face_of[n]] >= 0) continue;
-        parity[f.face_of[n]] = parity[face] ^ 1, queue.push_back(f.face_of[n]);
-      }
-  }
-  for (int p : parity) f.water.push_back(p == 1);
+  std::vector<Point> ring_points;
+  const WindingIndex winding = body_winding(body, ring_points);
+  for (std::uint32_t face = 0; face < count; ++face)
+    f.water.push_back(!outside[face] && (winding.winding(probe[face].point(t)) & 1) != 0);
   return f;
 }
 
@@ -193,8 +226,7 @@ std::uint32_t chosen_face(const Triangulation& t, const Faces& f, const std::opt
 // With only the kept water's boundary as segments, every region but the
 // water and the outside (what touches the hull) is land enclosed by that
 // boundary (an island, islands touching, a pocket cut off): one hole point
-// each, the centroid of its largest triangle (strictly inside a triangle,
-// so off every segment).
+// each, at its Probe.
 std::vector<Point> enclosed_land_points(const Triangulation& t, const Faces& f, std::uint32_t kept) {
   std::vector<bool> wall(3 * t.triangle_count(), false);
   for (std::uint32_t tri = 0; tri < t.triangle_count(); ++tri)
@@ -206,23 +238,17 @@ std::vector<Point> enclosed_land_points(const Triangulation& t, const Faces& f, 
   std::uint32_t count = 0;
   for (std::uint32_t id : region) count = std::max(count, id + 1);
   std::vector<bool> open(count, false);
-  std::vector<std::uint32_t> largest(count, no_index);
-  std::vector<double> largest_area(count, -1.0);
+  std::vector<Probe> probe(count);
   for (std::uint32_t tri = 0; tri < t.triangle_count(); ++tri) {
     const std::uint32_t r = region[tri];
     if (f.face_of[tri] == kept) open[r] = true;
     for (int i = 0; i < 3; ++i)
       if (t.neighbours[tri][i] == no_index) open[r] = true;
-    const auto& v = t.triangles[tri];
-    const double a = triangle_area(t.points[v[0]], t.points[v[1]], t.points[v[2]]);
-    if (a > largest_area[r]) largest_area[r] = a, largest[r] = tri;
+    probe[r].offer(t, tri);
   }
   std::vector<Point> points;
-  for (std::uint32_t r = 0; r < count; ++r) {
-    if (open[r]) continue;
-    const auto& v = t.triangles[largest[r]];
-    points.push_back(triangle_centroid(t.points[v[0]], t.points[v[1]], t.points[v[2]]));
-  }
+  for (std::uint32_t r = 0; r < count; ++r)
+    if (!open[r]) points.push_back(probe[r].point(t));
   return points;
 }
 
@@ -246,8 +272,20 @@ PieceMesh piece_mesh(const Triangulation& t, const std::vector<std::uint32_t>& p
   return m;
 }
 
-double loop_area(const Triangulation& t, const BoundaryLoop& loop) {
-  return ring_signed_area(RingView(t.points, loop.vertices));
+// The outer loop of the kept water (counter-clockwise, the holes' loops
+// clockwise): of positive area, decided exactly, since a sliver's
+// floating-point shoelace sum can have either sign; the largest one should
+// the water's boundary ever have two.
+std::size_t outer_loop(const Triangulation& t, const std::vector<BoundaryLoop>& loops) {
+  std::size_t best = loops.size();
+  double best_area = 0.0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const ExactSum twice = ring_twice_area_exact(RingView(t.points, loops[l].vertices));
+    if (twice.sign() > 0 && (best == loops.size() || twice.approximate() > best_area))
+      best = l, best_area = twice.approximate();
+  }
+  if (best == loops.size()) throw InternalError("coast: the kept water has no outer boundary loop");
+  return best;
 }
 
 // The domain's segments: every loop edge, the outer loop first.
@@ -255,11 +293,7 @@ Pslg domain_from_loops(const std::vector<BoundaryLoop>& loops, const PieceMesh& 
                        const BodyPslg& whole, CoastReport& report) {
   std::vector<std::size_t> order(loops.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto outer = std::max_element(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return loop_area(t, loops[a]) < loop_area(t, loops[b]);
-  });
-  if (outer == order.end() || loop_area(t, loops[*outer]) <= 0.0)
-    throw InternalError("coast: the kept water has no outer boundary loop");
+  const auto outer = order.begin() + static_cast<std::ptrdiff_t>(outer_loop(t, loops));
   std::rotate(order.begin(), outer, outer + 1);
   Pslg domain;
   domain.has_segment_markers = true;
@@ -283,6 +317,34 @@ Pslg domain_from_loops(const std::vector<BoundaryLoop>& loops, const PieceMesh& 
   return domain;
 }
 
+// The domain rebuilt from the kept water's boundary is that water: the
+// loops enclose exactly its triangles (exact areas, so equal to the last
+// bit), and the domain as validate() reads it, hole points flooding, has
+// its area up to the rounding of shoelace sums over rings of the domain's
+// extent (a bound for any ring order: each of the n fan triangles adds at
+// most 2 w h (n + 1) eps of error). A relative tolerance would not do: the
+// area of a sliver is all cancellation.
+void check_rebuilt(const Triangulation& t, const std::vector<std::uint32_t>& kept,
+                   const std::vector<BoundaryLoop>& loops, const Pslg& domain, double area) {
+  ExactSum water, bounded;
+  for (std::uint32_t tri : kept) {
+    const auto& v = t.triangles[tri];
+    water.add(triangle_twice_area_exact(t.points[v[0]], t.points[v[1]], t.points[v[2]]));
+  }
+  for (const BoundaryLoop& loop : loops) bounded.add(ring_twice_area_exact(RingView(t.points, loop.vertices)));
+  bounded.subtract(water);
+  if (!bounded.is_zero()) throw InternalError("coast: the boundary loops of the kept water do not enclose it");
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (Point p : domain.points)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  const auto n = static_cast<double>(domain.segments.size() + 2);
+  const double bound = n * n * 0x1p-52 * (x1 - x0) * (y1 - y0);
+  const double exact = 0.5 * water.approximate();
+  if (!(std::abs(area - exact) <= bound + 4 * 0x1p-52 * std::abs(exact)))
+    throw InternalError("coast: the domain rebuilt from the water's boundary has area " + std::to_string(area) +
+                        ", the water " + std::to_string(exact));
+}
+
 }  // namespace
 
 bool holds_water(const MarkedPolygon& body, Point p) {
@@ -297,7 +359,7 @@ Pslg domain_of_body(const MarkedPolygon& body, const std::optional<Point>& water
   BodyPslg whole = body_pslg(body);
   resolve_crossings(whole, set, path, report);
   const Triangulation t = triangulate(whole.pslg, {.convex_hull = true});
-  const Faces faces = faces_of(t);
+  const Faces faces = faces_of(t, body);
   const std::uint32_t kept = chosen_face(t, faces, water_at);
   if (kept == no_index)
     throw InvalidInputError(InputProblem::empty_domain, (path.empty() ? std::string() : path + ": ") +
@@ -305,7 +367,8 @@ Pslg domain_of_body(const MarkedPolygon& body, const std::optional<Point>& water
   for (std::uint32_t face = 0; face < faces.water.size(); ++face)
     report.pockets_dropped += faces.water[face] && face != kept;
   const PieceMesh mesh = piece_mesh(t, faces.triangles[kept]);
-  Pslg domain = domain_from_loops(boundary_loops(mesh.triangles, mesh.neighbours), mesh, t, whole, report);
+  const std::vector<BoundaryLoop> loops = boundary_loops(mesh.triangles, mesh.neighbours);
+  Pslg domain = domain_from_loops(loops, mesh, t, whole, report);
   domain.holes = enclosed_land_points(t, faces, kept);
   report.islands = domain.holes.size();
   try {
@@ -314,9 +377,7 @@ Pslg domain_of_body(const MarkedPolygon& body, const std::optional<Point>& water
     refuse(e, whole, set, path);
   }
   report.area_m2 = domain_area(domain);
-  if (std::abs(report.area_m2 - faces.area[kept]) > 1e-9 * faces.area[kept])
-    throw InternalError("coast: the domain rebuilt from the water's boundary has area " +
-                        std::to_string(report.area_m2) + ", the water " + std::to_string(faces.area[kept]));
+  check_rebuilt(t, faces.triangles[kept], loops, domain, report.area_m2);
   return domain;
 }
 

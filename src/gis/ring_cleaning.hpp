@@ -13,6 +13,11 @@ namespace madd::detail {
 // Signed area (positive counter-clockwise), by kernel/rings.hpp.
 double signed_area_of(const MarkedRing& ring);
 
+// Fewer than three vertices, or all on one line (exact): a ring that
+// bounds nothing. A ring whose signed area is 0 need not be one: a
+// figure of eight whose loops are equal bounds both.
+bool flat(const MarkedRing& ring);
+
 // Turns the outer ring counter-clockwise and the holes clockwise (GeoJSON
 // asks for that order, shapefiles the opposite, and real files mix them).
 void orient_for_water(MarkedPolygon& polygon);
@@ -27,7 +32,7 @@ struct RingCleaning {
 // along itself (collinear, reversing: exact orient2d), until neither is left,
 // round the ring's end too. The edge that stays takes the marker of the
 // longer of the two it replaces. The ring may be left with fewer than three
-// vertices or no area: the caller drops it.
+// vertices, or flat (see flat()): the caller drops it.
 RingCleaning clean_ring(MarkedRing& ring, double merge_distance);
 
 // Sorts closed rings (water on their left) into water bodies: each ring of
