@@ -1,6 +1,9 @@
 // Which options of the table each command takes, in the order of its help,
 // with the help it gives them (cli/option_table.hpp). madd-mpi mesh takes
 // madd mesh's list, but for the whole-mesh files (cli/mesh_arguments.cpp).
+#include <array>
+#include <cstddef>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -12,13 +15,27 @@ namespace {
 
 using enum Letter;
 
-constexpr OptionUse decompose_uses[] = {
+// The options of a GeoJSON or shapefile input, first in the list of every
+// command that reads a domain (docs/coastal.md).
+constexpr OptionUse coast_input_uses[] = {
     {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
     {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
              "when projected); its sides become open boundary (marker 2)"},
     {"water-at", "keep the water body holding this point (default: the largest)"},
     {"min-island-area", "remove islands and lakes below A square metres\n"
                         "(default 4 hmin^2 with --hmin, else none)"},
+};
+
+template <std::size_t N>
+constexpr std::array<OptionUse, std::size(coast_input_uses) + N> with_coast_input(const std::array<OptionUse, N>& own) {
+  std::array<OptionUse, std::size(coast_input_uses) + N> all{};
+  std::size_t k = 0;
+  for (const OptionUse& use : coast_input_uses) all[k++] = use;
+  for (const OptionUse& use : own) all[k++] = use;
+  return all;
+}
+
+constexpr auto decompose_uses = with_coast_input(std::to_array<OptionUse>({
     {nullptr, ""},
     {nullptr, "decomposition:"},
     {"subdomains", "number of subdomains (default 2)"},
@@ -88,15 +105,9 @@ constexpr OptionUse decompose_uses[] = {
     {"quiet", "print nothing on success\n(-q is deprecated here: madd mesh's -q is the angle bound)", deprecated},
     {"verbose", "print every quality figure and the phase times"},
     {"help", "this text"},
-};
+}));
 
-constexpr OptionUse mesh_uses[] = {
-    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
-             "when projected); its sides become open boundary (marker 2)"},
-    {"water-at", "keep the water body holding this point (default: the largest)"},
-    {"min-island-area", "remove islands and lakes below A square metres\n"
-                        "(default 4 hmin^2 with --hmin, else none)"},
+constexpr auto mesh_uses = with_coast_input(std::to_array<OptionUse>({
     {"depth", "bathymetry: an Esri ASCII grid (.asc) or x y z scatter, in the\n"
               "input's coordinates, depth positive down; read at every node"},
     {"depth-up", "the depth file holds elevations (positive up)"},
@@ -150,7 +161,7 @@ constexpr OptionUse mesh_uses[] = {
     {"report", "the mesh figures as JSON on stdout (or in FILE)"},
     {"quiet", "print nothing on success", none},
     {"help", "this text"},
-};
+}));
 
 // gpmetis's spellings without a line of their own: the help's text names them.
 constexpr OptionUse partition_uses[] = {
@@ -176,27 +187,15 @@ constexpr OptionUse script_uses[] = {
     {"help", "this text"},
 };
 
-constexpr OptionUse check_uses[] = {
-    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
-             "when projected); its sides become open boundary (marker 2)"},
-    {"water-at", "keep the water body holding this point (default: the largest)"},
-    {"min-island-area", "remove islands and lakes below A square metres\n"
-                        "(default 4 hmin^2 with --hmin, else none)"},
+constexpr auto check_uses = with_coast_input(std::to_array<OptionUse>({
     {"hmin", "the mesh's --hmin: islands below 4 hmin^2 are removed, as madd mesh\n"
              "removes them (unless --min-island-area)"},
     {"write-poly", "write the domain as it was cleaned and projected (metres)"},
     {"quiet", "print nothing on success; only the exit code tells"},
     {"help", "this text"},
-};
+}));
 
-constexpr OptionUse triangulate_uses[] = {
-    {nullptr, "GeoJSON and shapefile input (docs/coastal.md):"},
-    {"clip", "cut the water polygons to the box X0,Y0,X1,Y1 (lon/lat, or x/y\n"
-             "when projected); its sides become open boundary (marker 2)"},
-    {"water-at", "keep the water body holding this point (default: the largest)"},
-    {"min-island-area", "remove islands and lakes below A square metres\n"
-                        "(default 4 hmin^2 with --hmin, else none)"},
+constexpr auto triangulate_uses = with_coast_input(std::to_array<OptionUse>({
     {"convex-hull", "keep the whole convex hull but the holes (Triangle -pc)"},
     {"region-attributes", "give each triangle the attribute of its region (a\n"
                           "column of PREFIX.ele; 0 outside every region), as Triangle -A"},
@@ -205,7 +204,7 @@ constexpr OptionUse triangulate_uses[] = {
     {"output", "output prefix (default: FILE without .poly or .node, plus \".1\")", usual, "PREFIX"},
     {"quiet", "print nothing on success"},
     {"help", "this text"},
-};
+}));
 
 const CommandOptions commands[] = {
     {"decompose", decompose_uses, 25}, {"mesh", mesh_uses, 25},   {"partition", partition_uses, 21},
