@@ -29,11 +29,11 @@ bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, co
                      const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
                      unsigned threads) {
   const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
-  if (!model && !line.lonlat) return false;
+  if (!model && !(line.lonlat && projection.geographic)) return false;
   const std::vector<Point> lonlat = projection.geographic ? in_lonlat(mesh.points, projection) : std::vector<Point>{};
   const std::string title = std::filesystem::path(prefix).filename().string() + " (madd mesh)";
   files.metres.title = title;
-  if (depth) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);
+  if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);
   files.lonlat = files.metres;
   files.lonlat.coordinates = lonlat;
   const ModelGrid& written = projection.geographic ? files.lonlat : files.metres;
@@ -43,9 +43,9 @@ bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, co
     if (projection.geographic) add_gr3(outputs, ll_path(line.gr3_file), mesh, files.lonlat, threads);
   }
   if (!line.sms_file.empty()) add_2dm(outputs, line.sms_file, mesh, line.lonlat ? written : files.metres, threads);
-  if (!line.lonlat) return false;
+  if (!line.lonlat || !projection.geographic) return false;  // metres are the file's own units then
   files.lonlat_mesh = mesh;
-  if (projection.geographic) files.lonlat_mesh.points = lonlat;
+  files.lonlat_mesh.points = lonlat;
   add_mesh(outputs, files.lonlat_mesh, prefix, line.formats, threads);
   return true;
 }

@@ -4,6 +4,8 @@
 // is not built).
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -106,6 +108,36 @@ TEST_CASE("a malformed GeoJSON is one located line and exit 3, nothing written; 
   const CliRun empty = box.run("check " + coast_dir + "bay.geojson --clip 10,10,11,11");
   CHECK(empty.status == 3);
   CHECK_MESSAGE(contains(empty.output, "no water inside the clip box"), empty.output);
+}
+
+TEST_CASE("madd mesh --lonlat writes PREFIX.node in longitude/latitude, else in the projection's metres") {
+  const CliSandbox box("madd-coast-cli");
+  const madd::Projection projection = madd::read_coast(coast_dir + "lagoon.geojson").projection;
+  REQUIRE(projection.geographic);
+  for (const bool lonlat : {false, true}) {
+    CAPTURE(lonlat);
+    REQUIRE(
+        box.run("mesh " + coast_dir + "lagoon.geojson -n 2 -a 5e7 -o l --quiet" + (lonlat ? " --lonlat" : "")).status ==
+        0);
+    std::istringstream node(slurp(box.path("l.node")));
+    std::size_t n = 0, dim = 0, attributes = 0, markers = 0;
+    node >> n >> dim >> attributes >> markers;
+    REQUIRE(n > 0);
+    double widest = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      double id = 0, x = 0, y = 0;
+      int marker = 0;
+      node >> id >> x >> y >> marker;
+      // The lagoon lies in [-70.5, -70] x [43, 43.5]; in metres, once taken back.
+      const madd::Point p = lonlat ? madd::Point{x, y} : projection.to_lonlat({x, y});
+      REQUIRE(p.x >= -70.5 - 1e-9);
+      REQUIRE(p.x <= -70.0 + 1e-9);
+      REQUIRE(p.y >= 43.0 - 1e-9);
+      REQUIRE(p.y <= 43.5 + 1e-9);
+      widest = std::max(widest, std::abs(x));
+    }
+    CHECK((widest > 1000) == !lonlat);  // metres from the centre (lon -70), or degrees
+  }
 }
 
 TEST_CASE("madd check FILE.14 refuses a fort.14 whose island is not closed, naming the problem") {
