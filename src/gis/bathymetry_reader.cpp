@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/coordinate_range.hpp"
 #include "kernel/number_format.hpp"
 #include "madd/bathymetry.hpp"
 #include "madd/error.hpp"
@@ -385,7 +386,7 @@ public:
       if (!r) fail(f.column, std::string("expected a number for ") + names[i] + ", got '" + printable(f.text) + "'");
       if (!std::isfinite(*r)) fail(f.column, std::string(names[i]) + " is not finite: '" + printable(f.text) + "'");
       // The exact range of the predicates that triangulate the points, as validate() keeps it.
-      if (i < 2 && *r != 0.0 && !(std::abs(*r) >= 1e-40 && std::abs(*r) <= 1e70))
+      if (i < 2 && !detail::in_exact_range(*r))
         fail(f.column,
              std::string(names[i]) + " " + printable(f.text) +
                  " is outside the supported range: a coordinate must be 0 or of magnitude within [1e-40, 1e70]");

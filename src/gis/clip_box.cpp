@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "kernel/coordinate_range.hpp"
 #include "gis/ring_cleaning.hpp"
 #include "kernel/rings.hpp"
 #include "madd/predicates.hpp"
@@ -22,7 +23,7 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 double off_values(double side, double away, const std::vector<double>& values) {
   while (std::binary_search(values.begin(), values.end(), side)) {
     side = std::nextafter(side, away);
-    if (std::abs(side) < 1e-40) side = std::copysign(1e-40, away);
+    if (std::abs(side) < min_coordinate_magnitude) side = std::copysign(min_coordinate_magnitude, away);
   }
   return side;
 }

@@ -16,6 +16,7 @@
 #include <limits>
 #include <numeric>
 
+#include "kernel/coordinate_range.hpp"
 #include "gis/clip_box.hpp"
 #include "gis/coast_pieces.hpp"
 #include "gis/ring_cleaning.hpp"
@@ -51,10 +52,7 @@ void check_coast_options(const CoastOptions& options) {
 // metres) read as 0: the exact predicates the clipping and cleaning decide
 // with hold in [1e-40, 1e70] (validate()'s range), and the readers only
 // refuse what is not finite or not a longitude or latitude.
-Point tame(Point p) {
-  const auto flush = [](double v) { return std::abs(v) < 1e-40 ? 0.0 : v; };
-  return {flush(p.x), flush(p.y)};
-}
+Point tame(Point p) { return {detail::flush_below_range(p.x), detail::flush_below_range(p.y)}; }
 
 MarkedRing marked(const GisRing& ring, int marker, std::uint32_t polygon, std::uint32_t which) {
   MarkedRing out;

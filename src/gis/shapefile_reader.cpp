@@ -23,6 +23,7 @@
 #include <cmath>
 #include <optional>
 
+#include "kernel/coordinate_range.hpp"
 #include "gis/ring_nesting.hpp"
 #include "kernel/number_format.hpp"
 #include "madd/error.hpp"
@@ -272,12 +273,9 @@ RecordLayout read_layout(const ShapeBytes& f, std::size_t c, std::size_t n, std:
 
 bool in_lonlat_range(Point p) noexcept { return p.x >= -180.0 && p.x <= 180.0 && p.y >= -90.0 && p.y <= 90.0; }
 
-// madd's supported range (validate, docs/formats.md): 0 or a magnitude within
-// [1e-40, 1e70], where the exact predicates that nest the rings are exact.
-bool supported(double v) noexcept {
-  const double m = std::abs(v);
-  return m == 0.0 || (m >= 1e-40 && m <= 1e70);
-}
+// madd's supported range (kernel/coordinate_range.hpp), where the exact
+// predicates that nest the rings are exact.
+bool supported(double v) noexcept { return detail::in_exact_range(v); }
 
 // Part r of record k: closed, at least 4 points, finite and in range; returned open.
 std::vector<Point> read_ring(const ShapeBytes& f, const RecordLayout& l, std::uint32_t k, std::uint32_t r,

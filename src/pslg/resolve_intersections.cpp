@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "kernel/coordinate_range.hpp"
 #include "kernel/containment.hpp"
 #include "kernel/segment_grid.hpp"
 #include "madd/error.hpp"
@@ -136,8 +137,7 @@ private:
     x.x = std::clamp(x.x, lo_x, hi_x);
     x.y = std::clamp(x.y, lo_y, hi_y);
     // Keep inside the range the predicates are exact for (validate.cpp).
-    for (double* coordinate : {&x.x, &x.y})
-      if (std::abs(*coordinate) < 1e-40) *coordinate = 0.0;
+    x = {detail::flush_below_range(x.x), detail::flush_below_range(x.y)};
     return x;
   }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "kernel/coordinate_range.hpp"
 #include "pslg/validate_detail.hpp"
 #include "madd/error.hpp"
 
@@ -60,18 +61,8 @@ private:
 };
 using Item = Reporter::Item;
 
-// The exact predicates are exact only without overflow or underflow in their
-// products (predicates.hpp: nonzero magnitudes within about [1e-60, 1e76] for
-// incircle). Coordinates that are 0 or within [1e-40, 1e70] keep every value and
-// every difference of two values inside that range, with margin for the
-// constructions (midpoints, circumcentres) made from them later.
-constexpr double min_magnitude = 1e-40;
-constexpr double max_magnitude = 1e70;
-bool supported(double v) noexcept {
-  const double m = std::abs(v);
-  return m == 0.0 || (m >= min_magnitude && m <= max_magnitude);
-}
-bool supported(Point q) noexcept { return supported(q.x) && supported(q.y); }
+// The exact predicates' range (kernel/coordinate_range.hpp).
+bool supported(Point q) noexcept { return detail::in_exact_range(q.x) && detail::in_exact_range(q.y); }
 const char* const range_note =
     " is outside the supported range: every coordinate must be 0 or of magnitude within [1e-40, 1e70]";
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "kernel/coordinate_range.hpp"
 #include "kernel/threads.hpp"
 #include "madd/bathymetry.hpp"
 #include "madd/error.hpp"
@@ -65,9 +66,8 @@ void check_grid(const DepthGrid& g) {
 void check_scatter(std::span<const ValuedPoint> points) {
   if (points.size() < 3) refuse("a scatter needs at least 3 points, it has " + std::to_string(points.size()));
   if (points.size() >= none) refuse("a scatter has at most 2^32 - 2 points");
-  const auto in_range = [](double v) { return v == 0.0 || (std::abs(v) >= 1e-40 && std::abs(v) <= 1e70); };
   for (std::size_t k = 0; k < points.size(); ++k)
-    if (!in_range(points[k].at.x) || !in_range(points[k].at.y) || !std::isfinite(points[k].value))
+    if (!in_exact_range(points[k].at.x) || !in_exact_range(points[k].at.y) || !std::isfinite(points[k].value))
       refuse("scatter point " + std::to_string(k) +
              " has a coordinate that is not 0 or of magnitude within [1e-40, 1e70], or a value that is not finite");
   // Some point off the line of two distinct ones.
@@ -234,8 +234,7 @@ public:
     // (whose exact predicates hold only for coordinates within [1e-40, 1e70]).
     if (!(p.x >= x0_ && p.x <= x1_ && p.y >= y0_ && p.y <= y1_))
       return {points_[nearest_.nearest(p)].value, {0.0, 0.0}};
-    const auto tame = [](double v) { return std::abs(v) < 1e-40 ? 0.0 : v; };
-    p = {tame(p.x), tame(p.y)};
+    p = {flush_below_range(p.x), flush_below_range(p.y)};
     const Location where = locator_.locate(view(), p, hint);
     if (!where.inside) return {points_[nearest_.nearest(p)].value, {0.0, 0.0}};
     return {interpolate(view(), values_, where, p), gradient_of(where.triangle)};
