@@ -16,13 +16,17 @@ CoastOptions coast_options(const CommandLine& line) {
   return options;
 }
 
-void default_coast_markers(MeshSizeOptions& size, const std::string& path, const CoastDomain& coast,
-                           const CommandLine& line) {
-  if (!is_polygon_file(path) || !size.coast_markers.empty()) return;
+void default_coast_markers(MeshSizeOptions& size, const CoastDomain& coast, int open_marker) {
+  if (!size.coast_markers.empty()) return;
   std::set<int> land;
   for (const Segment& s : coast.domain.segments)
-    if (s.marker != line.coast.open_marker) land.insert(s.marker);
+    if (s.marker != open_marker) land.insert(s.marker);
   if (coast.report.open_segments > 0 && !land.empty()) size.coast_markers.assign(land.begin(), land.end());
+}
+
+void default_coast_markers(MeshSizeOptions& size, const std::string& path, const CoastDomain& coast,
+                           const CommandLine& line) {
+  if (is_polygon_file(path)) default_coast_markers(size, coast, line.coast.open_marker);
 }
 
 std::string coast_report_line(const std::string& path, const CoastDomain& coast) {

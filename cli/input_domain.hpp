@@ -26,6 +26,8 @@ CoastDomain read_input_domain(const std::string& path, const CommandLine& line, 
 // pull the size field's distance and feature-size terms fine.
 void default_coast_markers(MeshSizeOptions& size, const std::string& path, const CoastDomain& coast,
                            const CommandLine& line);
+// The same for a coast made from polygons in memory (the Python module's).
+void default_coast_markers(MeshSizeOptions& size, const CoastDomain& coast, int open_marker);
 
 // One line of what cleaning a coastline did, for the user.
 std::string coast_report_line(const std::string& path, const CoastDomain& coast);

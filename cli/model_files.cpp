@@ -27,12 +27,11 @@ std::optional<DepthField> read_depth(const CommandLine& line) {
 
 bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
                      const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
-                     unsigned threads) {
+                     unsigned threads, const std::string& title) {
   const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
   if (!model && !(line.lonlat && projection.geographic)) return false;
   const std::vector<Point> lonlat = projection.geographic ? in_lonlat(mesh.points, projection) : std::vector<Point>{};
-  const std::string title = std::filesystem::path(prefix).filename().string() + " (madd mesh)";
-  files.metres.title = title;
+  files.metres.title = !title.empty() ? title : std::filesystem::path(prefix).filename().string() + " (madd mesh)";
   if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);
   files.lonlat = files.metres;
   files.lonlat.coordinates = lonlat;

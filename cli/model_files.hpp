@@ -28,9 +28,10 @@ std::optional<DepthField> read_depth(const CommandLine& line);
 
 // Fills `files` for `mesh` and adds every model file the command line asks
 // for to `outputs`, and with --lonlat PREFIX's mesh files in lon/lat
-// (instead of add_mesh's). Returns whether it added the mesh files.
+// (instead of add_mesh's). Returns whether it added the mesh files. The
+// files' title is `title`, or when empty PREFIX's file name + " (madd mesh)".
 bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
                      const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
-                     unsigned threads);
+                     unsigned threads, const std::string& title = {});
 
 }  // namespace madd::cli

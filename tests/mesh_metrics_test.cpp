@@ -114,7 +114,7 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
                         "vertices",
                         "min_angle_bound_deg",
                         "max_area_bound",
-                        "separator_angle_deg",
+                        "smallest_angle_deg",
                         "median_smallest_angle_deg",
                         "below_bound",
                         "share_below_bound",
@@ -145,7 +145,7 @@ TEST_CASE("format_mesh_report_json: every figure once, then the run's in order; 
   CHECK(json.find("\"seconds\": 1.5\n}") != std::string::npos);
   for (const madd::PhaseTime& p : report.phases) CHECK(json.find("\"" + p.name + "\": ") != std::string::npos);
   // Every number with all its digits: the smallest angle reads back exactly.
-  const std::size_t angle = member(json, "separator_angle_deg") + std::string("\n  \"separator_angle_deg\": ").size();
+  const std::size_t angle = member(json, "smallest_angle_deg") + std::string("\n  \"smallest_angle_deg\": ").size();
   CHECK(std::stod(json.substr(angle)) == m.smallest_angle_deg);
 
   m.median_smallest_angle_deg = std::numeric_limits<double>::quiet_NaN();

@@ -57,7 +57,7 @@ std::string format_mesh_report_json(const MeshMetrics& m, const std::vector<RunF
   o.count("vertices", m.vertices);
   o.number("min_angle_bound_deg", m.min_angle_bound_deg, all);
   o.number("max_area_bound", m.max_area_bound, all);
-  o.number("separator_angle_deg", m.smallest_angle_deg, all);
+  o.number("smallest_angle_deg", m.smallest_angle_deg, all);
   if (!std::isnan(m.median_smallest_angle_deg)) o.number("median_smallest_angle_deg", m.median_smallest_angle_deg, all);
   o.count("below_bound", m.below_bound);
   o.number("share_below_bound", m.share_below_bound(), all);
