@@ -34,6 +34,17 @@ command -v clang-format >/dev/null 2>&1 || need="$need clang-format"
 if [ -n "$need" ]; then
   apt-get update -qq && apt-get install -y -qq $need
 fi
+# Python is optional too: with Debian's python3, pybind11 and numpy the
+# Python module is built and its pytest suite run (tests/python/; shapely,
+# meshio and matplotlib for the conversions and the docs' example).
+python_packages="python3-dev pybind11-dev python3-numpy python3-pytest python3-shapely python3-meshio python3-matplotlib"
+if [ "$configure_only" = 0 ] && [ "$sanitize" = 0 ]; then
+  missing=""
+  for p in $python_packages; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+  if [ -n "$missing" ]; then
+    (apt-get update -qq && apt-get install -y -qq $missing) >/dev/null 2>&1 || echo "note: the Python packages did not install; the Python module will not be built"
+  fi
+fi
 # gmsh is optional: with it, a test meshes the --geo output and checks that the
 # mesh is conforming across subdomains; without it that test is skipped.
 if [ "$configure_only" = 0 ] && ! command -v gmsh >/dev/null 2>&1; then
@@ -49,7 +60,10 @@ if [ "$sanitize" = 1 ]; then
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else
   dir=${MADD_BUILD_DIR:-build}
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release $on
+  # Debian's python3 (another python3 may come first in PATH, e.g. pyenv's).
+  python=""
+  [ -x /usr/bin/python3 ] && python="-DPython_EXECUTABLE=/usr/bin/python3"
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release $on $python
 fi
 [ "$configure_only" = 1 ] && exit 0
 cmake --build "$dir" -j"$jobs"
