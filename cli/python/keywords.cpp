@@ -86,6 +86,18 @@ void refuse(const cli::Option& row, const char* keyword, const std::string& prob
   throw OptionError(row.field != nullptr ? row.field : keyword, problem, problem);
 }
 
+// How the help shows a keyword: with its alias, the value that means what
+// the CLI's switch means, and the CLI's flag.
+std::string spelling(const cli::Option& row, const char* keyword) {
+  std::string flag = std::string("--") + row.name;
+  if (std::strcmp(row.name, "balance") == 0) return "balance_by_work=False (--balance area; default True: work)";
+  if (std::strcmp(row.name, "sizes-nearest") == 0) return "sample_interpolation='nearest' (--sizes-nearest; default 'linear')";
+  if (row.arity == cli::Arity::none) return std::string(keyword) + (is_switch_off(row) ? "=False (" : "=True (") + flag + ")";
+  std::string out;
+  if (const char* alias = alias_of(keyword)) out += std::string(alias) + ", ";
+  return out + keyword + " (" + flag + " " + (row.value != nullptr ? row.value : "") + ")";
+}
+
 }  // namespace
 
 const char* keyword_of(const cli::Option& row) {
@@ -174,11 +186,7 @@ std::string keywords_help(const cli::CommandOptions& command, const cli::Command
         out += "\n" + heading + "\n";
         heading.clear();
       }
-      std::string left = "    ";
-      if (const char* alias = alias_of(keyword)) left += std::string(alias) + ", ";
-      left += keyword;
-      left += std::string(" (--") + row->name + ")";
-      out += left + "\n";
+      out += "    " + spelling(*row, keyword) + "\n";
       std::string help = "        ";
       for (const char* c = use.help; *c != '\0'; ++c) help += *c == '\n' ? std::string("\n        ") : std::string(1, *c);
       out += help + "\n";

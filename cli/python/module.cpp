@@ -9,6 +9,9 @@
 #include "runs.hpp"
 
 PYBIND11_MODULE(_madd, m) {
+  // The docstrings say the signature themselves (as the CLI's help), in Python's terms.
+  pybind11::options options;
+  options.disable_function_signatures();
   m.doc() = "madd: Medial Axis Domain Decomposition and parallel quality meshing in 2D (the compiled core).";
   madd::python::bind_errors(m);
   madd::python::bind_domain(m);

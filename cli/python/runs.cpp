@@ -318,7 +318,7 @@ Partition run_partition(py::handle indptr, py::handle indices, std::uint32_t k, 
 
 void bind_runs(py::module_& m) {
   const std::string mesh_doc =
-      "mesh(domain, n, q=30.0, max_area=None, threads=0, progress=None, **options) -> Mesh\n\n"
+      "mesh(domain, n, q=None, max_area=None, threads=0, progress=None, **options) -> Mesh\n\n"
       "Decomposes the domain into n subdomains, splits every separator and boundary piece once to the local size "
       "(the Delaunay decoupling), refines every subdomain on its own thread and returns one conforming mesh, "
       "self-checked (verify_mesh). The same options give the same mesh, byte for byte, as `madd mesh`, for any "
