@@ -1,5 +1,5 @@
 #pragma once
-// numpy views of madd's result vectors (docs/python.md, "Arrays"): no copy.
+// numpy views of madd's result vectors (docs/python.md, "Results"): no copy.
 // A view's memory belongs to the Python object that holds the C++ result
 // (its `base`), so the array keeps that object alive; views are read-only,
 // since the result is a value the writers and checks read as it was made.

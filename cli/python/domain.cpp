@@ -18,9 +18,7 @@ namespace madd::python {
 
 namespace {
 
-[[noreturn]] void bad_array(const std::string& what) {
-  throw InvalidInputError(InputProblem::other, what);
-}
+[[noreturn]] void bad_array(const std::string& what) { throw InvalidInputError(InputProblem::other, what); }
 
 // An (n, k) float64 array of `value` (None: n = 0), BadInput on another shape.
 py::array_t<double, py::array::c_style | py::array::forcecast> rows_of(py::handle value, py::ssize_t k,
@@ -43,8 +41,9 @@ std::vector<std::uint32_t> indices_of(py::handle value, py::ssize_t k, std::size
   const double* d = a.data();
   for (py::ssize_t i = 0; i < a.size(); ++i) {
     if (!(d[i] >= 0 && d[i] < static_cast<double>(limit) && std::floor(d[i]) == d[i]))
-      bad_array(std::string(what) + " row " + std::to_string(i / k) + " names point " + py::repr(py::float_(d[i])).cast<std::string>() +
-                ", not one of the " + std::to_string(limit) + " points");
+      bad_array(std::string(what) + " row " + std::to_string(i / k) + " names point " +
+                py::repr(py::float_(d[i])).cast<std::string>() + ", not one of the " + std::to_string(limit) +
+                " points");
     out.push_back(static_cast<std::uint32_t>(d[i]));
   }
   return out;
@@ -73,7 +72,8 @@ std::shared_ptr<DomainValue> domain_from_arrays(py::handle points, py::handle se
   pslg.has_segment_markers = !marks.empty();
   pslg.holes = to_points(holes, "holes");
   const auto r = rows_of(regions, 4, "regions (x, y, attribute, max_area)");
-  for (py::ssize_t i = 0; i < r.shape(0); ++i) pslg.regions.push_back({{r.at(i, 0), r.at(i, 1)}, r.at(i, 2), r.at(i, 3)});
+  for (py::ssize_t i = 0; i < r.shape(0); ++i)
+    pslg.regions.push_back({{r.at(i, 0), r.at(i, 1)}, r.at(i, 2), r.at(i, 3)});
   pslg.point_markers = ints_of(point_markers, pslg.points.size(), "point_markers");
   {
     py::gil_scoped_release release;
@@ -206,10 +206,12 @@ void bind_domain(py::module_& m) {
       .def_readonly("geographic", &Projection::geographic)
       .def_readonly("lon0_deg", &Projection::lon0_deg)
       .def_readonly("lat0_deg", &Projection::lat0_deg)
-      .def("to_lonlat", [](const Projection& p, py::handle xy) { return map_points(p, xy, true); }, py::arg("xy"),
-           "Points (n, 2) in the projection's metres as (longitude, latitude) in degrees.")
-      .def("to_metres", [](const Projection& p, py::handle lonlat) { return map_points(p, lonlat, false); },
-           py::arg("lonlat"), "Points (n, 2) in (longitude, latitude) degrees as the projection's metres.")
+      .def(
+          "to_lonlat", [](const Projection& p, py::handle xy) { return map_points(p, xy, true); }, py::arg("xy"),
+          "Points (n, 2) in the projection's metres as (longitude, latitude) in degrees.")
+      .def(
+          "to_metres", [](const Projection& p, py::handle lonlat) { return map_points(p, lonlat, false); },
+          py::arg("lonlat"), "Points (n, 2) in (longitude, latitude) degrees as the projection's metres.")
       .def("__repr__", [](const Projection& p) {
         return p.geographic ? "Projection(lon0_deg=" + py::repr(py::float_(p.lon0_deg)).cast<std::string>() +
                                   ", lat0_deg=" + py::repr(py::float_(p.lat0_deg)).cast<std::string>() + ")"
@@ -228,15 +230,18 @@ void bind_domain(py::module_& m) {
            "points (n, 2) float; segments (m, 2) ints into points; holes (k, 2) points inside holes; markers (m,) "
            "segment markers; regions (r, 4) rows (x, y, attribute, max_area); point_markers (n,). Checked as a "
            "PSLG at once (madd.BadInput names the ids, 0-based).")
-      .def_property_readonly("points", [](py::object self) { return points_view(self, self.cast<const DomainValue&>().pslg().points); })
-      .def_property_readonly("segments",
-                             [](py::object self) { return index_view(self, self.cast<const DomainValue&>().pslg().segments, 2); })
+      .def_property_readonly(
+          "points", [](py::object self) { return points_view(self, self.cast<const DomainValue&>().pslg().points); })
+      .def_property_readonly(
+          "segments",
+          [](py::object self) { return index_view(self, self.cast<const DomainValue&>().pslg().segments, 2); })
       .def_property_readonly("markers",
                              [](py::object self) {
                                return field_view<std::int32_t>(self, self.cast<const DomainValue&>().pslg().segments,
                                                                offsetof(Segment, marker));
                              })
-      .def_property_readonly("holes", [](py::object self) { return points_view(self, self.cast<const DomainValue&>().pslg().holes); })
+      .def_property_readonly(
+          "holes", [](py::object self) { return points_view(self, self.cast<const DomainValue&>().pslg().holes); })
       .def_property_readonly("regions",
                              [](py::object self) {
                                const auto& regions = self.cast<const DomainValue&>().pslg().regions;
@@ -247,49 +252,61 @@ void bind_domain(py::module_& m) {
                              })
       .def_property_readonly("point_markers",
                              [](py::object self) {
-                               return vector_view<std::int32_t, int>(self, self.cast<const DomainValue&>().pslg().point_markers);
+                               return vector_view<std::int32_t, int>(
+                                   self, self.cast<const DomainValue&>().pslg().point_markers);
                              })
-      .def_property_readonly("path", [](const DomainValue& d) { return d.path.empty() ? py::object(py::none()) : py::cast(d.path); },
-                             "The file it was read from (None when built in memory).")
-      .def_property_readonly("projection", [](const DomainValue& d) { return d.coast.projection; },
-                             "How a coast was projected to metres (identity for other domains).")
-      .def_property_readonly("coast_report",
-                             [](const DomainValue& d) {
-                               return d.from_polygons ? py::object(coast_report_dict(d.coast.report)) : py::object(py::none());
-                             },
-                             "What cleaning a coastline did (None for other domains).")
-      .def_property_readonly("area",
-                             [](const DomainValue& d) {
-                               d.check_domain();
-                               return domain_area(d.pslg());
-                             },
-                             "The domain's area (raises madd.BadInput when it is no domain).")
-      .def("check", [](const DomainValue& d) { py::gil_scoped_release release; d.check_domain(); },
-           "Raises madd.BadInput unless the PSLG is a domain decompose and mesh take.")
-      .def("summary",
-           [](const DomainValue& d) {
-             const PslgSummary s = summarize_pslg(d.pslg());
-             py::dict out;
-             out["isolated_vertices"] = s.isolated_vertices;
-             out["isolated_inside"] = s.isolated_inside;
-             out["vertices_inside_segments"] = s.vertices_inside_segments;
-             out["dangling_ends"] = s.dangling_ends;
-             out["interior_segments"] = s.interior_segments;
-             out["boundary_segments"] = s.boundary_segments;
-             out["outside_segments"] = s.outside_segments;
-             out["parts"] = s.parts;
-             out["area"] = s.area;
-             return out;
-           },
-           "What the PSLG holds, as `madd check` prints it.")
-      .def("write_poly",
-           [](const DomainValue& d, const std::string& path) {
-             OutputSet outputs;
-             outputs.add_file(path, format_poly(d.pslg()));
-             py::gil_scoped_release release;
-             outputs.write();
-           },
-           py::arg("path"), "Writes the PSLG as a Triangle .poly (ids from the domain's first index).")
+      .def_property_readonly(
+          "path", [](const DomainValue& d) { return d.path.empty() ? py::object(py::none()) : py::cast(d.path); },
+          "The file it was read from (None when built in memory).")
+      .def_property_readonly(
+          "projection", [](const DomainValue& d) { return d.coast.projection; },
+          "How a coast was projected to metres (identity for other domains).")
+      .def_property_readonly(
+          "coast_report",
+          [](const DomainValue& d) {
+            return d.from_polygons ? py::object(coast_report_dict(d.coast.report)) : py::object(py::none());
+          },
+          "What cleaning a coastline did (None for other domains).")
+      .def_property_readonly(
+          "area",
+          [](const DomainValue& d) {
+            d.check_domain();
+            return domain_area(d.pslg());
+          },
+          "The domain's area (raises madd.BadInput when it is no domain).")
+      .def(
+          "check",
+          [](const DomainValue& d) {
+            py::gil_scoped_release release;
+            d.check_domain();
+          },
+          "Raises madd.BadInput unless the PSLG is a domain decompose and mesh take.")
+      .def(
+          "summary",
+          [](const DomainValue& d) {
+            const PslgSummary s = summarize_pslg(d.pslg());
+            py::dict out;
+            out["isolated_vertices"] = s.isolated_vertices;
+            out["isolated_inside"] = s.isolated_inside;
+            out["vertices_inside_segments"] = s.vertices_inside_segments;
+            out["dangling_ends"] = s.dangling_ends;
+            out["interior_segments"] = s.interior_segments;
+            out["boundary_segments"] = s.boundary_segments;
+            out["outside_segments"] = s.outside_segments;
+            out["parts"] = s.parts;
+            out["area"] = s.area;
+            return out;
+          },
+          "What the PSLG holds, as `madd check` prints it.")
+      .def(
+          "write_poly",
+          [](const DomainValue& d, const std::string& path) {
+            OutputSet outputs;
+            outputs.add_file(path, format_poly(d.pslg()));
+            py::gil_scoped_release release;
+            outputs.write();
+          },
+          py::arg("path"), "Writes the PSLG as a Triangle .poly (ids from the domain's first index).")
       .def("__repr__", [](const DomainValue& d) {
         return "<madd.Domain: " + std::to_string(d.pslg().points.size()) + " points, " +
                std::to_string(d.pslg().segments.size()) + " segments, " + std::to_string(d.pslg().holes.size()) +

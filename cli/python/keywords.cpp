@@ -14,10 +14,14 @@ struct FrontKeyword {
   const char* keyword;
 };
 constexpr FrontKeyword front_keywords[] = {
-    {"balance", "balance_by_work"},     {"no-off-centres", "off_centres"},
-    {"no-verify", "verify"},            {"depth", "depth"},
-    {"depth-up", "depth_up"},           {"convex-hull", "convex_hull"},
-    {"region-attributes", "region_attributes"}, {"resolve-crossings", "resolve_crossings"},
+    {"balance", "balance_by_work"},
+    {"no-off-centres", "off_centres"},
+    {"no-verify", "verify"},
+    {"depth", "depth"},
+    {"depth-up", "depth_up"},
+    {"convex-hull", "convex_hull"},
+    {"region-attributes", "region_attributes"},
+    {"resolve-crossings", "resolve_crossings"},
 };
 
 // The named arguments of madd.mesh and their fields.
@@ -45,7 +49,8 @@ std::string text_of(py::handle value) {
   if (py::isinstance<py::float_>(value)) return py::repr(value).cast<std::string>();
   if (py::hasattr(value, "__fspath__")) return py::module_::import("os").attr("fspath")(value).cast<std::string>();
   if (py::isinstance<py::sequence>(value) || py::hasattr(value, "tolist")) {
-    const py::object items = py::hasattr(value, "tolist") ? value.attr("tolist")() : py::reinterpret_borrow<py::object>(value);
+    const py::object items =
+        py::hasattr(value, "tolist") ? value.attr("tolist")() : py::reinterpret_borrow<py::object>(value);
     if (py::isinstance<py::sequence>(items) && !py::isinstance<py::str>(items)) {
       std::string out;
       for (const py::handle item : items) {
@@ -91,8 +96,10 @@ void refuse(const cli::Option& row, const char* keyword, const std::string& prob
 std::string spelling(const cli::Option& row, const char* keyword) {
   std::string flag = std::string("--") + row.name;
   if (std::strcmp(row.name, "balance") == 0) return "balance_by_work=False (--balance area; default True: work)";
-  if (std::strcmp(row.name, "sizes-nearest") == 0) return "sample_interpolation='nearest' (--sizes-nearest; default 'linear')";
-  if (row.arity == cli::Arity::none) return std::string(keyword) + (is_switch_off(row) ? "=False (" : "=True (") + flag + ")";
+  if (std::strcmp(row.name, "sizes-nearest") == 0)
+    return "sample_interpolation='nearest' (--sizes-nearest; default 'linear')";
+  if (row.arity == cli::Arity::none)
+    return std::string(keyword) + (is_switch_off(row) ? "=False (" : "=True (") + flag + ")";
   std::string out;
   if (const char* alias = alias_of(keyword)) out += std::string(alias) + ", ";
   return out + keyword + " (" + flag + " " + (row.value != nullptr ? row.value : "") + ")";
@@ -188,7 +195,8 @@ std::string keywords_help(const cli::CommandOptions& command, const cli::Command
       }
       out += "    " + spelling(*row, keyword) + "\n";
       std::string help = "        ";
-      for (const char* c = use.help; *c != '\0'; ++c) help += *c == '\n' ? std::string("\n        ") : std::string(1, *c);
+      for (const char* c = use.help; *c != '\0'; ++c)
+        help += *c == '\n' ? std::string("\n        ") : std::string(1, *c);
       out += help + "\n";
     }
   };

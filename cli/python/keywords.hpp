@@ -47,8 +47,7 @@ void check_keywords(const cli::CommandLine& line, const cli::CommandOptions& com
 
 // An OptionError of the library said in Python's words: the keyword that
 // sets its field, as typed, and its value.
-OptionError in_python_words(const OptionError& error, const cli::CommandLine& line,
-                            const cli::CommandOptions& command);
+OptionError in_python_words(const OptionError& error, const cli::CommandLine& line, const cli::CommandOptions& command);
 
 // The keywords of `command` with the CLI's help for each, for a docstring.
 std::string keywords_help(const cli::CommandOptions& command, const cli::CommandOptions* also = nullptr);

@@ -58,7 +58,8 @@ Special take_special(py::dict& keywords) {
   for (const char* field : function_fields)
     if (keywords.contains(field) && !py::isinstance<py::str>(keywords[field])) {
       const py::object f = keywords[field];
-      if (!PyCallable_Check(f.ptr())) throw OptionError(field, "must be an expression in x and y, or a callable f(x, y)");
+      if (!PyCallable_Check(f.ptr()))
+        throw OptionError(field, "must be an expression in x and y, or a callable f(x, y)");
       special.functions.emplace_back(field, PythonFunction(f));
       PyDict_DelItemString(keywords.ptr(), field);
     }
@@ -99,7 +100,9 @@ struct ProgressHook {
 };
 
 void hook_progress(MeshOptions& options, const std::shared_ptr<ProgressHook>& hook, bool meshing) {
-  options.decomposition.progress = [hook](std::uint32_t done, std::uint32_t target) { (*hook)("decompose", done, target); };
+  options.decomposition.progress = [hook](std::uint32_t done, std::uint32_t target) {
+    (*hook)("decompose", done, target);
+  };
   if (meshing) options.progress = [hook](std::uint32_t done, std::uint32_t total) { (*hook)("mesh", done, total); };
 }
 
@@ -215,8 +218,7 @@ std::shared_ptr<DecompositionValue> run_decompose(py::handle domain_arg, py::han
     if (line.mesh.verify) {
       const Verification check = verify_decomposition(
           run.decomposition, domain.pslg(), expected_subdomain_count(run.decomposition, read.decomposition.subdomains));
-      if (!check.ok())
-        throw InternalError("the decomposition failed its self-check: " + check.problems.front());
+      if (!check.ok()) throw InternalError("the decomposition failed its self-check: " + check.problems.front());
     }
     if (!read.size.has_size_bound()) return std::move(run.decomposition);
     MeshSizeOptions size = read.size;
@@ -289,7 +291,8 @@ Graph graph_of(py::handle indptr, py::handle indices, py::handle vertex_weights,
   const long long* a = adjacency.data();
   for (std::size_t v = 0; v < n; ++v) {
     if (o[v] < 0 || o[v] > o[v + 1] || o[v + 1] > adjacency.shape(0))
-      throw InvalidInputError(InputProblem::other, "indptr must rise from 0 to len(indices), at vertex " + std::to_string(v),
+      throw InvalidInputError(InputProblem::other,
+                              "indptr must rise from 0 to len(indices), at vertex " + std::to_string(v),
                               {static_cast<std::int64_t>(v)});
     for (long long k = o[v]; k < o[v + 1]; ++k) {
       if (a[k] < 0 || static_cast<std::size_t>(a[k]) >= n)

@@ -24,9 +24,9 @@ namespace py = pybind11;
 
 // madd.Domain: a PSLG that passed validate_pslg, and where it came from.
 struct DomainValue {
-  CoastDomain coast;     // the PSLG (coast.domain), its projection and what cleaning did
-  SourceMap source;      // lines of the file it was read from (errors say path:line)
-  std::string path;      // the file, "" when built from arrays or geometry
+  CoastDomain coast;           // the PSLG (coast.domain), its projection and what cleaning did
+  SourceMap source;            // lines of the file it was read from (errors say path:line)
+  std::string path;            // the file, "" when built from arrays or geometry
   bool from_polygons = false;  // a coastline (GIS file, shapely): the open marker is no coast by default
   // Whether validate() (a domain, not only a PSLG) passed; checked once.
   mutable std::atomic<bool> is_domain{false};
@@ -47,7 +47,7 @@ struct MeshValue {
   Mesh mesh;
   MeshReport report;
   std::shared_ptr<const DomainValue> domain;
-  MeshSizeOptions size;  // the bound it was refined to, for verify() and metrics()
+  MeshSizeOptions size;             // the bound it was refined to, for verify() and metrics()
   std::optional<DepthField> depth;  // the depth file's field, for the model files' depths
   unsigned threads = 0;
 };
