@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "keywords.hpp"
 #include "madd/atomic_write.hpp"
+#include "madd/intersections.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/polygons.hpp"
 
@@ -59,8 +60,24 @@ std::vector<int> ints_of(py::handle value, std::size_t n, const char* what) {
   return out;
 }
 
+// `pslg` checked as a PSLG (SourceMap `source` locating errors), its
+// crossing and overlapping segments first split where they meet when
+// `resolve_crossings` (the resolved PSLG's items no longer match the
+// file's lines: `source` is cleared then).
+void check_pslg(Pslg& pslg, SourceMap& source, bool resolve_crossings) {
+  ValidatePslgOptions validation;
+  validation.allow_intersections = resolve_crossings;
+  validate_pslg(pslg, source, validation);
+  if (!resolve_crossings) return;
+  ResolvedPslg resolved = resolve_intersections(pslg);
+  if (resolved.crossings + resolved.overlaps == 0) return;
+  pslg = std::move(resolved.pslg);
+  source = SourceMap{source.path};
+}
+
 std::shared_ptr<DomainValue> domain_from_arrays(py::handle points, py::handle segments, py::handle holes,
-                                                py::handle markers, py::handle regions, py::handle point_markers) {
+                                                py::handle markers, py::handle regions, py::handle point_markers,
+                                                bool resolve_crossings) {
   auto value = std::make_shared<DomainValue>();
   Pslg& pslg = value->coast.domain;
   pslg.first_index = 0;  // ids in errors are numpy's
@@ -77,7 +94,7 @@ std::shared_ptr<DomainValue> domain_from_arrays(py::handle points, py::handle se
   pslg.point_markers = ints_of(point_markers, pslg.points.size(), "point_markers");
   {
     py::gil_scoped_release release;
-    validate_pslg(pslg);
+    check_pslg(pslg, value->source, resolve_crossings);
   }
   return value;
 }
@@ -96,7 +113,7 @@ std::shared_ptr<DomainValue> domain_from_file(const std::string& path, const cli
     (void)cli::read_input_domain(path, line, nullptr);  // refuses a coast option on a .poly, in the CLI's words
   }
   PolyFile file = read_poly_file(path);
-  validate_pslg(file.pslg, file.source);
+  check_pslg(file.pslg, file.source, line.resolve_crossings);
   value->coast.domain = std::move(file.pslg);
   value->source = std::move(file.source);
   return value;
@@ -225,11 +242,13 @@ void bind_domain(py::module_& m) {
       "closed rings) and raise madd.BadInput naming the ids otherwise.")
       .def(py::init(&domain_from_arrays), py::arg("points"), py::arg("segments") = py::none(),
            py::arg("holes") = py::none(), py::arg("markers") = py::none(), py::arg("regions") = py::none(),
-           py::arg("point_markers") = py::none(),
-           "Domain(points, segments=None, holes=None, markers=None, regions=None, point_markers=None)\n\n"
+           py::arg("point_markers") = py::none(), py::arg("resolve_crossings") = false,
+           "Domain(points, segments=None, holes=None, markers=None, regions=None, point_markers=None, "
+           "resolve_crossings=False)\n\n"
            "points (n, 2) float; segments (m, 2) ints into points; holes (k, 2) points inside holes; markers (m,) "
            "segment markers; regions (r, 4) rows (x, y, attribute, max_area); point_markers (n,). Checked as a "
-           "PSLG at once (madd.BadInput names the ids, 0-based).")
+           "PSLG at once (madd.BadInput names the ids, 0-based); with resolve_crossings, crossing and overlapping "
+           "segments are first split where they meet (as `madd triangulate -r`).")
       .def_property_readonly(
           "points", [](py::object self) { return points_view(self, self.cast<const DomainValue&>().pslg().points); })
       .def_property_readonly(
@@ -315,15 +334,18 @@ void bind_domain(py::module_& m) {
 
   m.def(
       "read_domain",
-      [](py::handle path, const py::kwargs& keywords) {
-        const cli::CommandLine line = reader_line(keywords, "read_domain");
+      [](py::handle path, bool resolve_crossings, const py::kwargs& keywords) {
+        cli::CommandLine line = reader_line(keywords, "read_domain");
+        line.resolve_crossings = resolve_crossings;
         return domain_from_file(py::module_::import("os").attr("fspath")(path).cast<std::string>(), line);
       },
-      py::arg("path"),
-      ("read_domain(path, **coast_options)\n\n"
+      py::arg("path"), py::arg("resolve_crossings") = false,
+      ("read_domain(path, resolve_crossings=False, **coast_options)\n\n"
        "Reads a Triangle .poly or .node (any PSLG; checked as one), or a GeoJSON (.geojson, .json) or shapefile "
        "(.shp) of water polygons in lon/lat, cut, cleaned and projected to metres as `madd check` does it "
-       "(docs/coastal.md). Raises madd.BadInput with path, line and column.\n\nKeywords (as `madd check`):\n" +
+       "(docs/coastal.md). Raises madd.BadInput with path, line and column. With resolve_crossings, crossing and "
+       "overlapping segments of a .poly are split where they meet (as `madd triangulate -r`).\n\nKeywords (as `madd "
+       "check`):\n" +
        keywords_help(cli::options_of("check")))
           .c_str());
   m.def(

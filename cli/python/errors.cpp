@@ -1,5 +1,7 @@
 #include "errors.hpp"
 
+#include <pybind11/stl.h>
+
 #include <array>
 #include <exception>
 #include <new>

@@ -87,8 +87,12 @@ const cli::Option* row_named(const cli::CommandOptions& command, const cli::Comm
   return nullptr;
 }
 
+// A setter's problem ("max_area needs an area > 0, got '-1'"): the rule is
+// what follows the keyword.
 void refuse(const cli::Option& row, const char* keyword, const std::string& problem) {
-  throw OptionError(row.field != nullptr ? row.field : keyword, problem, problem);
+  const std::string prefix = std::string(keyword) + " ";
+  const std::string rule = problem.rfind(prefix, 0) == 0 ? problem.substr(prefix.size()) : problem;
+  throw OptionError(row.field != nullptr ? row.field : keyword, rule, problem);
 }
 
 // How the help shows a keyword: with its alias, the value that means what

@@ -17,7 +17,6 @@
 #include "values.hpp"
 #include "madd/bisect.hpp"
 #include "madd/graph.hpp"
-#include "madd/intersections.hpp"
 
 namespace madd::python {
 
@@ -252,13 +251,7 @@ std::shared_ptr<TriangulationValue> run_triangulate(py::handle input, py::kwargs
     result->triangulation = cli::triangulate_points(pslg, domain->path.empty() ? "points" : domain->path);
     if (line.triangulate.region_attributes) result->triangulation = triangulate(pslg, line.triangulate);
   } else {
-    if (line.resolve_crossings) {
-      ValidatePslgOptions validation;
-      validation.allow_intersections = true;
-      validate_pslg(pslg, domain->source, validation);
-      pslg = resolve_intersections(pslg).pslg;
-    }
-    result->triangulation = triangulate(pslg, line.triangulate);
+    result->triangulation = triangulate(pslg, line.triangulate);  // crossings were resolved as the file was read
   }
   const Verification check =
       verify_triangulation(result->triangulation, pslg.segments.empty() ? nullptr : &pslg, line.triangulate);
@@ -281,7 +274,8 @@ Graph graph_of(py::handle indptr, py::handle indices, py::handle vertex_weights,
     vw.assign(w.data(), w.data() + n);
   }
   py::array_t<double, py::array::c_style | py::array::forcecast> ew;
-  if (!edge_weights.is_none()) {
+  const bool weighted = !edge_weights.is_none();
+  if (weighted) {
     ew = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(edge_weights);
     if (!ew || ew.ndim() != 1 || ew.shape(0) != adjacency.shape(0))
       throw InvalidInputError(InputProblem::bad_weight, "edge_weights must hold one weight per entry of indices");
@@ -299,7 +293,8 @@ Graph graph_of(py::handle indptr, py::handle indices, py::handle vertex_weights,
         throw InvalidInputError(InputProblem::other, "indices[" + std::to_string(k) + "] names no vertex",
                                 {static_cast<std::int64_t>(k)});
       if (static_cast<std::size_t>(a[k]) > v)
-        edges.push_back({static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(a[k]), ew ? ew.data()[k] : 1.0});
+        edges.push_back(
+            {static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(a[k]), weighted ? ew.data()[k] : 1.0});
     }
   }
   return make_graph(std::move(vw), edges);

@@ -75,16 +75,23 @@ def _hole_point(ring, polygon_parts):
 
 def _from_shapely(geometry, marker=1):
     points, segments, holes = [], [], []
+    index = {}  # a point shared by two rings (they touch there) is one vertex
+
+    def vertex(xy):
+        key = (float(xy[0]), float(xy[1]))
+        if key not in index:
+            index[key] = len(points)
+            points.append(key)
+        return index[key]
+
     parts = _polygons_of(geometry)
     from shapely.geometry import Polygon
     shapes = [Polygon(rings[0], rings[1:]) for rings in parts]
     for rings in parts:
         for k, ring in enumerate(rings):
             ring = ring[:-1] if len(ring) > 1 and (ring[0] == ring[-1]).all() else ring
-            first = len(points)
-            points.extend(map(tuple, ring))
-            n = len(ring)
-            segments.extend((first + i, first + (i + 1) % n) for i in range(n))
+            ids = [vertex(p) for p in ring]
+            segments.extend((ids[i], ids[(i + 1) % len(ids)]) for i in range(len(ids)))
             if k > 0:
                 holes.append(_hole_point(rings[k], shapes))
     count = len(segments)
@@ -97,10 +104,12 @@ def _domain_from_shapely(geometry, marker=1):
 
     A shapely Polygon or MultiPolygon as it is: every ring a closed chain of
     segments with `marker`, a hole point inside every interior ring (outside
-    any polygon nested in it). Coordinates are used as given (no projection,
-    no cleaning: see madd.coast_domain for real coastlines). A MultiPolygon
-    must be one connected domain to be decomposed or meshed (its parts
-    touching at vertices); madd.BadInput names the ids otherwise."""
+    any polygon nested in it), a point where rings touch one vertex.
+    Coordinates are used as given (no projection, no cleaning: see
+    madd.coast_domain for real coastlines, which also keeps one water body
+    of several). decompose and mesh need one connected domain: a
+    MultiPolygon whose parts touch at a vertex only is refused
+    (madd.BadInput names the ids)."""
     return _from_shapely(geometry, marker)
 
 
