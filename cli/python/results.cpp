@@ -33,10 +33,14 @@ void write_all(OutputSet& outputs) {
   outputs.write();
 }
 
-void write_one(py::handle path, std::string contents) {
+// One file whose contents `make()` formats, with the GIL released.
+template <class Make>
+void write_one(py::handle path, Make&& make) {
+  const std::string file = fspath(path);
+  py::gil_scoped_release release;
   OutputSet outputs;
-  outputs.add_file(fspath(path), std::move(contents));
-  write_all(outputs);
+  outputs.add_file(file, make());
+  outputs.write();
 }
 
 py::object json_dict(const std::string& json) { return py::module_::import("json").attr("loads")(json); }
@@ -163,13 +167,13 @@ void bind_decomposition(py::module_& m) {
           [](const DecompositionValue& v, py::handle path) {
             const std::string header =
                 v.domain->path.empty() ? std::string("made by madd") : "made by madd from " + v.domain->path;
-            write_one(path, format_decomposition_poly(v.decomposition, header));
+            write_one(path, [&] { return format_decomposition_poly(v.decomposition, header); });
           },
           py::arg("path"), "The whole subdivision as one .poly, one region per subdomain (`madd -o`).")
       .def(
           "write_svg",
           [](const DecompositionValue& v, py::handle path, double width, bool numbers, double mark) {
-            write_one(path, format_svg(v.decomposition, svg_options(width, numbers, mark)));
+            write_one(path, [&] { return format_svg(v.decomposition, svg_options(width, numbers, mark)); });
           },
           py::arg("path"), py::arg("width") = 1000.0, py::arg("numbers") = false,
           py::arg("mark_angles_below_deg") = 0.0, "`madd --svg` (--svg-numbers, --svg-mark-angles).")
@@ -178,20 +182,26 @@ void bind_decomposition(py::module_& m) {
           [](const DecompositionValue& v, py::handle path, double mesh_size) {
             GeoOptions o;
             o.mesh_size = mesh_size;
-            write_one(path, format_geo(v.decomposition, o));
+            write_one(path, [&] { return format_geo(v.decomposition, o); });
           },
           py::arg("path"), py::arg("mesh_size") = 0.0, "A gmsh .geo model (`madd --geo`).")
       .def(
           "write_vtk",
-          [](const DecompositionValue& v, py::handle path) { write_one(path, format_vtk(v.decomposition)); },
+          [](const DecompositionValue& v, py::handle path) {
+            write_one(path, [&] { return format_vtk(v.decomposition); });
+          },
           py::arg("path"), "Legacy VTK (`madd --vtk`).")
       .def(
           "write_geojson",
-          [](const DecompositionValue& v, py::handle path) { write_one(path, format_geojson(v.decomposition)); },
+          [](const DecompositionValue& v, py::handle path) {
+            write_one(path, [&] { return format_geojson(v.decomposition); });
+          },
           py::arg("path"), "GeoJSON, a Polygon feature per subdomain (`madd --geojson`).")
       .def(
           "write_subdomains",
-          [](const DecompositionValue& v, py::handle path) { write_one(path, format_subdomain_file(v.decomposition)); },
+          [](const DecompositionValue& v, py::handle path) {
+            write_one(path, [&] { return format_subdomain_file(v.decomposition); });
+          },
           py::arg("path"), "The paper's subdomain file (`madd --subdomains-file`).")
       .def(
           "write_split",
@@ -400,21 +410,27 @@ void bind_mesh(py::module_& m) {
           "All or nothing (madd.OutputError).")
       .def(
           "write_node",
-          [](const MeshValue& v, py::handle path, unsigned first) { write_one(path, format_mesh_node(v.mesh, first)); },
+          [](const MeshValue& v, py::handle path, unsigned first) {
+            write_one(path, [&] { return format_mesh_node(v.mesh, first); });
+          },
           py::arg("path"), py::arg("first_index") = 1, "Triangle's .node.")
       .def(
           "write_ele",
-          [](const MeshValue& v, py::handle path, unsigned first) { write_one(path, format_mesh_ele(v.mesh, first)); },
+          [](const MeshValue& v, py::handle path, unsigned first) {
+            write_one(path, [&] { return format_mesh_ele(v.mesh, first); });
+          },
           py::arg("path"), py::arg("first_index") = 1, "Triangle's .ele (the subdomain as attribute).")
       .def(
           "write_neigh",
           [](const MeshValue& v, py::handle path, unsigned first) {
-            write_one(path, format_mesh_neigh(v.mesh, first));
+            write_one(path, [&] { return format_mesh_neigh(v.mesh, first); });
           },
           py::arg("path"), py::arg("first_index") = 1, "Triangle's .neigh.")
       .def(
           "write_edge",
-          [](const MeshValue& v, py::handle path, unsigned first) { write_one(path, format_mesh_edge(v.mesh, first)); },
+          [](const MeshValue& v, py::handle path, unsigned first) {
+            write_one(path, [&] { return format_mesh_edge(v.mesh, first); });
+          },
           py::arg("path"), py::arg("first_index") = 1, "Triangle's .edge.")
       .def(
           "write_msh", [](const MeshValue& v, py::handle path) { write_single(v, path, &MeshFormats::msh); },
