@@ -78,6 +78,16 @@ void apply_special(const Special& special, MeshOptions& options) {
   }
 }
 
+// The decomposition's checks once the samples and functions of files,
+// arrays and callables are in (two sources of weights contradict).
+void check_decomposition(const MeshOptions& options, const cli::CommandLine& line, const cli::CommandOptions& command) {
+  try {
+    check_options(options.decomposition);
+  } catch (const OptionError& e) {
+    throw in_python_words(e, line, command);
+  }
+}
+
 bool has_special(const Special& special, const char* field) {
   for (const auto& s : special.samples)
     if (std::strcmp(s.first, field) == 0) return true;
@@ -143,16 +153,6 @@ std::shared_ptr<MeshValue> run_mesh(py::handle domain_arg, py::handle n, py::han
   apply_keywords(line, keywords, values);
   check_keywords(line, mesh_command(), has_special(special, "triangle_area_samples") || !line.sizes_file.empty(),
                  !line.depth_file.empty());
-  {
-    // The decomposition's own checks on the arrays and callables given.
-    MeshOptions probe = line.mesh;
-    apply_special(special, probe);
-    try {
-      check_options(probe.decomposition);
-    } catch (const OptionError& e) {
-      throw in_python_words(e, line, mesh_command());
-    }
-  }
   auto result = std::make_shared<MeshValue>();
   result->domain = domain_argument(domain_arg, line);
   const DomainValue& domain = *result->domain;
@@ -166,6 +166,7 @@ std::shared_ptr<MeshValue> run_mesh(py::handle domain_arg, py::handle n, py::han
     if (result->depth) set_depth(options.size, *result->depth, domain.coast.projection);
   }
   apply_special(special, options);
+  check_decomposition(options, line, mesh_command());
   hook_progress(options, make_hook(std::move(progress)), true);
   MeshRun run = released(line, mesh_command(), [&] { return mesh_with_report(domain.pslg(), options); });
   special.rethrow_if_failed();
@@ -198,11 +199,7 @@ std::shared_ptr<DecompositionValue> run_decompose(py::handle domain_arg, py::han
     read = cli::with_background_files(line);
   }
   apply_special(special, read);
-  try {
-    check_options(read.decomposition);
-  } catch (const OptionError& e) {
-    throw in_python_words(e, line, decompose_command());
-  }
+  check_decomposition(read, line, decompose_command());
   hook_progress(read, make_hook(std::move(progress)), false);
   ValidateOptions validation;
   validation.check_weights = read.decomposition.gradation > 0;
