@@ -1,4 +1,4 @@
-# Type stubs of the madd module (docs/python.md). The keyword options of
+# Type hints of the madd module (PEP 484 interface file, docs/python.md). The keyword options of
 # mesh, decompose, triangulate, read_domain and coast_domain are the fields
 # of the C++ options structs; help(madd.mesh) lists them with the CLI's help.
 import os
