@@ -9,6 +9,7 @@
 
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 namespace madd::detail {
@@ -23,6 +24,14 @@ constexpr std::array<u128, max_power + 1> powers_of_five = [] {
   std::array<u128, max_power + 1> p{};
   p[0] = 1;
   for (int i = 1; i <= max_power; ++i) p[i] = p[i - 1] * 5;
+  return p;
+}();
+
+// 10^0 ... 10^18, each a double exactly.
+constexpr std::array<double, 19> powers_of_ten = [] {
+  std::array<double, 19> p{};
+  p[0] = 1;
+  for (std::size_t k = 1; k < p.size(); ++k) p[k] = p[k - 1] * 10;
   return p;
 }();
 
@@ -55,8 +64,11 @@ bool seventeen_digits(double v, std::uint64_t& q, int& exponent) {
   if (biased == 0 || biased == 0x7ff) return false;  // 0, subnormal, inf, NaN
   const std::uint64_t m = (bits & ((1ULL << 52) - 1)) | (1ULL << 52);
   const int e = biased - 1075;  // v = m 2^e
-  // floor(log10 |v|) within one: log10(2) ~ 78913 / 2^18.
+  // floor(log10 |v|): from the binary exponent (log10(2) ~ 78913 / 2^18)
+  // at most one below, then against the power of ten above when that is a
+  // double exactly (10^0 ... 10^18); else the loop below counts up.
   int guess = ((biased - 1023) * 78913) >> 18;
+  if (guess >= -1 && guess < 18 && std::fabs(v) >= powers_of_ten[static_cast<std::size_t>(guess + 1)]) ++guess;
   for (int tries = 0; tries < 3; ++tries) {
     const int p = 16 - guess;
     if (p < 0 || p > max_power) return false;
@@ -78,6 +90,26 @@ bool seventeen_digits(double v, std::uint64_t& q, int& exponent) {
   return false;
 }
 
+// "00" to "99".
+constexpr std::array<char, 200> digit_pairs = [] {
+  std::array<char, 200> t{};
+  for (int i = 0; i < 100; ++i) {
+    t[static_cast<std::size_t>(2 * i)] = static_cast<char>('0' + i / 10);
+    t[static_cast<std::size_t>(2 * i + 1)] = static_cast<char>('0' + i % 10);
+  }
+  return t;
+}();
+
+// The 17 digits of q (10^16 <= q < 10^17), two at a time from the right.
+void write_17_digits(std::uint64_t q, char* digits) {
+  auto low = static_cast<std::uint32_t>(q % 100'000'000);  // digits 9..16
+  auto high = q / 100'000'000;                             // digits 0..8, below 10^9
+  for (int i = 15; i >= 9; i -= 2, low /= 100) std::memcpy(digits + i, &digit_pairs[2 * (low % 100)], 2);
+  auto top = static_cast<std::uint32_t>(high);
+  for (int i = 7; i >= 1; i -= 2, top /= 100) std::memcpy(digits + i, &digit_pairs[2 * (top % 100)], 2);
+  digits[0] = static_cast<char>('0' + top);
+}
+
 }  // namespace
 
 void append_g17(std::string& out, double v) {
@@ -90,10 +122,7 @@ void append_g17(std::string& out, double v) {
     return;
   }
   char digits[17];
-  for (int i = 16; i >= 0; --i) {
-    digits[i] = static_cast<char>('0' + q % 10);
-    q /= 10;
-  }
+  write_17_digits(q, digits);
   char text[32];
   char* c = text;
   if (v < 0) *c++ = '-';

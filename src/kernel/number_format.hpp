@@ -7,8 +7,9 @@
 namespace madd::detail {
 
 // Appends v as %.17g would (round-trips exactly), without the locale: the
-// same bytes as std::to_chars(general, 17), three to four times faster for
-// the coordinates of mesh files (src/kernel/number_format.cpp).
+// same bytes as std::to_chars(general, 17), 1.6-1.9 times faster on the
+// coordinates of mesh files (src/kernel/number_format.cpp; `madd_bench
+// number_format`).
 void append_g17(std::string& out, double v);
 
 // Appends the shortest text that reads back as exactly v (JSON outputs).
