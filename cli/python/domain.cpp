@@ -42,9 +42,11 @@ std::vector<std::uint32_t> indices_of(py::handle value, py::ssize_t k, std::size
   const double* d = a.data();
   for (py::ssize_t i = 0; i < a.size(); ++i) {
     if (!(d[i] >= 0 && d[i] < static_cast<double>(limit) && std::floor(d[i]) == d[i]))
-      bad_array(std::string(what) + " row " + std::to_string(i / k) + " names point " +
-                py::repr(py::float_(d[i])).cast<std::string>() + ", not one of the " + std::to_string(limit) +
-                " points");
+      throw InvalidInputError(InputProblem::other,
+                              std::string(what) + " row " + std::to_string(i / k) + " names point " +
+                                  py::repr(py::float_(d[i])).cast<std::string>() + ", not one of the " +
+                                  std::to_string(limit) + " points",
+                              {static_cast<std::int64_t>(i / k)});
     out.push_back(static_cast<std::uint32_t>(d[i]));
   }
   return out;

@@ -32,11 +32,11 @@ double PythonFunction::operator()(double x, double y) const {
   }
   py::gil_scoped_acquire gil;
   try {
-    // A number, or what float() takes; anything else is the TypeError float() raises.
+    // A number (anything with __float__ or __index__); else the TypeError Python raises.
     const py::object value = state_->function(x, y);
-    const py::object number = py::reinterpret_steal<py::object>(PyNumber_Float(value.ptr()));
-    if (!number) throw py::error_already_set();
-    return PyFloat_AS_DOUBLE(number.ptr());
+    const double number = PyFloat_AsDouble(value.ptr());
+    if (number == -1.0 && PyErr_Occurred() != nullptr) throw py::error_already_set();
+    return number;
   } catch (...) {
     std::lock_guard lock(state_->mutex);
     if (!state_->failure) state_->failure = std::current_exception();
