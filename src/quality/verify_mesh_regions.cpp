@@ -86,29 +86,35 @@ std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
   const std::size_t n = first.size() - 1;
   std::vector<std::uint32_t> components(n, 0);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> leaving(n);  // links out of each subdomain
+  // Within a subdomain by union-find in triangle order (the arrays read in
+  // order, not in a flood's jumps): every crossable link joins its two
+  // triangles, the lower the root, so a component's root is its lowest
+  // triangle and the components are numbered in the order of their lowest
+  // triangles, as a flood from each unvisited triangle in turn numbers them.
   for_each_on_threads(n, threads, [&](std::size_t k) {
-    std::vector<std::uint32_t> stack;
-    std::vector<std::uint8_t> seen(first[k + 1] - first[k], 0);
-    for (std::uint32_t seed = first[k]; seed < first[k + 1]; ++seed) {
-      if (seen[seed - first[k]] != 0) continue;
-      const std::uint32_t c = components[k]++;
-      seen[seed - first[k]] = 1;
-      stack.assign(1, seed);
-      while (!stack.empty()) {
-        const std::uint32_t t = stack.back();
-        stack.pop_back();
-        label[t] = c;
-        for (int i = 0; i < 3; ++i) {
-          const std::uint32_t u = m.neighbours[t][i];
-          if (u == no_index || !crosses(t, i)) continue;
-          if (u < first[k] || u >= first[k + 1]) {
-            leaving[k].emplace_back(t, u);
-          } else if (seen[u - first[k]] == 0) {
-            seen[u - first[k]] = 1;
-            stack.push_back(u);
-          }
+    const std::uint32_t begin = first[k], count = first[k + 1] - first[k];
+    std::vector<std::uint32_t> parent(count);
+    for (std::uint32_t i = 0; i < count; ++i) parent[i] = i;
+    const auto root = [&](std::uint32_t c) {
+      while (parent[c] != c) c = parent[c] = parent[parent[c]];
+      return c;
+    };
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const std::uint32_t t = begin + i;
+      for (int e = 0; e < 3; ++e) {
+        const std::uint32_t u = m.neighbours[t][e];
+        if (u == no_index || !crosses(t, e)) continue;
+        if (u < begin || u >= begin + count) {
+          leaving[k].emplace_back(t, u);
+        } else if (u < t) {  // each link inside once, from its higher end
+          const std::uint32_t a = root(i), b = root(u - begin);
+          if (a != b) parent[std::max(a, b)] = std::min(a, b);
         }
       }
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {  // a root comes before the rest of its component
+      const std::uint32_t r = root(i);
+      label[begin + i] = r == i ? components[k]++ : label[begin + r];
     }
   });
   // The components numbered across subdomains, joined along the links that
