@@ -60,8 +60,8 @@ void check_interior_points(const Mesh& m, ProblemLog& log) {
 // The flood of each region reaches the triangles connected to its first
 // one across edges that are no constraint: a component of that adjacency
 // (the mesh's links are mutual, or the edge pass has said otherwise). The
-// components are found per subdomain on `threads` threads (a flood inside
-// its triangle range, numbered in its order there), joined across the links
+// components are found per subdomain on `threads` threads (by union-find
+// inside its triangle range, numbered in its order there), joined across the links
 // that leave a subdomain (separators, mostly) by union-find, and each
 // region colours its component, in input order, the later winning.
 std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
