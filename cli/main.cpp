@@ -12,6 +12,7 @@
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "huge_pages.hpp"
 #include "interrupts.hpp"
 #include "option_table.hpp"
 #include "madd/atomic_write.hpp"
@@ -175,6 +176,7 @@ int run_guarded(const char* command, int (*body)(void*), void* context) {
 
 int main(int argc, char** argv) {
   using namespace madd::cli;
+  restart_with_huge_pages(argv);
   auto& registry = commands();
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     print_help();

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "../commands.hpp"
+#include "../huge_pages.hpp"
 #include "../input_domain.hpp"
 #include "../interrupts.hpp"
 #include "../model_files.hpp"
@@ -423,6 +424,7 @@ int main_on(const World& world, int argc, char** argv) {
 }  // namespace madd::mpi
 
 int main(int argc, char** argv) {
+  madd::cli::restart_with_huge_pages(argv);
   // Threads mesh inside a rank; only the main thread calls MPI.
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);

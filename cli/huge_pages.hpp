@@ -1,0 +1,37 @@
+#pragma once
+// Malloc's heaps on transparent huge pages, for the command-line programs.
+//
+// A large mesh touches every page of its arrays once: the subdomains'
+// refinement meshes, the merged mesh, the check's flags. With 4 KiB pages
+// the kernel takes a fault and zeroes a page each time, which on the
+// development machine cost about 8 us a page, a fifth to a third of a whole
+// `madd mesh` run at 1.5 M to 4 x 10^7 triangles, and on one thread where
+// one thread first touches an array (docs/performance.md, "Huge pages").
+// glibc can put its heaps on 2 MiB pages (the tunable glibc.malloc.hugetlb=1,
+// glibc 2.35 and later, where the kernel's transparent huge pages are set to
+// `madvise`), but reads its tunables only when a process starts. So the
+// programs' main() calls restart_with_huge_pages() first: it sets the tunable
+// and executes the same program again, once, with the same arguments.
+#include <optional>
+#include <string>
+
+namespace madd::cli {
+
+// What GLIBC_TUNABLES should become (the caller's tunables, if any, then
+// glibc.malloc.hugetlb=1), or nothing to do: when `opt_out` (the variable
+// MADD_HUGE_PAGES) is "0", when the tunables name glibc.malloc.hugetlb
+// already (the user's choice, or this program started again), when
+// `ld_preload` names a tool that wraps the program (valgrind's preloads: an
+// exec would leave the tool), or when `thp_enabled` (the text of
+// /sys/kernel/mm/transparent_hugepage/enabled, null when unreadable) does
+// not select [madvise] ([always] needs no advice, [never] takes none).
+std::optional<std::string> tunables_for_huge_pages(const char* tunables, const char* opt_out, const char* ld_preload,
+                                                   const char* thp_enabled);
+
+// Executes the running program again with the tunables above when there is
+// something to do and the C library is glibc 2.35 or later; returns (and the
+// program goes on as it is) when not, or when the exec fails. Call it first
+// in main(), before anything is read, written or started.
+void restart_with_huge_pages(char** argv);
+
+}  // namespace madd::cli
