@@ -6,6 +6,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "kernel/fresh_memory.hpp"
 #include "kernel/threads.hpp"
 #include "madd/error.hpp"
 
@@ -201,9 +202,11 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   Mesh m;
   m.decomposition = d;
   m.min_triangle_angle_deg = min_triangle_angle_deg;
+  // The merged arrays' pages are faulted in on the threads that fill them
+  // (kernel/fresh_memory.hpp): on one thread they were most of the merge.
   m.points = d.points;
-  m.points.resize(at.first_point.back());
-  m.point_markers.assign(at.first_point.back(), 0);
+  resize_on_threads(m.points, at.first_point.back(), threads);
+  assign_on_threads(m.point_markers, at.first_point.back(), 0, threads);
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     if (d.is_separator(j)) continue;
     const Segment& s = d.segments[j];
@@ -211,10 +214,10 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
     m.point_markers[s.b] = std::max(m.point_markers[s.b], s.marker);
   }
   const std::uint32_t triangles = at.first_triangle.back();
-  m.triangles.resize(triangles);
-  m.neighbours.resize(triangles);
-  m.triangle_subdomain.resize(triangles);
-  if (!d.regions.empty()) m.triangle_attribute.assign(triangles, 0.0);  // 0: a subdomain in no region
+  resize_on_threads(m.triangles, triangles, threads);
+  resize_on_threads(m.neighbours, triangles, threads);
+  resize_on_threads(m.triangle_subdomain, triangles, threads);
+  if (!d.regions.empty()) assign_on_threads(m.triangle_attribute, triangles, 0.0, threads);  // 0: in no region
   m.subdomain_first_triangle = at.first_triangle;
   for (std::uint32_t k = 0; k < pieces.size(); ++k) {
     if (!kept[k]) continue;
