@@ -146,7 +146,7 @@ Decomposition discretise(const Decomposition& decomposition, const Pslg& domain,
 }
 
 Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field, bool boundary_by_features,
-                                 const ResourceGuard* guard, unsigned threads) {
+                                 const ResourceGuard* guard, unsigned threads, const RegionView* view) {
   // The features every piece resolves: every segment (interior ones too, so
   // that a narrow gap between an interior segment and the shore is resolved)
   // and every isolated input vertex, as a segment of length 0 (the distance
@@ -156,7 +156,8 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
     for (const std::uint32_t v : sub.interior_points) all_features.push_back({v, v, 0});
   const detail::FeatureDistance features(decomposition.points, all_features);
   // Regions with an area bound bound the segments beside them too.
-  const std::vector<double> regional = detail::region_view(decomposition, threads).segment_area;
+  const std::vector<double> regional =
+      view != nullptr ? view->segment_area : detail::region_view(decomposition, threads).segment_area;
   const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features, regional);
   // Boundary pieces our refinement may split need only resolve the
   // separators near them (the decoupling); elsewhere it splits them itself.

@@ -6,6 +6,7 @@
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
 #include "kernel/resource_limits.hpp"
+#include "mesh/subdomain_regions.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd::detail {
@@ -23,9 +24,10 @@ namespace madd::detail {
 // far below the segments' lengths asks for millions of points a segment:
 // the time and memory limits must stop that, as they stop refinement).
 // The segments are split on `threads` threads (0: one per core); the result
-// is the same for any number.
+// is the same for any number. `view`, when given, is
+// region_view(decomposition) (the caller's, found once per run).
 Decomposition discretise(const Decomposition& decomposition, const AreaBound& size, bool boundary_by_features,
-                         const ResourceGuard* guard = nullptr, unsigned threads = 1);
+                         const ResourceGuard* guard = nullptr, unsigned threads = 1, const RegionView* view = nullptr);
 
 // Rounds of separator splitting after meshing, at most (docs/mesh.md, "Decoupling").
 inline constexpr int max_separator_rounds = 10;

@@ -157,10 +157,9 @@ void throw_failed_check(const Verification& v) {
 void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBound& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
                       const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
-                      std::vector<std::vector<Region>>& regions) {
+                      const std::vector<std::vector<Region>>& regions) {
   pieces.assign(d.subdomains.size(), SubdomainMesh{});
   // Splitting separators later changes no face, so the regions hold for every round.
-  regions = region_view(d, options.decomposition.threads).regions;
   std::vector<std::uint32_t> todo;
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
     if (mine[k]) todo.push_back(k);
@@ -189,15 +188,19 @@ MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const Dom
   detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
+  const unsigned threads = options.decomposition.threads;
+  // The subdomains' regions, found once (a triangulation of the whole
+  // domain): the decoupling's split points change no face.
+  const RegionView view = region_view(decomposition, threads);
+  Decomposition d = detail::discretise(decomposition, field, false, &guard, threads, &view);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, work, options.decomposition.threads, &decomposition);
+  report.expected_triangles = detail::expected_triangles(d, work, threads, &decomposition, &view);
   report.phases.push_back({"estimate", clock.lap()});
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<bool> all(d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
-  std::vector<std::vector<Region>> regions;
-  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces, regions);
+  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces,
+                           view.regions);
   report.phases.push_back({"refine", clock.lap()});
   run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg, nullptr, options.decomposition.threads);
   report.phases.push_back({"merge", clock.lap()});

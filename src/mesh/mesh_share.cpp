@@ -190,10 +190,12 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   // no exchange needed.
   const detail::AreaBound field(options.size, &domain);
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
-  Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads);
+  // The subdomains' regions, found once: the decoupling's split points change no face.
+  const detail::RegionView view = detail::region_view(decomposition, options.decomposition.threads);
+  Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads, &view);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles =
-      detail::expected_triangles(d, detail::DomainWork(domain, field), options.decomposition.threads, &decomposition);
+  report.expected_triangles = detail::expected_triangles(d, detail::DomainWork(domain, field),
+                                                         options.decomposition.threads, &decomposition, &view);
   report.phases.push_back({"estimate", clock.lap()});
 
   part.share = share;
@@ -206,7 +208,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
       part.subdomains.push_back(k);
     }
   std::vector<detail::SubdomainMesh> pieces;
-  std::vector<std::vector<Region>> regions;
+  const std::vector<std::vector<Region>>& regions = view.regions;
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces,
                            regions);
   report.phases.push_back({"refine", clock.lap()});

@@ -25,12 +25,12 @@ using SeparatorUnion = std::function<std::vector<std::uint32_t>(const std::vecto
 // max_separator_rounds is reached. `work`: expected triangles per subdomain.
 // The meshes land in pieces[k]; the others stay empty. Which pieces are split
 // depends on the meshes only, never on threads or processes.
-// `regions` gets each subdomain's regions (subdomain_regions), which its
-// meshes were refined with.
+// `regions`: each subdomain's regions (subdomain_regions: region_view's, of
+// d or of d before the decoupling, whose split points change no face).
 void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBound& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
                       const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
-                      std::vector<std::vector<Region>>& regions);
+                      const std::vector<std::vector<Region>>& regions);
 
 // Throws InternalError with the first of v's problems (v failed).
 [[noreturn]] void throw_failed_check(const Verification& v);

@@ -274,17 +274,18 @@ double boundary_layer(Point a, Point b, const AreaBound& size) {
 }
 
 // Under one bound: the gaps' excess, each sample given to the subdomain holding it.
-std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const std::vector<ValuedPoint>& samples) {
+std::vector<double> gap_excess_by_subdomain(const Decomposition& d, const std::vector<ValuedPoint>& samples,
+                                            unsigned threads) {
   std::vector<double> out(d.subdomains.size(), 0.0);
   if (samples.empty()) return out;
-  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
+  for_each_on_threads(d.subdomains.size(), threads, [&](std::size_t k) {
     const Subdomain& s = d.subdomains[k];
     Box around;
     for (const std::uint32_t v : s.rings[0]) around.add(d.points[v]);
     const WindingIndex inside(d.points, s.rings);
     for (const ValuedPoint& p : samples)
       if (around.contains(p.at) && inside.winding(p.at) != 0) out[k] += p.value;
-  }
+  });
   return out;
 }
 
@@ -305,13 +306,14 @@ DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_)
 }
 
 std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads,
-                                       const Decomposition* before) {
+                                       const Decomposition* before, const RegionView* view) {
   std::vector<double> out(d.subdomains.size(), 0.0);
   const AreaBound& size = work.size;
   const NarrowGaps& gaps = work.gaps;
   const bool uniform = size.uniform();
-  const RegionView regions = region_view(d, threads);
-  const std::vector<double> excess = gap_excess_by_subdomain(d, work.gap_excess);
+  const RegionView own = view != nullptr ? RegionView{} : region_view(d, threads);
+  const RegionView& regions = view != nullptr ? *view : own;
+  const std::vector<double> excess = gap_excess_by_subdomain(d, work.gap_excess, threads);
   // Each subdomain alone, into its own slot: under a varying bound, the
   // integral over its triangulation is a pass as long as a tenth of its
   // refinement, and, over the decoupled rings (split to the field's size

@@ -8,6 +8,7 @@
 #include "madd/pslg.hpp"
 #include "madd/triangulation.hpp"
 #include "mesh/narrow_gaps.hpp"
+#include "mesh/subdomain_regions.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd::detail {
@@ -35,9 +36,10 @@ struct DomainWork {
 // before the decoupling split its segments (the same subdomains, their
 // rings without the split points): under a varying bound the interiors are
 // integrated over its rings' triangulations, the boundary layers along d's
-// pieces.
+// pieces. `view`, when given, is region_view(d) or region_view(*before)
+// (the decoupling's split points change no face).
 std::vector<double> expected_triangles(const Decomposition& d, const DomainWork& work, unsigned threads = 1,
-                                       const Decomposition* before = nullptr);
+                                       const Decomposition* before = nullptr, const RegionView* view = nullptr);
 
 // The triangles expected in `face` of a decomposition of work.domain, given
 // as DecomposeOptions::face_work gets it: the subdomain estimate above, on
