@@ -305,6 +305,30 @@ TEST_CASE("distance: islands are coast, and the field is deterministic") {
   CHECK(again.background().edge == field.background().edge);
 }
 
+TEST_CASE("the field built on several threads is the one built on one") {
+  // Enough background triangles for several chunks of the coast candidates'
+  // lists (2048 triangles a chunk), with the exact distance term and gradation.
+  const Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + "/archipelago.poly");
+  MeshSizeOptions size = distance_field(0.05, 0.15, 5.0);  // the bay is 118 x 81
+  size.cells_across = 3;
+  size.size_gradation = 0.2;
+  const SizeField one(domain, size, 1);
+  REQUIRE(one.report().inside_triangles > 3 * 2048);
+  REQUIRE(one.report().exact_triangles > 0);
+  for (const unsigned threads : {2u, 3u, 8u}) {
+    const SizeField many(domain, size, threads);
+    CHECK(many.report().coast_candidates == one.report().coast_candidates);
+    CHECK(many.report().exact_triangles == one.report().exact_triangles);
+    CHECK(many.background().triangles == one.background().triangles);
+    CHECK(many.background().edge == one.background().edge);
+    // The exact term reads each triangle's own list: the same value everywhere.
+    std::size_t differ = 0;
+    for (const Point x : random_inside(domain, {-12, -22}, {107, 60}, 20000, 5))
+      differ += many.edge_at(x) != one.edge_at(x);
+    CHECK(differ == 0);
+  }
+}
+
 TEST_CASE("distance: graded below its rate, the lowered linear term still never exceeds hmin + G d") {
   // The gradation (0.1) is below the distance rate (0.3): the distance term
   // is graded with the rest, through its point values lowered by the

@@ -142,7 +142,8 @@ Decomposition discretise(const Decomposition& decomposition, const Pslg& domain,
                          const DecomposeOptions& limits) {
   const detail::ResourceGuard guard({limits.time_limit_seconds, limits.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
-  return detail::discretise(decomposition, detail::AreaBound(size, &domain), true, &guard, limits.threads);
+  return detail::discretise(decomposition, detail::AreaBound(size, &domain, limits.threads), true, &guard,
+                            limits.threads);
 }
 
 Decomposition detail::discretise(const Decomposition& decomposition, const AreaBound& field, bool boundary_by_features,

@@ -222,7 +222,7 @@ DecomposeRun decompose_bounded(const DomainWork& work, const MeshOptions& option
 MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domain, const MeshOptions& options) {
   check_options(options);
   detail::Stopwatch clock;
-  const detail::AreaBound field(options.size, &domain);
+  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   const double field_seconds = clock.lap();
   MeshRun run = detail::mesh_decomposition_bounded(decomposition, detail::DomainWork(domain, field), options);
   if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
@@ -232,7 +232,7 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
 DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) {
   check_options(options);
   validate(domain);
-  const detail::AreaBound field(options.size, &domain);
+  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   return detail::decompose_bounded(detail::DomainWork(domain, field), options);
 }
 
@@ -241,7 +241,7 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
   detail::Stopwatch clock;
   // The domain is validated once, before the size field is built on it.
   validate(domain);
-  const detail::AreaBound field(options.size, &domain);
+  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   const double field_seconds = clock.lap();
   // One reading of the whole domain's work for the weights and the estimates.
   const detail::DomainWork work(domain, field);

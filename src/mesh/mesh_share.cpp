@@ -188,7 +188,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
       {options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes, n});
   // Every share builds the same field from the same domain (deterministic):
   // no exchange needed.
-  const detail::AreaBound field(options.size, &domain);
+  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   if (!field.field().empty()) report.phases.push_back({"size field", clock.lap()});
   // The subdomains' regions, found once: the decoupling's split points change no face.
   const detail::RegionView view = detail::region_view(decomposition, options.decomposition.threads);

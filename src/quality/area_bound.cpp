@@ -36,9 +36,9 @@ double constant_bound(const MeshSizeOptions& size) {
 
 }  // namespace
 
-AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain)
+AreaBound::AreaBound(const MeshSizeOptions& size, const Pslg* domain, unsigned threads)
     : size_(size), constant_(constant_bound(size)), samples_(size.triangle_area_samples, size.sample_interpolation),
-      field_(domain ? SizeField(*domain, size) : no_field(size)) {
+      field_(domain ? SizeField(*domain, size, threads) : no_field(size)) {
   if (!size.triangle_area_function && size.triangle_area_samples.empty()) {
     const double floor = field_.least_edge();  // 0 without hmin: no floor
     least_ = field_.empty() ? constant_ : floor > 0.0 ? std::min(constant_, area_of_edge(floor)) : 0.0;

@@ -30,8 +30,10 @@ struct BoundHint {
 // verify_mesh. Keeps a reference to `size`, which must outlive it.
 class AreaBound {
 public:
-  // The field terms need the domain (a valid one): without it they throw OptionError.
-  explicit AreaBound(const MeshSizeOptions& size, const Pslg* domain = nullptr);
+  // The field terms need the domain (a valid one): without it they throw
+  // OptionError. The field is built on `threads` threads (0: one per core),
+  // the same for any count.
+  explicit AreaBound(const MeshSizeOptions& size, const Pslg* domain = nullptr, unsigned threads = 1);
   double area_at(Point p, BoundHint* hint = nullptr) const;
   bool bounded() const noexcept { return size_.has_size_bound(); }
   // No bound varies over the domain: area_at is one value everywhere.

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "kernel/threads.hpp"
 #include "sizing/distance_bound.hpp"
 
 namespace madd::detail {
@@ -64,9 +65,39 @@ std::vector<std::vector<std::uint32_t>> inside_triangles_around(const SizeBackgr
   return out;
 }
 
+// list(t, near) for every triangle t < n, `near` cleared before each: the
+// lists joined in triangle order, count[t] the length of t's. In chunks of
+// triangles on `threads` threads, each chunk into its own list: the same
+// result for any count.
+template <typename List>
+std::vector<std::uint32_t> in_chunks(std::uint32_t n, unsigned threads, std::vector<std::uint32_t>& count,
+                                     const List& list) {
+  constexpr std::uint32_t chunk = 2048;
+  const std::uint32_t chunks = (n + chunk - 1) / chunk;
+  std::vector<std::vector<std::uint32_t>> joined(chunks);
+  for_each_on_threads(chunks, threads, [&](std::size_t c) {
+    std::vector<std::uint32_t> near;
+    const auto begin = static_cast<std::uint32_t>(c * chunk);
+    const std::uint32_t end = std::min(n, begin + chunk);
+    for (std::uint32_t t = begin; t < end; ++t) {
+      near.clear();
+      list(t, near);
+      count[t] = static_cast<std::uint32_t>(near.size());
+      joined[c].insert(joined[c].end(), near.begin(), near.end());
+    }
+  });
+  std::size_t total = 0;
+  for (const std::vector<std::uint32_t>& part : joined) total += part.size();
+  std::vector<std::uint32_t> out;
+  out.reserve(total);
+  for (const std::vector<std::uint32_t>& part : joined) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
+
 }  // namespace
 
-CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSample> samples, const Coast& coast) {
+CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSample> samples, const Coast& coast,
+                                 unsigned threads) {
   const auto n = static_cast<std::uint32_t>(bg.triangles.size());
   for (std::uint32_t s = 0; s < coast.coast_index.size(); ++s) {
     const std::array<Point, 2>& e = coast.coast_index.ends(s);
@@ -75,12 +106,11 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     pieces_.push_back({e[0], ab, 1.0 / dot(ab, ab)});  // pieces have length > 0 (validate)
   }
   // The inside triangles' lists (pass 1), then the outside ones' with a
-  // corner on an inside triangle (pass 2).
-  std::vector<std::uint32_t> first(std::size_t{n} + 1, 0), pieces;
-  std::vector<std::uint32_t> near;
-  for (std::uint32_t t = 0; t < n; ++t) {
-    first[t] = static_cast<std::uint32_t>(pieces.size());
-    if (bg.inside[t] == 0) continue;
+  // corner on an inside triangle (pass 2), each in chunks of triangles on
+  // the threads, the chunks' lists joined in triangle order.
+  std::vector<std::uint32_t> count(n, 0);
+  const std::vector<std::uint32_t> pieces = in_chunks(n, threads, count, [&](std::uint32_t t, auto& near) {
+    if (bg.inside[t] == 0) return;
     const auto& v = bg.triangles[t];
     const TriangleBound bound = triangle_bound(bg, samples, t);
     double reach = std::numeric_limits<double>::infinity();
@@ -95,9 +125,9 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
     coast.coast_index.within(bound.centre, radius, ends_.size(), near);
     const Point c[3] = {bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]};
     prune(c, near);
-    pieces.insert(pieces.end(), near.begin(), near.end());
-  }
-  first[n] = static_cast<std::uint32_t>(pieces.size());
+  });
+  std::vector<std::uint32_t> first(std::size_t{n} + 1, 0);
+  for (std::uint32_t t = 0; t < n; ++t) first[t + 1] = first[t] + count[t];
   // An outside triangle with a corner on the water reads the pieces of the
   // inside triangles around its water corners. A point on the coast, or a
   // rounding off it onto the land (the decoupling's split points, a
@@ -108,22 +138,19 @@ CoastCandidates::CoastCandidates(const SizeBackground& bg, std::span<const RawSa
   // was 45 x too long for the triangles beside it, and refinement stopped
   // there.) Deeper in the land the value is of no use and no harm.
   const std::vector<std::vector<std::uint32_t>> water_around = inside_triangles_around(bg);
-  start_.assign(std::size_t{n} + 1, 0);
-  for (std::uint32_t t = 0; t < n; ++t) {
-    start_[t] = static_cast<std::uint32_t>(piece_.size());
+  piece_ = in_chunks(n, threads, count, [&](std::uint32_t t, auto& near) {
     if (bg.inside[t] != 0) {
-      piece_.insert(piece_.end(), pieces.begin() + first[t], pieces.begin() + first[t + 1]);
-      continue;
+      near.assign(pieces.begin() + first[t], pieces.begin() + first[t + 1]);
+      return;
     }
-    near.clear();
     for (const std::uint32_t v : bg.triangles[t])
       for (const std::uint32_t u : water_around[v])
         near.insert(near.end(), pieces.begin() + first[u], pieces.begin() + first[u + 1]);
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
-    piece_.insert(piece_.end(), near.begin(), near.end());
-  }
-  start_[n] = static_cast<std::uint32_t>(piece_.size());
+  });
+  start_.assign(std::size_t{n} + 1, 0);
+  for (std::uint32_t t = 0; t < n; ++t) start_[t + 1] = start_[t] + count[t];
 }
 
 std::size_t CoastCandidates::exact_triangles() const noexcept {

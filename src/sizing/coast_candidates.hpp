@@ -41,7 +41,9 @@ namespace madd::detail {
 class CoastCandidates {
 public:
   CoastCandidates() = default;
-  CoastCandidates(const SizeBackground& background, std::span<const RawSample> samples, const Coast& coast);
+  // The lists are found on `threads` threads (0: one per core), the same for any count.
+  CoastCandidates(const SizeBackground& background, std::span<const RawSample> samples, const Coast& coast,
+                  unsigned threads = 1);
   bool exact(std::uint32_t t) const noexcept { return !start_.empty() && start_[t] != start_[t + 1]; }
   // d(p) for p in exact triangle t.
   double distance(std::uint32_t t, Point p) const noexcept {

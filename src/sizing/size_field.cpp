@@ -88,7 +88,7 @@ void check_field_options(const MeshSizeOptions& size) {
                       "needs min_edge_length (the edge length at the coast) > 0");
 }
 
-SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
+SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size, unsigned threads) {
   check_field_options(size);
   if (!size.has_field_terms()) {
     if (!size.coast_markers.empty()) trace_coast(domain, size.coast_markers);  // checked all the same
@@ -112,7 +112,7 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size) {
   rate_ = size.distance_rate;
   background_.edge = other_terms(background_, built.samples);
   if (exact) {
-    exact_ = CoastCandidates(background_, built.samples, coast);
+    exact_ = CoastCandidates(background_, built.samples, coast, threads);
     for (std::uint32_t t = 0; t < background_.triangles.size(); ++t)
       report_.exact_triangles += background_.inside[t] != 0 && exact_.exact(t) ? 1 : 0;
     report_.coast_candidates = exact_.candidates();

@@ -45,8 +45,8 @@ public:
   // `domain` is a valid domain (validate()); throws OptionError on bad field
   // options (check_field_options, and coast_markers naming a marker no
   // boundary segment has). Builds nothing when size.has_field_terms() is
-  // false.
-  SizeField(const Pslg& domain, const MeshSizeOptions& size);
+  // false. Built on `threads` threads (0: one per core), the same for any count.
+  SizeField(const Pslg& domain, const MeshSizeOptions& size, unsigned threads = 1);
   // No field term was asked for: edge_at is +infinity everywhere.
   bool empty() const noexcept { return background_.triangles.empty(); }
   // h at p: linear over the background triangle holding p (+infinity when
