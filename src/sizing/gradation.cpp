@@ -30,43 +30,62 @@ Adjacency adjacency(const SizeBackground& bg, double rate) {
     double slope, safe;
   };
   const std::size_t n = bg.points.size();
-  std::vector<std::vector<Edge>> edges(n);
-  std::vector<std::vector<std::uint32_t>> tris(n);
   Adjacency a;
   a.triangle_safe.assign(bg.triangles.size(), rate);
+  // Each inside triangle's safe slope and whether it is wide, then the
+  // entries of every point counted, placed (triangles in order) and each
+  // point's edges sorted by their other end, a repeated edge taking the
+  // stricter of its two triangles: compressed rows, no list per point.
+  std::vector<std::uint8_t> wide(bg.triangles.size(), 0);
+  std::vector<std::uint32_t> edge_first(n + 1, 0), tri_first(n + 1, 0);
   for (std::uint32_t t = 0; t < bg.triangles.size(); ++t) {
     if (bg.inside[t] == 0) continue;
     const auto& v = bg.triangles[t];
     const Point p[3] = {bg.points[v[0]], bg.points[v[1]], bg.points[v[2]]};
     double widest = 0.0;
     for (int i = 0; i < 3; ++i) widest = std::max(widest, angle_at(p[i], p[(i + 1) % 3], p[(i + 2) % 3]));
-    const double safe = rate * std::cos(0.5 * widest);
-    a.triangle_safe[t] = safe;
-    const bool wide = widest > radians(120.0);
-    for (int i = 0; i < 3; ++i) {
-      if (!wide) tris[v[i]].push_back(t);
-      for (const std::uint32_t u : {v[(i + 1) % 3], v[(i + 2) % 3]})
-        edges[v[i]].push_back({u, wide ? safe : rate, safe});
+    a.triangle_safe[t] = rate * std::cos(0.5 * widest);
+    wide[t] = widest > radians(120.0) ? 1 : 0;
+    for (const std::uint32_t u : v) {
+      edge_first[u + 1] += 2;
+      tri_first[u + 1] += wide[t] == 0 ? 1 : 0;
     }
   }
-  a.edge_start.push_back(0);
-  a.tri_start.push_back(0);
   for (std::size_t i = 0; i < n; ++i) {
-    auto& e = edges[i];
-    std::sort(e.begin(), e.end(), [](const Edge& x, const Edge& y) { return x.to < y.to; });
-    for (std::size_t k = 0; k < e.size(); ++k) {
-      if (k > 0 && e[k].to == e[k - 1].to) {  // the stricter of its two triangles
-        a.slope.back() = std::min(a.slope.back(), e[k].slope);
-        a.safe_slope.back() = std::min(a.safe_slope.back(), e[k].safe);
+    edge_first[i + 1] += edge_first[i];
+    tri_first[i + 1] += tri_first[i];
+  }
+  std::vector<Edge> edges(edge_first[n]);
+  a.tri.resize(tri_first[n]);
+  std::vector<std::uint32_t> edge_at(edge_first.begin(), edge_first.end() - 1);
+  std::vector<std::uint32_t> tri_at(tri_first.begin(), tri_first.end() - 1);
+  for (std::uint32_t t = 0; t < bg.triangles.size(); ++t) {
+    if (bg.inside[t] == 0) continue;
+    const auto& v = bg.triangles[t];
+    const double safe = a.triangle_safe[t];
+    for (int i = 0; i < 3; ++i) {
+      if (wide[t] == 0) a.tri[tri_at[v[i]]++] = t;
+      for (const std::uint32_t u : {v[(i + 1) % 3], v[(i + 2) % 3]})
+        edges[edge_at[v[i]]++] = {u, wide[t] != 0 ? safe : rate, safe};
+    }
+  }
+  a.tri_start = std::move(tri_first);
+  a.edge_start.reserve(n + 1);
+  a.edge_start.push_back(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto begin = edges.begin() + edge_first[i], end = edges.begin() + edge_first[i + 1];
+    std::sort(begin, end, [](const Edge& x, const Edge& y) { return x.to < y.to; });
+    for (auto e = begin; e != end; ++e) {
+      if (e != begin && e->to == (e - 1)->to) {  // the stricter of its two triangles
+        a.slope.back() = std::min(a.slope.back(), e->slope);
+        a.safe_slope.back() = std::min(a.safe_slope.back(), e->safe);
         continue;
       }
-      a.edge_to.push_back(e[k].to);
-      a.slope.push_back(e[k].slope);
-      a.safe_slope.push_back(e[k].safe);
+      a.edge_to.push_back(e->to);
+      a.slope.push_back(e->slope);
+      a.safe_slope.push_back(e->safe);
     }
     a.edge_start.push_back(static_cast<std::uint32_t>(a.edge_to.size()));
-    a.tri.insert(a.tri.end(), tris[i].begin(), tris[i].end());
-    a.tri_start.push_back(static_cast<std::uint32_t>(a.tri.size()));
   }
   return a;
 }
