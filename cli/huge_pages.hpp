@@ -3,10 +3,10 @@
 //
 // A large mesh touches every page of its arrays once: the subdomains'
 // refinement meshes, the merged mesh, the check's flags. With 4 KiB pages
-// the kernel takes a fault and zeroes a page each time, which on the
-// development machine cost about 8 us a page, a fifth to a third of a whole
-// `madd mesh` run at 1.5 M to 4 x 10^7 triangles, and on one thread where
-// one thread first touches an array (docs/performance.md, "Huge pages").
+// the kernel takes a fault and zeroes a page each time, about 8 us a page on
+// the development machine: system time was a quarter of a whole `madd mesh`
+// run at 1.5 M triangles and nearly half at 4 x 10^7 (docs/performance.md,
+// "Huge pages").
 // glibc can put its heaps on 2 MiB pages (the tunable glibc.malloc.hugetlb=1,
 // glibc 2.35 and later, where the kernel's transparent huge pages are set to
 // `madvise`), but reads its tunables only when a process starts. So the
