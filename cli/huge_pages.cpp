@@ -11,17 +11,23 @@
 namespace madd::cli {
 
 namespace {
-constexpr const char* tunable = "glibc.malloc.hugetlb";
+constexpr const char* huge_tunable = "glibc.malloc.hugetlb";
+constexpr const char* slack_tunable = "glibc.malloc.top_pad";
 }  // namespace
 
 std::optional<std::string> tunables_for_huge_pages(const char* tunables, const char* opt_out, const char* ld_preload,
                                                    const char* thp_enabled) {
   if (opt_out != nullptr && std::strcmp(opt_out, "0") == 0) return std::nullopt;
-  if (tunables != nullptr && std::strstr(tunables, tunable) != nullptr) return std::nullopt;
   if (ld_preload != nullptr && std::strstr(ld_preload, "vgpreload") != nullptr) return std::nullopt;
-  if (thp_enabled == nullptr || std::strstr(thp_enabled, "[madvise]") == nullptr) return std::nullopt;
-  std::string out = tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":" : std::string();
-  return out + tunable + "=1";
+  const auto named = [tunables](const char* name) {
+    return tunables != nullptr && std::strstr(tunables, name) != nullptr;
+  };
+  const bool advised = thp_enabled != nullptr && std::strstr(thp_enabled, "[madvise]") != nullptr;
+  std::string added;
+  if (advised && !named(huge_tunable)) added += std::string(huge_tunable) + "=1";
+  if (!named(slack_tunable)) added += (added.empty() ? "" : ":") + std::string(slack_tunable) + "=" + heap_slack;
+  if (added.empty()) return std::nullopt;
+  return tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":" + added : added;
 }
 
 void restart_with_huge_pages(char** argv) {

@@ -1,6 +1,6 @@
-// Malloc's heaps on transparent huge pages (cli/huge_pages.hpp): when the
-// programs start themselves again with glibc.malloc.hugetlb=1, and that a
-// mesh is the same byte for byte either way.
+// Malloc's heaps on transparent huge pages, with slack (cli/huge_pages.hpp):
+// when the programs start themselves again with glibc.malloc.hugetlb=1 and
+// glibc.malloc.top_pad, and that a mesh is the same byte for byte either way.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
@@ -16,33 +16,45 @@ using madd::cli::tunables_for_huge_pages;
 
 namespace {
 constexpr const char* advised = "always [madvise] never\n";
+
+const std::string slack = std::string("glibc.malloc.top_pad=") + madd::cli::heap_slack;
+const std::string both = "glibc.malloc.hugetlb=1:" + slack;
 }  // namespace
 
-TEST_CASE("huge pages: the tunable is added where the kernel takes advice and nobody chose otherwise") {
-  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, advised) == "glibc.malloc.hugetlb=1");
-  CHECK(tunables_for_huge_pages("", nullptr, nullptr, advised) == "glibc.malloc.hugetlb=1");
+TEST_CASE("huge pages: the tunables are added where the kernel takes advice and nobody chose otherwise") {
+  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, advised) == both);
+  CHECK(tunables_for_huge_pages("", nullptr, nullptr, advised) == both);
   // The user's own tunables are kept, in front.
   CHECK(tunables_for_huge_pages("glibc.malloc.arena_max=2", nullptr, nullptr, advised) ==
-        "glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1");
+        "glibc.malloc.arena_max=2:" + both);
   // Any opt-out value but "0" leaves it on; preloads other than valgrind's too.
-  CHECK(tunables_for_huge_pages(nullptr, "1", "/usr/lib/libfoo.so", advised) == "glibc.malloc.hugetlb=1");
+  CHECK(tunables_for_huge_pages(nullptr, "1", "/usr/lib/libfoo.so", advised) == both);
+  // Each one the user did not name: the slack with the user's huge pages, and the other way.
+  CHECK(tunables_for_huge_pages("glibc.malloc.hugetlb=0", nullptr, nullptr, advised) ==
+        "glibc.malloc.hugetlb=0:" + slack);
+  CHECK(tunables_for_huge_pages("glibc.malloc.top_pad=0", nullptr, nullptr, advised) ==
+        "glibc.malloc.top_pad=0:glibc.malloc.hugetlb=1");
+  // The kernel gives huge pages to all (always), to none (never), or says
+  // nothing: the heap's slack still pays.
+  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, "[always] madvise never\n") == slack);
+  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, "always madvise [never]\n") == slack);
+  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, nullptr) == slack);
+  CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, "") == slack);
 }
 
 TEST_CASE("huge pages: nothing to do, so no second start") {
-  // Already there: the user's choice (on or off), or this very restart.
-  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.hugetlb=1", nullptr, nullptr, advised));
-  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.hugetlb=0", nullptr, nullptr, advised));
-  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1", nullptr, nullptr, advised));
+  // Both there already: the user's choice (on or off), or this very restart.
+  CHECK_FALSE(tunables_for_huge_pages(both.c_str(), nullptr, nullptr, advised));
+  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.hugetlb=0:glibc.malloc.top_pad=0", nullptr, nullptr, advised));
+  CHECK_FALSE(tunables_for_huge_pages(("glibc.malloc.arena_max=2:" + both).c_str(), nullptr, nullptr, advised));
+  // The slack there, and no huge pages to be had.
+  CHECK_FALSE(tunables_for_huge_pages(slack.c_str(), nullptr, nullptr, "[always] madvise never\n"));
+  CHECK_FALSE(tunables_for_huge_pages(slack.c_str(), nullptr, nullptr, nullptr));
   // Asked not to.
   CHECK_FALSE(tunables_for_huge_pages(nullptr, "0", nullptr, advised));
   // Under valgrind an exec would run the program outside the tool.
   CHECK_FALSE(tunables_for_huge_pages(
       nullptr, nullptr, "/usr/libexec/valgrind/vgpreload_core-amd64-linux.so:/usr/libexec/x.so", advised));
-  // The kernel gives huge pages to all (always), to none (never), or says nothing.
-  CHECK_FALSE(tunables_for_huge_pages(nullptr, nullptr, nullptr, "[always] madvise never\n"));
-  CHECK_FALSE(tunables_for_huge_pages(nullptr, nullptr, nullptr, "always madvise [never]\n"));
-  CHECK_FALSE(tunables_for_huge_pages(nullptr, nullptr, nullptr, nullptr));
-  CHECK_FALSE(tunables_for_huge_pages(nullptr, nullptr, nullptr, ""));
 }
 
 #ifdef MADD_CLI_PATH
