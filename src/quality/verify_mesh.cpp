@@ -223,7 +223,7 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
     if (check_mesh_shape(mesh, domain, log, threads)) {
       const std::vector<std::uint8_t> ccw = check_orientation(mesh, log, threads);
       const detail::MeshEdges edges = detail::check_mesh_edges(mesh, ccw, log, threads);
-      const double sliver = detail::check_mesh_segments(mesh, domain, log);
+      const double sliver = detail::check_mesh_segments(mesh, domain, log, threads);
       detail::check_hanging_vertices(mesh, edges.boundary, log, threads);
       check_cover(edges.twice_area, domain, sliver, log);
       detail::check_interior_points(mesh, log);

@@ -37,8 +37,9 @@ MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& cc
 // decomposition segment covered by one chain of its mesh segments, each input
 // segment by one chain of boundary segments near it, the points' markers.
 // Returns the bound on twice the area between the boundary chains and the
-// input segments (for the cover check).
-double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log);
+// input segments (for the cover check). In parts on `threads` threads, the
+// same report and bound for any count.
+double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log, unsigned threads = 1);
 
 // No triangle vertex strictly inside an edge that only one triangle has
 // (the vertices in parts on `threads` threads).
