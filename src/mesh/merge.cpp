@@ -238,21 +238,23 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
     copy_piece(m, local[k], p, ids, k, at.first_triangle[k]);
     p = SubdomainMesh{};  // release as we go
   });
-  std::vector<std::vector<MeshSegment>> boundary(d.segments.size());
+  // The mesh segments in decomposition-segment order, each piece's in
+  // subdomain order (a stable counting sort: no list per piece).
   std::vector<bool> kept_separator(d.segments.size(), kept_or_all == nullptr);
+  std::vector<std::uint32_t> first_of(d.segments.size() + 1, 0);
   for (std::uint32_t k = 0; k < pieces.size(); ++k) {
     if (!kept[k]) continue;
     for (const auto& ring : d.subdomains[k].ring_segments)
       for (const std::uint32_t j : ring) kept_separator[j] = true;
-    for (const MeshSegment& s : segments_of[k]) boundary[s.piece].push_back(s);
+    for (const MeshSegment& s : segments_of[k]) ++first_of[s.piece + 1];
   }
-  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
-    if (d.is_separator(j)) {
-      if (kept_separator[j]) m.segments.push_back({d.segments[j].a, d.segments[j].b, 0, j});
-    } else {
-      m.segments.insert(m.segments.end(), boundary[j].begin(), boundary[j].end());
-    }
-  }
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    first_of[j + 1] += first_of[j] + (d.is_separator(j) && kept_separator[j] ? 1 : 0);
+  m.segments.resize(first_of.back());
+  for (std::uint32_t j = 0; j < d.segments.size(); ++j)
+    if (d.is_separator(j) && kept_separator[j]) m.segments[first_of[j]++] = {d.segments[j].a, d.segments[j].b, 0, j};
+  for (std::uint32_t k = 0; k < pieces.size(); ++k)
+    for (const MeshSegment& s : segments_of[k]) m.segments[first_of[s.piece]++] = s;
   link_across_separators(m, sides);
   return m;
 }
