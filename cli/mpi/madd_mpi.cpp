@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <future>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -36,6 +38,7 @@
 #include "../model_files.hpp"
 #include "../seconds.hpp"
 #include "../mesh_arguments.hpp"
+#include "funnel.hpp"
 #include "gather_parts.hpp"
 #include "madd/atomic_write.hpp"
 #include "madd/error.hpp"
@@ -108,7 +111,33 @@ std::string help_text() {
 
 struct World {
   int rank = 0, size = 1;
+  bool operator==(const World&) const = default;
 };
+
+// A whole number in [0, int's largest], all of `text`; nothing otherwise.
+std::optional<int> whole_number(const char* text) {
+  if (text == nullptr || *text == '\0') return std::nullopt;
+  int value = 0;
+  const char* end = text + std::strlen(text);
+  const auto [at, error] = std::from_chars(text, end, value);
+  if (error != std::errc() || at != end || value < 0) return std::nullopt;
+  return value;
+}
+
+// The rank and rank count the launcher put in this process's environment
+// (Open MPI's mpirun; MPICH's and Intel MPI's Hydra; MVAPICH2), read before
+// MPI starts; nothing when it put none (a run without a launcher, or another
+// launcher). A guess, checked against MPI's own once it has started (run()).
+std::optional<World> launcher_world() {
+  static constexpr std::pair<const char*, const char*> names[] = {{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"},
+                                                                  {"PMI_RANK", "PMI_SIZE"},
+                                                                  {"MV2_COMM_WORLD_RANK", "MV2_COMM_WORLD_SIZE"}};
+  for (const auto& [rank_name, size_name] : names) {
+    const std::optional<int> rank = whole_number(std::getenv(rank_name)), size = whole_number(std::getenv(size_name));
+    if (rank && size && *rank < *size) return World{*rank, *size};
+  }
+  return std::nullopt;
+}
 
 // SIGINT/SIGTERM (mpirun forwards them): nothing partial may stay on disk.
 volatile std::sig_atomic_t writing = 0;
@@ -174,6 +203,24 @@ ShareExchange mpi_exchange() {
   x.sum_of = [](const std::vector<std::uint64_t>& mine) {
     std::vector<std::uint64_t> sum(mine.size());
     MPI_Allreduce(mine.data(), sum.data(), static_cast<int>(mine.size()), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+    return sum;
+  };
+  return x;
+}
+
+// mpi_exchange()'s agreements asked for by the helper thread and made by
+// the main thread (funnel.hpp).
+ShareExchange funneled_exchange(Funnel& funnel) {
+  const ShareExchange direct = mpi_exchange();
+  ShareExchange x;
+  x.union_of = [&funnel, direct](const std::vector<std::uint32_t>& mine) {
+    std::vector<std::uint32_t> all;
+    funnel.call([&] { all = direct.union_of(mine); });
+    return all;
+  };
+  x.sum_of = [&funnel, direct](const std::vector<std::uint64_t>& mine) {
+    std::vector<std::uint64_t> sum;
+    funnel.call([&] { sum = direct.sum_of(mine); });
     return sum;
   };
   return x;
@@ -277,9 +324,10 @@ std::string list(const std::vector<double>& values) {
 }
 
 // The mesh report of `madd mesh`, with every rank's figures as the run's.
-std::string report_json(const World& world, const Figures& f, double seconds) {
+std::string report_json(const World& world, const Figures& f, bool early_start, double seconds) {
   const std::vector<RunFigure> run = {
       {"ranks", static_cast<double>(world.size)},
+      {"early_start", early_start ? 1.0 : 0.0},
       {"rank_imbalance", imbalance(f.mesh_seconds)},
       {"decompose_seconds", f.decompose_seconds},
       {"mesh_seconds", f.mesh_seconds},
@@ -365,25 +413,75 @@ Decomposed read_and_decompose(const cli::MeshArgs& args, std::chrono::steady_clo
   return out;
 }
 
-int run(const World& world, const cli::MeshArgs& args, Decomposed&& ready,
-        std::chrono::steady_clock::time_point start) {
+// This rank's share meshed on the helper thread while MPI starts (main()),
+// under the launcher's rank and rank count.
+struct EarlyShare {
+  std::optional<World> guess;  // launcher_world(): nothing, no early start
+  bool meshed = false;         // mesh_share ran to its end, or failed (failure)
+  Failure failure;
+  MeshPartRun run;
+};
+
+// On the helper thread: reads and decomposes, says so, then meshes the share
+// early when the launcher said which it is, its agreements through `funnel`.
+// Stops early (meshed false) when the main thread closes the funnel.
+void start_early(const cli::MeshArgs& args, std::chrono::steady_clock::time_point start, Decomposed& ready,
+                 std::promise<void>& decomposed, EarlyShare& early, Funnel& funnel) {
+  ready = read_and_decompose(args, start);
+  decomposed.set_value();
+  if (ready.failure.code == cli::exit_ok && early.guess) {
+    try {
+      early.run =
+          mesh_share(ready.decomposition, ready.domain, ready.options, static_cast<std::uint32_t>(early.guess->rank),
+                     static_cast<std::uint32_t>(early.guess->size), funneled_exchange(funnel));
+      early.meshed = true;
+    } catch (const Funnel::Closed&) {
+      early.run = {};
+    } catch (...) {
+      early.failure = cli::current_failure();
+      early.meshed = true;
+    }
+  }
+  funnel.finish();
+}
+
+int run(const World& world, const cli::MeshArgs& args, Decomposed& ready, EarlyShare& early, Funnel& funnel,
+        std::thread& helper, std::chrono::steady_clock::time_point start) {
   // Read and decomposed by every rank alike (before MPI started, main()).
-  if (const int code = agree(world, ready.failure); code != cli::exit_ok) return code;
+  if (const int code = agree(world, ready.failure); code != cli::exit_ok) {
+    funnel.close();
+    helper.join();
+    return code;
+  }
+  // The shares meshed early are the ones MPI gives only when every rank's
+  // launcher guessed right: then the main thread makes their agreements,
+  // else they stop at their first and every rank meshes its share now.
+  int right = early.guess && *early.guess == world ? 1 : 0, all_right = 0;
+  MPI_Allreduce(&right, &all_right, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
+  if (all_right == 1) funnel.serve();
+  else funnel.close();
+  helper.join();
   const MeshOptions options = std::move(ready.options);
   const Pslg domain = std::move(ready.domain);
   const Projection projection = ready.projection;
   const std::optional<DepthField> depth = std::move(ready.depth);
   const Decomposition decomposition = std::move(ready.decomposition);
   const double decompose_s = ready.seconds;
-  // Mesh this rank's share.
+  // Mesh this rank's share (unless done early).
   MeshReport report;
   MeshPart part;
-  abort_on(world, attempt([&] {
-             MeshPartRun run = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
-                                          static_cast<std::uint32_t>(world.size), mpi_exchange());
-             part = std::move(run.part);
-             report = std::move(run.report);
-           }));
+  if (early.meshed) {
+    abort_on(world, early.failure);
+    part = std::move(early.run.part);
+    report = std::move(early.run.report);
+  } else {
+    abort_on(world, attempt([&] {
+               MeshPartRun run = mesh_share(decomposition, domain, options, static_cast<std::uint32_t>(world.rank),
+                                            static_cast<std::uint32_t>(world.size), mpi_exchange());
+               part = std::move(run.part);
+               report = std::move(run.report);
+             }));
+  }
   // Format this rank's files (the report too, on rank 0), gather the
   // figures, then write every part or none.
   const auto format_start = std::chrono::steady_clock::now();
@@ -406,7 +504,8 @@ int run(const World& world, const cli::MeshArgs& args, Decomposed&& ready,
       });
   }
   const Figures f = gather_figures(world, part, options, report, decompose_s, seconds_since(format_start));
-  const std::string json = world.rank == 0 && args.line.report ? report_json(world, f, seconds_since(start)) : "";
+  const std::string json =
+      world.rank == 0 && args.line.report ? report_json(world, f, early.meshed, seconds_since(start)) : "";
   if (staged.code == cli::exit_ok && !json.empty() && !args.line.report_file.empty())
     staged = attempt([&] { outputs.add_file(args.line.report_file, json); });
   if (const int written = write_everywhere(world, outputs, staged); written != cli::exit_ok) return written;
@@ -462,23 +561,33 @@ int main(int argc, char** argv) {
   using namespace madd::mpi;
   const auto start = std::chrono::steady_clock::now();
   const CommandLine line = read_command_line(argc, argv);
-  // Reading and decomposing need no MPI, and every rank does them alike: they
-  // run while MPI_Init_thread starts the job, which mostly waits on the
+  // Reading, decomposing and meshing this rank's share need no MPI until the
+  // first agreement between rounds, and MPI_Init_thread mostly waits on the
   // launcher (0.4 s of wall time for 0.06 s of CPU with Open MPI 4.1 here;
-  // docs/mpi.md, "Start-up"). Only this thread calls MPI.
+  // docs/mpi.md, "Start-up"): a helper thread starts them meanwhile, under
+  // the rank the launcher named (checked once MPI has started, run()). Only
+  // this thread calls MPI.
   Decomposed ready;
-  std::thread early;
+  EarlyShare early;
+  early.guess = launcher_world();
+  Funnel funnel;
+  std::promise<void> decomposed;
+  std::thread helper;
   if (line.outcome == CommandLine::Outcome::run)
-    early = std::thread([&] { ready = read_and_decompose(line.args, start); });
+    helper = std::thread([&] { start_early(line.args, start, ready, decomposed, early, funnel); });
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-  if (early.joinable()) early.join();
   World world;
   MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
   MPI_Comm_size(MPI_COMM_WORLD, &world.size);
   madd::cli::on_interrupts(on_interrupt);
-  const int code =
-      line.outcome == CommandLine::Outcome::run ? run(world, line.args, std::move(ready), start) : say(world, line);
+  int code = 0;
+  if (line.outcome == CommandLine::Outcome::run) {
+    decomposed.get_future().wait();
+    code = run(world, line.args, ready, early, funnel, helper, start);
+  } else {
+    code = say(world, line);
+  }
   MPI_Finalize();
   return code;
 }
