@@ -302,6 +302,51 @@ TEST_CASE("narrow gap: a channel far narrower than the bound costs what refineme
   }
 }
 
+TEST_CASE("pinch: two islands all but touching at a corner cost a cluster the estimate counts") {
+  // A 10 x 10 basin with two square islands whose corners are 0.0005 apart
+  // at (5, 5), diagonally (the banks open at 90 degrees: no narrow gap sees
+  // them), meshed at sides of about 0.6: refinement grades from the pinch
+  // outwards, a quarter of the mesh, which the area and the boundary layer
+  // miss (the estimate without the pinch term: 0.75 of the count).
+  madd::Pslg d;
+  const double e = 0.00025;
+  d.points = {{0, 0},         {10, 0},    {10, 10},       {0, 10},      // the basin
+              {3, 3},         {3, 5 - e}, {5 - e, 5 - e}, {5 - e, 3},   // island south-west, clockwise
+              {5 + e, 5 + e}, {5 + e, 7}, {7, 7},         {7, 5 + e}};  // island north-east, clockwise
+  for (std::uint32_t i = 0; i < 4; ++i) d.segments.push_back({i, (i + 1) % 4, 1});
+  for (std::uint32_t i = 0; i < 4; ++i) d.segments.push_back({4 + i, 4 + (i + 1) % 4, 2});
+  for (std::uint32_t i = 0; i < 4; ++i) d.segments.push_back({8 + i, 8 + (i + 1) % 4, 3});
+  d.holes = {{4, 4}, {6, 6}};
+  const madd::detail::NarrowGaps gaps(d);
+  CHECK(gaps.area_at({5 - 2 * e, 5}, 0.16) == 0.16);  // no chord across: not a gap
+  madd::MeshOptions o;
+  o.decomposition.subdomains = 1;
+  o.size.min_triangle_angle_deg = 30;
+  o.size.max_triangle_area = 0.16;
+  const madd::MeshRun run = madd::mesh_with_report(d, o);
+  const madd::Mesh& m = run.mesh;
+  // The triangles within 0.6 of the pinch, counted from the outside, against
+  // what their area would hold at the bound's mean triangle: the cluster.
+  std::size_t near = 0;
+  double near_area = 0;
+  for (const auto& t : m.triangles) {
+    const madd::Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
+    const madd::Point g{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+    if (std::hypot(g.x - 5, g.y - 5) > 0.6) continue;
+    ++near;
+    near_area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+  }
+  const double cluster = static_cast<double>(near) - near_area / (0.645 * 0.16);
+  CHECK(cluster > 200);
+  // The estimate counts it: within 5% of the whole mesh, of which the
+  // cluster alone is more than a fifth.
+  const auto total = static_cast<double>(m.triangles.size());
+  CHECK(cluster > 0.2 * total);
+  const double predicted = run.report.expected_triangles.at(0);
+  CHECK(predicted > 0.95 * total);
+  CHECK(predicted < 1.05 * total);
+}
+
 TEST_CASE("narrow gap: a needle of water under 3 degrees is a gap, a wider wedge is not") {
   // A basin with two spikes of water to the east: a needle 1.15 degrees wide
   // and a wedge of 33 degrees, each 10 long.

@@ -25,9 +25,11 @@ struct DomainWork {
   Triangulation triangulation;  // the domain's constrained Delaunay triangulation
   NarrowGaps gaps;
   // Under one bound everywhere (whose interior is counted by area): the
-  // triangles the narrow gaps add, one sample per triangle of the
-  // triangulation where a gap binds at its centroid. Empty otherwise.
-  std::vector<ValuedPoint> gap_excess;
+  // triangles the estimate's terms do not count, as samples (each in
+  // triangles, a hair inside the domain): the narrow gaps' excess, one
+  // sample per triangle of the triangulation where a gap binds at its
+  // centroid, and the pinches (work.cpp, pinch_excess). Empty otherwise.
+  std::vector<ValuedPoint> excess;
 };
 
 // Per subdomain of the discretised decomposition `d` of work.domain: the
