@@ -427,7 +427,11 @@ struct EarlyShare {
 // Stops early (meshed false) when the main thread closes the funnel.
 void start_early(const cli::MeshArgs& args, std::chrono::steady_clock::time_point start, Decomposed& ready,
                  std::promise<void>& decomposed, EarlyShare& early, Funnel& funnel) {
-  ready = read_and_decompose(args, start);
+  try {
+    ready = read_and_decompose(args, start);
+  } catch (...) {  // (it reports its failures itself; the main thread must hear back whatever happens)
+    ready.failure = cli::current_failure();
+  }
   decomposed.set_value();
   if (ready.failure.code == cli::exit_ok && early.guess) {
     try {

@@ -284,12 +284,16 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
     along[s.a].push_back(s.b);
     along[s.b].push_back(s.a);
   }
+  for (std::vector<std::uint32_t>& next : along) std::sort(next.begin(), next.end());
+  const auto joins = [&](std::uint32_t u, std::uint32_t w) {
+    return std::binary_search(along[u].begin(), along[u].end(), w);
+  };
+  // From the end with fewer segments (a vertex where thousands of interior
+  // segments meet must not make each test a pass over them).
   const auto within_two = [&](std::uint32_t v, std::uint32_t w) {
-    for (const std::uint32_t u : along[v]) {
-      if (u == w) return true;
-      for (const std::uint32_t x : along[u])
-        if (x == w) return true;
-    }
+    if (along[w].size() < along[v].size()) std::swap(v, w);
+    for (const std::uint32_t u : along[v])
+      if (u == w || joins(u, w)) return true;
     return false;
   };
   std::vector<double> gap(n, std::numeric_limits<double>::infinity());
