@@ -13,6 +13,7 @@ namespace madd::cli {
 namespace {
 constexpr const char* huge_tunable = "glibc.malloc.hugetlb";
 constexpr const char* slack_tunable = "glibc.malloc.top_pad";
+constexpr const char* mmap_tunable = "glibc.malloc.mmap_threshold";
 }  // namespace
 
 std::optional<std::string> tunables_for_huge_pages(const char* tunables, const char* opt_out, const char* ld_preload,
@@ -26,6 +27,7 @@ std::optional<std::string> tunables_for_huge_pages(const char* tunables, const c
   std::string added;
   if (advised && !named(huge_tunable)) added += std::string(huge_tunable) + "=1";
   if (!named(slack_tunable)) added += (added.empty() ? "" : ":") + std::string(slack_tunable) + "=" + heap_slack;
+  if (!named(mmap_tunable)) added += (added.empty() ? "" : ":") + std::string(mmap_tunable) + "=" + mmap_threshold;
   if (added.empty()) return std::nullopt;
   return tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":" + added : added;
 }

@@ -15,7 +15,12 @@
 // takes fresh, zeroed pages the next time, unless the heap keeps some slack
 // (glibc.malloc.top_pad, `heap_slack` below): 64 MiB of it cut a
 // 1.5 M-triangle run by a sixth on two threads and a 10^7 one by a tenth
-// ("Huge pages" again). glibc reads its tunables only when a process starts,
+// ("Huge pages" again). Setting it stops glibc from raising its mmap
+// threshold as large blocks are freed (from 128 KiB up to 32 MiB), so every
+// block above 128 KiB would be a fresh mapping, zeroed: each subdomain's
+// arrays at 2 x 10^8 triangles (refinement 76.7 -> 90.8 s); so the threshold
+// is set to that ceiling too (`mmap_threshold` below; 2 x 10^8 triangles in
+// 111 s instead of 142). glibc reads its tunables only when a process starts,
 // so the programs' main() calls restart_with_huge_pages() first: it sets
 // them and executes the same program again, once, with the same arguments.
 #include <optional>
@@ -25,16 +30,19 @@ namespace madd::cli {
 
 // The heap's slack, glibc.malloc.top_pad's value: 64 MiB.
 inline constexpr const char* heap_slack = "67108864";
+// Blocks from this size on are mappings of their own (glibc.malloc.mmap_threshold): 32 MiB.
+inline constexpr const char* mmap_threshold = "33554432";
 
 // What GLIBC_TUNABLES should become (the caller's tunables, if any, then
-// glibc.malloc.hugetlb=1 and glibc.malloc.top_pad=heap_slack, each unless
-// the tunables name it already: the user's choice, or this program started
-// again), or nothing to do: when neither is to be added, when `opt_out` (the
+// glibc.malloc.hugetlb=1, glibc.malloc.top_pad=heap_slack and
+// glibc.malloc.mmap_threshold=mmap_threshold, each unless the tunables name
+// it already: the user's choice, or this program started again), or nothing
+// to do: when none is to be added, when `opt_out` (the
 // variable MADD_HUGE_PAGES) is "0", or when `ld_preload` names a tool that
 // wraps the program (valgrind's preloads: an exec would leave the tool). The
 // huge pages only where `thp_enabled` (the text of
 // /sys/kernel/mm/transparent_hugepage/enabled, null when unreadable) selects
-// [madvise] ([always] needs no advice, [never] takes none); the slack always.
+// [madvise] ([always] needs no advice, [never] takes none); the others always.
 std::optional<std::string> tunables_for_huge_pages(const char* tunables, const char* opt_out, const char* ld_preload,
                                                    const char* thp_enabled);
 

@@ -17,7 +17,9 @@ using madd::cli::tunables_for_huge_pages;
 namespace {
 constexpr const char* advised = "always [madvise] never\n";
 
-const std::string slack = std::string("glibc.malloc.top_pad=") + madd::cli::heap_slack;
+// What is added besides the huge pages: the heap's slack and the mmap threshold.
+const std::string slack = std::string("glibc.malloc.top_pad=") + madd::cli::heap_slack +
+                          ":glibc.malloc.mmap_threshold=" + madd::cli::mmap_threshold;
 const std::string both = "glibc.malloc.hugetlb=1:" + slack;
 }  // namespace
 
@@ -33,7 +35,11 @@ TEST_CASE("huge pages: the tunables are added where the kernel takes advice and 
   CHECK(tunables_for_huge_pages("glibc.malloc.hugetlb=0", nullptr, nullptr, advised) ==
         "glibc.malloc.hugetlb=0:" + slack);
   CHECK(tunables_for_huge_pages("glibc.malloc.top_pad=0", nullptr, nullptr, advised) ==
-        "glibc.malloc.top_pad=0:glibc.malloc.hugetlb=1");
+        std::string("glibc.malloc.top_pad=0:glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=") +
+            madd::cli::mmap_threshold);
+  CHECK(tunables_for_huge_pages("glibc.malloc.mmap_threshold=1048576", nullptr, nullptr, advised) ==
+        std::string("glibc.malloc.mmap_threshold=1048576:glibc.malloc.hugetlb=1:glibc.malloc.top_pad=") +
+            madd::cli::heap_slack);
   // The kernel gives huge pages to all (always), to none (never), or says
   // nothing: the heap's slack still pays.
   CHECK(tunables_for_huge_pages(nullptr, nullptr, nullptr, "[always] madvise never\n") == slack);
@@ -45,7 +51,8 @@ TEST_CASE("huge pages: the tunables are added where the kernel takes advice and 
 TEST_CASE("huge pages: nothing to do, so no second start") {
   // Both there already: the user's choice (on or off), or this very restart.
   CHECK_FALSE(tunables_for_huge_pages(both.c_str(), nullptr, nullptr, advised));
-  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.hugetlb=0:glibc.malloc.top_pad=0", nullptr, nullptr, advised));
+  CHECK_FALSE(tunables_for_huge_pages("glibc.malloc.hugetlb=0:glibc.malloc.top_pad=0:glibc.malloc.mmap_threshold=0",
+                                      nullptr, nullptr, advised));
   CHECK_FALSE(tunables_for_huge_pages(("glibc.malloc.arena_max=2:" + both).c_str(), nullptr, nullptr, advised));
   // The slack there, and no huge pages to be had.
   CHECK_FALSE(tunables_for_huge_pages(slack.c_str(), nullptr, nullptr, "[always] madvise never\n"));
