@@ -22,10 +22,10 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <future>
 #include <string>
 #include <string_view>
 #include <thread>
