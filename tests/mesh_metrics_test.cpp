@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,45 @@ TEST_CASE("mesh_metrics: the same figures on 1, 2 and 3 threads") {
   REQUIRE(mesh.triangles.size() > 2 * 16384);
   const madd::MeshMetrics one = madd::mesh_metrics(mesh, o.size, 1);
   for (const unsigned threads : {2u, 3u}) CHECK(madd::mesh_metrics(mesh, o.size, threads) == one);
+}
+
+TEST_CASE("mesh_metrics: the median and the bins of random triangles, many of them alike, by brute force") {
+  // The median is selected from the angles of one fine bin (1/1024 degree):
+  // random triangles and, as many, near-copies of one right isosceles
+  // triangle whose smallest angles differ by less than a bin (some exactly
+  // alike), so that the median falls among them; odd and even counts, 1, 2
+  // and 3 threads.
+  std::mt19937_64 random(20261207);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{30001},
+                                  std::size_t{30002}}) {
+    madd::Mesh mesh;
+    mesh.min_triangle_angle_deg = 20;
+    for (std::size_t t = 0; t < count; ++t) {
+      const auto first = static_cast<std::uint32_t>(mesh.points.size());
+      if (t % 2 == 0) {
+        const double lift = 1e-6 * static_cast<double>(random() % 1000);
+        mesh.points.insert(mesh.points.end(), {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0 + lift}});
+      } else {
+        for (int i = 0; i < 3; ++i) mesh.points.push_back({coordinate(random), coordinate(random)});
+      }
+      // Counter-clockwise or not does not matter to an angle.
+      mesh.triangles.push_back({first, first + 1, first + 2});
+    }
+    mesh.subdomain_first_triangle = {0, static_cast<std::uint32_t>(count)};
+    std::vector<double> angles = smallest_angles(mesh);
+    std::sort(angles.begin(), angles.end());
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      CAPTURE(count);
+      CAPTURE(threads);
+      const madd::MeshMetrics m = madd::mesh_metrics(mesh, {}, threads);
+      CHECK(m.median_smallest_angle_deg == doctest::Approx(angles[count / 2]).epsilon(1e-12));
+      CHECK(m.smallest_angle_deg == doctest::Approx(angles.front()).epsilon(1e-12));
+      const auto below = static_cast<std::uint64_t>(
+          std::lower_bound(angles.begin(), angles.end(), 20.0 - 1e-6) - angles.begin());
+      CHECK(m.below_bound == below);
+    }
+  }
 }
 
 TEST_CASE("mesh_metrics of an empty mesh: no triangle, no ratio") {

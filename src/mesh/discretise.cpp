@@ -11,6 +11,7 @@
 // refer to the same points: the meshes of the two sides meet at identical
 // vertices by construction.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -58,12 +59,20 @@ double local_target(Point p, const Segment& s, const AreaBound& size, const Feat
 // boundary pieces, its first pieces are short too, and the triangle between
 // them has no reason to be skinny (docs/mesh.md, "Decoupling").
 std::vector<double> vertex_targets(const Decomposition& d, const AreaBound& size, const FeatureDistance& features,
-                                   const std::vector<double>& regional) {
+                                   const std::vector<double>& regional, unsigned threads) {
+  // Each segment's two end targets on the threads (each a search for the
+  // nearest feature), then the least at each vertex in segment order.
+  std::vector<std::array<double, 2>> ends(d.segments.size());
+  for_each_on_threads(d.segments.size(), threads, [&](std::size_t j) {
+    const Segment& s = d.segments[j];
+    ends[j] = {local_target(d.points[s.a], s, size, features, regional[j]),
+               local_target(d.points[s.b], s, size, features, regional[j])};
+  });
   std::vector<double> out(d.points.size(), std::numeric_limits<double>::infinity());
   for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
     const Segment& s = d.segments[j];
-    out[s.a] = std::min(out[s.a], local_target(d.points[s.a], s, size, features, regional[j]));
-    out[s.b] = std::min(out[s.b], local_target(d.points[s.b], s, size, features, regional[j]));
+    out[s.a] = std::min(out[s.a], ends[j][0]);
+    out[s.b] = std::min(out[s.b], ends[j][1]);
   }
   return out;
 }
@@ -159,7 +168,7 @@ Decomposition detail::discretise(const Decomposition& decomposition, const AreaB
   // Regions with an area bound bound the segments beside them too.
   const std::vector<double> regional =
       view != nullptr ? view->segment_area : detail::region_view(decomposition, threads).segment_area;
-  const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features, regional);
+  const std::vector<double> at_vertex = detail::vertex_targets(decomposition, field, features, regional, threads);
   // Boundary pieces our refinement may split need only resolve the
   // separators near them (the decoupling); elsewhere it splits them itself.
   std::vector<Segment> separators;
