@@ -157,4 +157,55 @@ TEST_CASE("a piece that throws writes no file of the set and leaves no temporary
   }
 }
 
+TEST_CASE("files made in pieces one after another share one pipeline: each its own pieces, all or nothing") {
+  // The next file's pieces are made while the last of the one before are
+  // written: every file must still get exactly its own pieces, in order;
+  // and a failure in a later file (a piece that throws, a directory in the
+  // way) must leave the earlier, fully written ones out of place too.
+  const Scratch s;
+  const auto piece_of = [](char tag) {
+    return [tag](std::size_t i) { return std::string(1 + (i * 37) % 3000, tag) + std::to_string(i) + "\n"; };
+  };
+  const std::size_t counts[] = {5, 0, 1, 64, 3};
+  const auto name = [&](std::size_t f) {  // appended: GCC 12 warns (-Wrestrict) on "f" + to_string
+    std::string n = "f";
+    n += std::to_string(f);
+    return s.path(n);
+  };
+  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+    CAPTURE(threads);
+    madd::OutputSet set;
+    for (std::size_t f = 0; f < 5; ++f)
+      set.add_file(name(f), madd::FilePieces{counts[f], piece_of(char('a' + f)), threads});
+    set.write();
+    for (std::size_t f = 0; f < 5; ++f) {
+      std::string want;
+      for (std::size_t i = 0; i < counts[f]; ++i) want += piece_of(char('a' + f))(i);
+      CHECK(slurp(name(f)) == want);
+    }
+    CHECK(entries(s.dir) == 5);
+    fs::remove_all(s.dir);
+    fs::create_directories(s.dir);
+  }
+  const auto throwing = [](std::size_t i) -> std::string {
+    if (i == 2) throw madd::OutputError("piece 2 of the second file failed");
+    return std::string(4000, 'y');
+  };
+  for (const unsigned threads : {1u, 3u}) {
+    CAPTURE(threads);
+    madd::OutputSet set;
+    set.add_file(s.path("first"), madd::FilePieces{40, piece_of('a'), threads});
+    set.add_file(s.path("second"), madd::FilePieces{10, throwing, threads});
+    CHECK_THROWS_WITH_AS(set.write(), doctest::Contains("piece 2 of the second file failed"), madd::OutputError);
+    CHECK(entries(s.dir) == 0);
+    fs::create_directories(s.dir / "second");  // a directory in the way of the second file
+    madd::OutputSet blocked;
+    blocked.add_file(s.path("first"), madd::FilePieces{40, piece_of('a'), threads});
+    blocked.add_file(s.path("second"), madd::FilePieces{10, piece_of('b'), threads});
+    CHECK_THROWS_WITH_AS(blocked.write(), doctest::Contains("is a directory"), madd::OutputError);
+    CHECK(entries(s.dir) == 1);  // the directory alone
+    fs::remove_all(s.dir / "second");
+  }
+}
+
 }  // TEST_SUITE("atomic write")

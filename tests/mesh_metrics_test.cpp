@@ -100,8 +100,8 @@ TEST_CASE("mesh_metrics: the median and the bins of random triangles, many of th
   // and 3 threads.
   std::mt19937_64 random(20261207);
   std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
-  for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{30001},
-                                  std::size_t{30002}}) {
+  for (const std::size_t count :
+       {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{30001}, std::size_t{30002}}) {
     madd::Mesh mesh;
     mesh.min_triangle_angle_deg = 20;
     for (std::size_t t = 0; t < count; ++t) {
@@ -124,8 +124,8 @@ TEST_CASE("mesh_metrics: the median and the bins of random triangles, many of th
       const madd::MeshMetrics m = madd::mesh_metrics(mesh, {}, threads);
       CHECK(m.median_smallest_angle_deg == doctest::Approx(angles[count / 2]).epsilon(1e-12));
       CHECK(m.smallest_angle_deg == doctest::Approx(angles.front()).epsilon(1e-12));
-      const auto below = static_cast<std::uint64_t>(
-          std::lower_bound(angles.begin(), angles.end(), 20.0 - 1e-6) - angles.begin());
+      const auto below =
+          static_cast<std::uint64_t>(std::lower_bound(angles.begin(), angles.end(), 20.0 - 1e-6) - angles.begin());
       CHECK(m.below_bound == below);
     }
   }

@@ -3,12 +3,15 @@
 // and, while the next result is not ready, computes tasks itself.
 #include "decompose/scheduler.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "kernel/threads.hpp"
 
 namespace madd::detail {
 
@@ -107,9 +110,12 @@ private:
 void run_round(const Subdivision& snapshot, std::span<const RoundTask> tasks, const SplitOptions& options,
                unsigned threads, const ResourceGuard& guard, const CommitFn& commit, const FailFn& failed) {
   Round round(snapshot, tasks, options, guard);
-  std::vector<std::jthread> helpers;  // joined before `round` is destroyed
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back([&round] { round.work(); });
-  round.commit_all(commit, failed);
+  // The calling thread commits in order while the others split; all have
+  // returned before `round` is destroyed.
+  run_on_threads(std::max(threads, 1u), [&](unsigned id) {
+    if (id == 0) round.commit_all(commit, failed);
+    else round.work();
+  });
 }
 
 }  // namespace madd::detail

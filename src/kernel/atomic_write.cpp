@@ -9,12 +9,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <optional>
 #include <system_error>
 #include <thread>
+#include <vector>
 
 #include "kernel/threads.hpp"
 #include "madd/error.hpp"
@@ -81,53 +83,88 @@ void write_temporary(const std::string& path, const std::string& tmp, std::strin
       path, tmp, [&](std::FILE* f) { return std::fwrite(contents.data(), 1, contents.size(), f) == contents.size(); });
 }
 
-// The pieces' writer: make() runs on the workers, the calling thread writes
-// piece after piece in order, and the workers stay at most `window` pieces
-// ahead of it (the memory held is a few pieces, not the file).
+// The pieces' writer for one or more files in a row: make() runs on the
+// workers, the calling thread stages the files one after another and
+// writes each file's pieces in order into it, and the workers stay at most
+// `window` pieces ahead of it across the files (the memory held is a few
+// pieces, not a file), so the next file's first pieces are made while the
+// last of the one before are written: with one writer per file the
+// formatters idled at every file's end (docs/performance.md, "Parked
+// threads").
 class PieceWriter {
 public:
-  PieceWriter(const FilePieces& pieces, std::FILE* f) : pieces_(pieces), f_(f), made_(pieces.count) {}
+  // Fills one file: writes its pieces as they are made; false when a write failed.
+  using Fill = std::function<bool(std::FILE*)>;
+  // Stages file f (creates it and calls fill); throws to stop.
+  using Stage = std::function<void(std::size_t f, const Fill& fill)>;
 
-  // True when every piece was written; throws what make() threw.
-  bool run() {
-    const unsigned workers = detail::thread_count(pieces_.threads, pieces_.count);
-    window_ = 4 * std::size_t{workers};
-    std::vector<std::thread> pool;
-    for (unsigned w = 0; w < workers && pieces_.count > 0; ++w) pool.emplace_back([this] { work(); });
-    bool written = true;
-    for (std::size_t i = 0; i < pieces_.count && written; ++i) {
-      std::unique_lock lock(mutex_);
-      changed_.wait(lock, [&] { return made_[i].has_value() || error_; });
-      if (error_) break;
-      const std::string piece = std::move(*made_[i]);
-      made_[i].reset();
-      written_ = i + 1;
-      lock.unlock();
-      changed_.notify_all();
-      written = std::fwrite(piece.data(), 1, piece.size(), f_) == piece.size() && !interrupt_requested.load();
+  explicit PieceWriter(std::vector<const FilePieces*> files) : files_(std::move(files)) {
+    first_.push_back(0);
+    unsigned threads = 1;
+    for (const FilePieces* f : files_) {
+      first_.push_back(first_.back() + f->count);
+      threads = std::max(threads, f->threads);
     }
+    made_.resize(first_.back());
+    workers_ = detail::thread_count(threads, first_.back());
+    window_ = 4 * std::size_t{workers_};
+  }
+
+  // stage(f, fill) for every file in order on the calling thread, the
+  // pieces made meanwhile on the workers; rethrows what stage or make threw.
+  void run(const Stage& stage) {
+    detail::run_on_threads(first_.back() > 0 ? workers_ + 1 : 1, [&](unsigned id) {
+      if (id == 0) stage_all(stage);
+      else work();
+    });
+  }
+
+private:
+  void stage_all(const Stage& stage) {
+    try {
+      for (std::size_t f = 0; f < files_.size(); ++f) stage(f, [&](std::FILE* out) { return fill(f, out); });
+    } catch (...) {
+      stop();
+      throw;
+    }
+    stop();
+  }
+
+  void stop() {
     {
       const std::lock_guard lock(mutex_);
       stop_ = true;
     }
     changed_.notify_all();
-    for (std::thread& t : pool) t.join();
-    if (error_) std::rethrow_exception(error_);
-    return written;
   }
 
-private:
+  bool fill(std::size_t f, std::FILE* out) {
+    for (std::size_t i = first_[f]; i < first_[f + 1]; ++i) {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return made_[i].has_value() || error_; });
+      if (error_) std::rethrow_exception(error_);
+      const std::string piece = std::move(*made_[i]);
+      made_[i].reset();
+      written_ = i + 1;
+      lock.unlock();
+      changed_.notify_all();
+      if (std::fwrite(piece.data(), 1, piece.size(), out) != piece.size() || interrupt_requested.load()) return false;
+    }
+    return true;
+  }
+
   void work() {
     for (;;) {
       std::size_t i = 0;
       {
         std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return stop_ || error_ || next_ >= pieces_.count || next_ < written_ + window_; });
-        if (stop_ || error_ || next_ >= pieces_.count) return;
+        changed_.wait(lock, [&] { return stop_ || error_ || next_ >= made_.size() || next_ < written_ + window_; });
+        if (stop_ || error_ || next_ >= made_.size()) return;
         i = next_++;
       }
       try {
-        std::string piece = pieces_.make(i);
+        const auto f = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), i) - first_.begin()) - 1;
+        std::string piece = files_[f]->make(i - first_[f]);
         const std::lock_guard lock(mutex_);
         made_[i] = std::move(piece);
       } catch (...) {
@@ -138,8 +175,9 @@ private:
     }
   }
 
-  const FilePieces& pieces_;
-  std::FILE* f_;
+  std::vector<const FilePieces*> files_;
+  std::vector<std::size_t> first_;  // per file, its first piece's number in the run; then the total
+  unsigned workers_ = 1;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<std::optional<std::string>> made_;
@@ -147,11 +185,6 @@ private:
   bool stop_ = false;
   std::exception_ptr error_;
 };
-
-// The same, the contents made in pieces while writing.
-void write_temporary(const std::string& path, const std::string& tmp, const FilePieces& pieces) {
-  write_temporary_with(path, tmp, [&](std::FILE* f) { return PieceWriter(pieces, f).run(); });
-}
 
 std::string temporary_name(const std::string& path, std::size_t serial) {
   return path + ".tmp." + std::to_string(static_cast<long long>(::getpid())) + "." + std::to_string(serial);
@@ -273,16 +306,29 @@ void OutputSet::write(const std::function<bool(bool staged_here)>& all_staged) {
   std::string current;  // the output being staged, for messages
   std::string failure;  // why staging failed here, when it did
   try {
-    for (std::size_t k = 0; k < files_.size(); ++k) {
+    // File k staged with fill (its contents, or its pieces as they are made).
+    const auto stage = [&](std::size_t k, const PieceWriter::Fill& fill) {
       current = files_[k].path;
       // Found now, not when moving into place: the others must not be moved either.
       if (fs::is_directory(files_[k].path)) throw OutputError(files_[k].path + ": is a directory");
       Staged s;
       s.target = files_[k].path;
       s.staged = temporary_name(files_[k].path, k);
-      if (files_[k].pieces.make) write_temporary(files_[k].path, s.staged.string(), files_[k].pieces);
-      else write_temporary(files_[k].path, s.staged.string(), files_[k].contents);
+      write_temporary_with(files_[k].path, s.staged.string(), fill);
       staged.push_back(std::move(s));
+    };
+    for (std::size_t k = 0; k < files_.size();) {
+      if (!files_[k].pieces.make) {
+        const std::string& contents = files_[k].contents;
+        stage(k, [&](std::FILE* f) { return std::fwrite(contents.data(), 1, contents.size(), f) == contents.size(); });
+        ++k;
+        continue;
+      }
+      // Files made in pieces one after another: one pipeline for all of them.
+      std::vector<const FilePieces*> run;
+      const std::size_t first = k;
+      for (; k < files_.size() && files_[k].pieces.make; ++k) run.push_back(&files_[k].pieces);
+      PieceWriter(std::move(run)).run([&](std::size_t f, const PieceWriter::Fill& fill) { stage(first + f, fill); });
     }
     for (const Directory& d : directories_) {
       current = d.path;

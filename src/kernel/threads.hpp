@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -19,6 +20,19 @@ inline unsigned thread_count(unsigned asked, std::size_t tasks) {
   const unsigned n = asked != 0 ? asked : std::max(1u, std::thread::hardware_concurrency());
   return static_cast<unsigned>(std::min<std::size_t>(n, std::max<std::size_t>(tasks, 1)));
 }
+
+// Runs body(id) for every id in [0, n): id 0 on the calling thread, the
+// others on helper threads the process keeps parked between calls (made on
+// first need, never more than the largest n asked for less one), and returns
+// once all have returned; the first exception any body threw is rethrown
+// then. Threads made afresh for every parallel step started, as often as
+// not, on the core of the thread that made them, and shared it for the
+// first few milliseconds while the other core idled (1-4 ms lost a step,
+// some twenty steps a run: docs/performance.md, "Parked threads"); parked
+// ones wake where they slept. A call made while the parked threads serve
+// another (a nested step, or a second caller) gets threads of its own, as
+// before.
+void run_on_threads(unsigned n, const std::function<void(unsigned id)>& body);
 
 // Runs body(i) for every i in [0, count) on thread_count(threads, count)
 // threads, the calling thread one of them, tasks taken in order as threads
@@ -42,10 +56,8 @@ void for_each_on_threads(std::size_t count, unsigned threads, const Body& body) 
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  if (n == 1) worker();
+  else run_on_threads(n, [&](unsigned) { worker(); });
   if (error) std::rethrow_exception(error);
 }
 

@@ -121,10 +121,7 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned id = 1; id < threads; ++id) pool.emplace_back(worker, id);
-  worker(0);
-  for (std::thread& t : pool) t.join();
+  detail::run_on_threads(threads, worker);
   if (error) std::rethrow_exception(error);
   if (options.progress) options.progress(n, n);
 }

@@ -226,9 +226,9 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
       const double sliver = detail::check_mesh_segments(mesh, domain, log, threads);
       detail::check_hanging_vertices(mesh, edges.boundary, log, threads);
       check_cover(edges.twice_area, domain, sliver, log);
-      detail::check_interior_points(mesh, log);
+      detail::check_interior_points(mesh, log, threads);
       const std::vector<std::uint32_t> region = detail::mesh_regions(mesh, threads);
-      if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log);
+      if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log, threads);
       detail::check_mesh_size(mesh, bound, region, log, threads);
       detail::check_mesh_angles(mesh, log, threads);
     }

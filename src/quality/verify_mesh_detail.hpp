@@ -47,8 +47,8 @@ void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& bounda
                             unsigned threads = 1);
 
 // Every isolated input vertex (Subdomain::interior_points) a vertex of a
-// triangle of its subdomain.
-void check_interior_points(const Mesh& mesh, ProblemLog& log);
+// triangle of its subdomain (the subdomains on `threads` threads).
+void check_interior_points(const Mesh& mesh, ProblemLog& log, unsigned threads = 1);
 
 // Per triangle: 1 + the index of the region (mesh.decomposition.regions)
 // whose flood holds it, 0 for none; the flood starts from the lowest
@@ -58,8 +58,9 @@ void check_interior_points(const Mesh& mesh, ProblemLog& log);
 std::vector<std::uint32_t> mesh_regions(const Mesh& mesh, unsigned threads = 1);
 
 // mesh.triangle_attribute equal to the attribute of each triangle's region
-// by `label` (mesh_regions), 0 in none.
-void check_region_attributes(const Mesh& mesh, const std::vector<std::uint32_t>& label, ProblemLog& log);
+// by `label` (mesh_regions), 0 in none (in parts on `threads` threads).
+void check_region_attributes(const Mesh& mesh, const std::vector<std::uint32_t>& label, ProblemLog& log,
+                             unsigned threads = 1);
 
 // Every triangle within the size bound at its centroid and within its
 // region's max_area (by `label`, mesh_regions; when > 0). The bounds are

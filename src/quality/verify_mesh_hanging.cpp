@@ -7,6 +7,7 @@
 // through, so each vertex is tested against the few edges of its own cell:
 // near-linear in the vertices plus the free edges.
 #include <algorithm>
+#include <atomic>
 
 #include "kernel/segment_grid.hpp"
 #include "kernel/threads.hpp"
@@ -29,11 +30,17 @@ bool strictly_between(Point a, Point b, Point p) noexcept {
 void check_hanging_vertices(const Mesh& m, const std::vector<Segment>& boundary, ProblemLog& log, unsigned threads) {
   if (boundary.empty()) return;
   const auto& P = m.points;
+  // The vertices triangles use, flagged in parts of the triangles on the
+  // threads (a flag set by two parts is set either way: relaxed stores).
   std::vector<std::uint8_t> vertex(P.size(), 0);
-  for (const auto& c : m.triangles)
-    for (const std::uint32_t v : c) vertex[v] = 1;
-  const SegmentGrid grid(P, boundary);
+  const std::size_t nt = m.triangles.size();
   const std::size_t parts = 4 * std::size_t{thread_count(threads, P.size())};
+  for_each_on_threads(parts, threads, [&](std::size_t part) {
+    for (std::size_t t = nt * part / parts; t < nt * (part + 1) / parts; ++t)
+      for (const std::uint32_t v : m.triangles[t])
+        std::atomic_ref<std::uint8_t>(vertex[v]).store(1, std::memory_order_relaxed);
+  });
+  const SegmentGrid grid(P, boundary);
   log_in_parts(P.size(), parts, threads, log,
                [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& part_log) {
                  for (auto v = static_cast<std::uint32_t>(begin); v < end; ++v) {

@@ -4,6 +4,7 @@
 // input order, across every edge but boundary and interior segments
 // (separators are crossed: they are no constraint of the input), the later
 // region winning where two floods meet, as Triangle does.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <unordered_set>
@@ -12,6 +13,7 @@
 #include "kernel/number_format.hpp"
 #include "kernel/threads.hpp"
 #include "madd/predicates.hpp"
+#include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
@@ -21,40 +23,62 @@ namespace {
 std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
 // The lowest triangle whose closure holds p (the triangles are known to be
-// counter-clockwise by now), or no_index.
-std::uint32_t triangle_at(const Mesh& m, Point p) {
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-    const Point a = m.points[m.triangles[t][0]], b = m.points[m.triangles[t][1]], c = m.points[m.triangles[t][2]];
-    if (p.x < std::min({a.x, b.x, c.x}) || p.x > std::max({a.x, b.x, c.x}) || p.y < std::min({a.y, b.y, c.y}) ||
-        p.y > std::max({a.y, b.y, c.y}))
-      continue;
-    if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) return t;
-  }
+// counter-clockwise by now), or no_index: the triangles scanned in parts on
+// `threads` threads, each part's lowest, the lowest of those.
+std::uint32_t triangle_at(const Mesh& m, Point p, unsigned threads) {
+  const std::size_t nt = m.triangles.size();
+  const std::size_t parts =
+      std::clamp<std::size_t>(4 * std::size_t{thread_count(threads, nt)}, 1, std::max<std::size_t>(nt, 1));
+  std::vector<std::uint32_t> found(parts, no_index);
+  for_each_on_threads(parts, threads, [&](std::size_t part) {
+    for (auto t = static_cast<std::uint32_t>(nt * part / parts); t < nt * (part + 1) / parts; ++t) {
+      const Point a = m.points[m.triangles[t][0]], b = m.points[m.triangles[t][1]], c = m.points[m.triangles[t][2]];
+      if (p.x < std::min({a.x, b.x, c.x}) || p.x > std::max({a.x, b.x, c.x}) || p.y < std::min({a.y, b.y, c.y}) ||
+          p.y > std::max({a.y, b.y, c.y}))
+        continue;
+      if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) {
+        found[part] = t;
+        return;
+      }
+    }
+  });
+  for (const std::uint32_t t : found)
+    if (t != no_index) return t;
   return no_index;
 }
 
 }  // namespace
 
-void check_interior_points(const Mesh& m, ProblemLog& log) {
+void check_interior_points(const Mesh& m, ProblemLog& log, unsigned threads) {
   const Decomposition& d = m.decomposition;
-  std::vector<std::uint32_t> used_by(m.points.size(), no_index);  // a subdomain using each vertex (any one)
-  std::vector<std::uint8_t> in_k;
-  for (std::uint32_t k = 0; k < d.subdomains.size(); ++k) {
-    const auto& points = d.subdomains[k].interior_points;
-    if (points.empty()) continue;
-    in_k.assign(m.points.size(), 0);
-    for (std::uint32_t t = m.subdomain_first_triangle[k]; t < m.subdomain_first_triangle[k + 1]; ++t)
-      for (const std::uint32_t v : m.triangles[t]) in_k[v] = 1;
-    for (const std::uint32_t v : points) {
-      if (v < m.points.size() && in_k[v] != 0) continue;
-      // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive)
-      // on "literal" + a temporary string inside the conditional.
-      std::string text = "isolated input vertex " + std::to_string(v);
-      if (v < m.points.size()) text.append(" ").append(point_text(m.points[v]));
-      text.append(" is no vertex of subdomain ").append(std::to_string(k)).append("'s triangles");
-      log.add(std::move(text));
-    }
-  }
+  // Per subdomain with isolated vertices, on the threads: which of them its
+  // triangles use (a flag per isolated vertex, not per mesh point).
+  log_in_parts(d.subdomains.size(), d.subdomains.size(), threads, log,
+               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+                 for (auto k = static_cast<std::uint32_t>(begin); k < end; ++k) {
+                   const auto& points = d.subdomains[k].interior_points;
+                   if (points.empty()) continue;
+                   std::vector<std::uint32_t> wanted(points.begin(), points.end());
+                   std::sort(wanted.begin(), wanted.end());
+                   std::vector<std::uint8_t> used(wanted.size(), 0);
+                   for (std::uint32_t t = m.subdomain_first_triangle[k]; t < m.subdomain_first_triangle[k + 1]; ++t)
+                     for (const std::uint32_t v : m.triangles[t]) {
+                       const auto it = std::lower_bound(wanted.begin(), wanted.end(), v);
+                       if (it != wanted.end() && *it == v) used[static_cast<std::size_t>(it - wanted.begin())] = 1;
+                     }
+                   for (const std::uint32_t v : points) {
+                     const auto at =
+                         static_cast<std::size_t>(std::lower_bound(wanted.begin(), wanted.end(), v) - wanted.begin());
+                     if (v < m.points.size() && used[at] != 0) continue;
+                     // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive)
+                     // on "literal" + a temporary string inside the conditional.
+                     std::string text = "isolated input vertex " + std::to_string(v);
+                     if (v < m.points.size()) text.append(" ").append(point_text(m.points[v]));
+                     text.append(" is no vertex of subdomain ").append(std::to_string(k)).append("'s triangles");
+                     mine.add(std::move(text));
+                   }
+                 }
+               });
 }
 
 // The flood of each region reaches the triangles connected to its first
@@ -135,7 +159,7 @@ std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
     }
   std::vector<std::uint32_t> region_of(base[n], 0);  // per root: 1 + its region, 0 for none
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    const std::uint32_t t0 = triangle_at(m, regions[r].at);
+    const std::uint32_t t0 = triangle_at(m, regions[r].at, threads);
     if (t0 != no_index) region_of[root(component(t0))] = r + 1;  // in a hole or outside: no region (as Triangle)
   }
   for (std::uint32_t c = 0; c < region_of.size(); ++c) region_of[c] = region_of[root(c)];
@@ -145,18 +169,24 @@ std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
   return label;
 }
 
-void check_region_attributes(const Mesh& m, const std::vector<std::uint32_t>& label, ProblemLog& log) {
+void check_region_attributes(const Mesh& m, const std::vector<std::uint32_t>& label, ProblemLog& log,
+                             unsigned threads) {
   const std::vector<Region>& regions = m.decomposition.regions;
   if (regions.empty()) return;  // check_mesh_shape: no attributes then
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-    const double want = label[t] == 0 ? 0.0 : regions[label[t] - 1].attribute;
-    const double have = m.triangle_attribute[t];
-    if (have == want || (std::isnan(have) && std::isnan(want))) continue;
-    log.add(mesh_triangle_text(m, t) + " has region attribute " + number_text(have) + ", but " +
-            (label[t] == 0 ? std::string("no region's flood reaches it (attribute 0)")
-                           : "the flood from region " + std::to_string(label[t] - 1) + " " +
-                                 point_text(regions[label[t] - 1].at) + " gives it " + number_text(want)));
-  }
+  const std::size_t nt = m.triangles.size();
+  log_in_parts(nt, 4 * std::size_t{thread_count(threads, nt)}, threads, log,
+               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+                 for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t) {
+                   const double want = label[t] == 0 ? 0.0 : regions[label[t] - 1].attribute;
+                   const double have = m.triangle_attribute[t];
+                   if (have == want || (std::isnan(have) && std::isnan(want))) continue;
+                   mine.add(mesh_triangle_text(m, t) + " has region attribute " + number_text(have) + ", but " +
+                            (label[t] == 0
+                                 ? std::string("no region's flood reaches it (attribute 0)")
+                                 : "the flood from region " + std::to_string(label[t] - 1) + " " +
+                                       point_text(regions[label[t] - 1].at) + " gives it " + number_text(want)));
+                 }
+               });
 }
 
 }  // namespace madd::detail

@@ -14,8 +14,15 @@
 # madd and Triangle alike: replacing a file makes the kernel free the old
 # one's pages in the rename (about 0.09 s for the pipe's 88 MB here), which
 # a first run does not pay.
+# WARMUP=1 (the default) runs each command once more, untimed, right before
+# its timed run: on a virtual machine that hands freed memory back to its
+# host (free page reporting), a run after a pause or after a program that
+# used small pages finds its huge pages cold and pays 0.2-0.3 s to have
+# them zeroed anew, one right after its twin finds them warm (see
+# docs/performance.md, "Cold memory"); WARMUP=0 keeps the runs as they come.
 set -eu
 fresh=${FRESH:-0}
+warmup=${WARMUP:-1}
 build=$1; domain=$2; area=$3; runs=${4:-5}; triangle=${5:-}; n=${6:-64}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -30,7 +37,8 @@ for i in $(seq "$runs"); do
   # -j 1 went first).
   order="1 2"; [ $((i % 2)) = 0 ] && order="2 1"
   for j in $order; do
-    [ "$fresh" = 1 ] && rm -f "$scratch/m$j".*
+    [ "$warmup" = 1 ] && "$build/madd" mesh "$domain" -n "$n" -q 30 -a "$area" -j "$j" -o "$scratch/w$j" --quiet
+    [ "$fresh" = 1 ] && rm -f "$scratch/m$j".* "$scratch/w$j".*
     t0=$(now)
     "$build/madd" mesh "$domain" -n "$n" -q 30 -a "$area" -j "$j" -o "$scratch/m$j" --report="$scratch/r$j.json" --quiet
     t1=$(now)
@@ -38,6 +46,7 @@ for i in $(seq "$runs"); do
     python3 -c "import json,sys; r=json.load(open('$scratch/r$j.json')); print('p$j', json.dumps({'phases': r['phase_seconds'], 'threads': r['thread_seconds'], 'seconds': r['seconds'], 'triangles': r['triangles']}))" >>"$log"
   done
   if [ -n "$triangle" ]; then
+    [ "$warmup" = 1 ] && "$triangle" -pq30a"$area" -Q "$scratch/t.poly"
     [ "$fresh" = 1 ] && rm -f "$scratch/t.1".*
     t0=$(now)
     "$triangle" -pq30a"$area" -Q "$scratch/t.poly"

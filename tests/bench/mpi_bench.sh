@@ -28,7 +28,10 @@ trap 'rm -rf "$work"' EXIT
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 field() { sed -n "s/^  \"$1\": \\(.*\\),\$/\\1/p" "$2" | tr -d '[]' ; }
 for i in $(seq 1 "$repeat"); do
-  for np in 1 "$ranks"; do
+  # Alternating order, as tests/bench/end_to_end.sh: a run right after
+  # another reuses its freed huge pages warm; after a pause they may be cold.
+  order="1 $ranks"; [ $((i % 2)) = 0 ] && order="$ranks 1"
+  for np in $order; do
     start=$(date +%s.%N)
     mpirun $root_flag --oversubscribe --bind-to core -np "$np" "$build/madd-mpi" mesh "$domain" -j 1 --quiet \
       --report="$work/r$np-$i.json" -o "$work/m$np" "$@"
