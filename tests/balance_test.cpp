@@ -225,9 +225,12 @@ TEST_CASE("rebalancing brings the largest subdomain within 1.2 x the mean where 
     // 9.3 when chords could run lengthwise a hair from a tooth), the repairs
     // add 11% (1.95).
     CHECK(on.mean_separator_per_subdomain <= 1.15 * off.mean_separator_per_subdomain);
-    // One repair at a time in a fixed order: the thread count changes nothing.
-    o.threads = 2;
-    CHECK(madd::decompose(domain, o) == d);
+    // One repair at a time in a fixed order, its candidate unions tried two
+    // or three at a time and weighed in order: the thread count changes nothing.
+    for (const unsigned threads : {2u, 3u}) {
+      o.threads = threads;
+      CHECK(madd::decompose(domain, o) == d);
+    }
   }
 }
 
@@ -289,6 +292,8 @@ TEST_CASE("rebalancing works on background weights too: the heaviest subdomain c
   double expected = 0;
   for (const madd::ValuedPoint& v : o.weight_samples) expected += v.value;
   CHECK(total == doctest::Approx(o.boundary_refinement * madd::domain_area(domain) + expected).epsilon(1e-9));
-  o.threads = 2;
-  CHECK(madd::decompose(domain, o) == d);
+  for (const unsigned threads : {2u, 3u}) {
+    o.threads = threads;
+    CHECK(madd::decompose(domain, o) == d);
+  }
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <thread>
 #include <unordered_map>
 
@@ -192,7 +193,7 @@ DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions&
   double rebalance_seconds = 0.0;
   if (options.repair_balance_above > 0.0 && !area_driven && !grading.mode().graded()) {
     detail::Stopwatch clock;
-    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above});
+    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above, .threads = options.threads});
     rebalance_seconds = clock.lap();
   } else if (options.repair_balance_above > 0.0 && grading.can_rebalance()) {
     // Background weights (madd mesh balances expected triangles this way):
@@ -202,7 +203,11 @@ DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions&
     // repair reads every face again after each repair, and most are
     // unchanged; the repairs it tries number new points alike in their
     // copies, so ids alone could name two faces).
+    // The repairs are tried on several threads: the cache under a lock, a
+    // face's work found outside it (two threads may both find it: the same
+    // value).
     std::map<std::vector<double>, double> work_of;
+    std::mutex work_mutex;
     const auto weight = [&](const detail::Subdivision& s, std::uint32_t f) {
       if (!options.face_work) return grading.weight_from_scratch(s, f);
       std::vector<double> key;
@@ -210,13 +215,18 @@ DecomposeRun detail::decompose_valid(const Pslg& domain, const DecomposeOptions&
         for (const std::uint32_t v : ring) key.insert(key.end(), {s.points[v].x, s.points[v].y});
         key.push_back(std::numeric_limits<double>::infinity());  // between rings
       }
-      const auto [it, fresh] = work_of.try_emplace(std::move(key), 0.0);
-      if (fresh) it->second = options.face_work(face_domain(s, f));
-      return it->second;
+      {
+        const std::lock_guard lock(work_mutex);
+        if (const auto it = work_of.find(key); it != work_of.end()) return it->second;
+      }
+      const double work = options.face_work(face_domain(s, f));
+      const std::lock_guard lock(work_mutex);
+      return work_of.try_emplace(std::move(key), work).first->second;
     };
     const detail::FaceMeasure measure{
         weight, [&](const detail::Subdivision& s, std::uint32_t f) { return grading.density_from_scratch(s, f); }};
-    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above}, measure);
+    detail::rebalance(sub, split_options, guard, {.target = options.repair_balance_above, .threads = options.threads},
+                      measure);
     grading.reassign(sub);
     rebalance_seconds = clock.lap();
   }

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/threads.hpp"
 #include "madd/error.hpp"
 
 namespace madd::detail {
@@ -183,15 +184,29 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
     const auto face = static_cast<std::uint32_t>(worst);
     const double improved = (1.0 - options.min_gain) * area[face];
     const std::vector<std::vector<std::uint32_t>> unions = candidate_unions(sub, face, area, improved, options);
+    // The unions tried a batch at a time on the threads (each repair on its
+    // own copy of sub), then weighed in order as one thread trying them one
+    // by one would, down to where it would have stopped: the same repair for
+    // any thread count, at the cost of at most a batch's tries beyond it.
     std::optional<Repair> best;
-    for (const auto& partners : unions) {
-      if (attempts == max_attempts) break;
-      ++attempts;
-      guard.check(n);
-      auto repair = try_repair(sub, face, partners, split_options, guard, measure);
-      if (!repair || repair->largest > improved || repair->added_length > max_added_length) continue;
-      if (!best || repair->largest < best->largest) best = std::move(repair);
-      if (best->largest <= bound) break;
+    const std::size_t batch = thread_count(options.threads, unions.size());
+    bool enough = false;
+    for (std::size_t first = 0; first < unions.size() && !enough && attempts < max_attempts; first += batch) {
+      const std::size_t count = std::min({batch, unions.size() - first, std::size_t{max_attempts - attempts}});
+      std::vector<std::optional<Repair>> batch_repairs(count);
+      for_each_on_threads(count, options.threads, [&](std::size_t i) {
+        guard.check(n);
+        batch_repairs[i] = try_repair(sub, face, unions[first + i], split_options, guard, measure);
+      });
+      for (std::optional<Repair>& repair : batch_repairs) {
+        ++attempts;
+        if (!repair || repair->largest > improved || repair->added_length > max_added_length) continue;
+        if (!best || repair->largest < best->largest) best = std::move(repair);
+        if (best->largest <= bound) {
+          enough = true;
+          break;
+        }
+      }
     }
     if (!best) {
       tried[face] = sub.ring_vertex_count(face);

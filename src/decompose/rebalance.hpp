@@ -29,6 +29,10 @@ struct RebalanceOptions {
   // area) (12% more separator in all); on the real coastlines the repairs add
   // a median of 0 and at most 1.3 x sqrt(mean area) before this bound.
   double max_added_separator = 1.0;
+  // The unions tried for one subdomain are tried this many at a time, each
+  // on its own copy (0: one per core); the repair kept is the one a single
+  // thread trying them in order keeps.
+  unsigned threads = 1;
 };
 
 // What rebalancing balances: each face's weight, and the density a split of
@@ -42,7 +46,8 @@ struct FaceMeasure {
 // graded weights of background samples for madd mesh's balance by work)
 // until every one is within target x the mean or none can be improved.
 // Returns the number of repairs kept. Deterministic: one repair at a time, in
-// a fixed order.
+// a fixed order, the same for any thread count. `measure` is called from
+// several threads at once when options.threads != 1.
 std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options, const ResourceGuard& guard,
                         const RebalanceOptions& options = {}, const FaceMeasure& measure = {});
 

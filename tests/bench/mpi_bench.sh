@@ -32,6 +32,13 @@ for i in $(seq 1 "$repeat"); do
   # another reuses its freed huge pages warm; after a pause they may be cold.
   order="1 $ranks"; [ $((i % 2)) = 0 ] && order="$ranks 1"
   for np in $order; do
+    # WARMUP=1 (the default): the same run once, untimed, right before
+    # (tests/bench/end_to_end.sh says why: cold memory on a virtual machine).
+    if [ "${WARMUP:-1}" = 1 ]; then
+      mpirun $root_flag --oversubscribe --bind-to core -np "$np" "$build/madd-mpi" mesh "$domain" -j 1 --quiet \
+        -o "$work/w$np" "$@"
+      rm -f "$work/w$np"*
+    fi
     start=$(date +%s.%N)
     mpirun $root_flag --oversubscribe --bind-to core -np "$np" "$build/madd-mpi" mesh "$domain" -j 1 --quiet \
       --report="$work/r$np-$i.json" -o "$work/m$np" "$@"
