@@ -502,25 +502,39 @@ void weigh_by_work(DecomposeOptions& options, const DomainWork& work) {
   // its units (kappa A per triangle). With a varying bound the interior is
   // sampled too, and everything is scaled to drown the area term.
   const bool uniform = size.uniform();
+  // The segments in chunks on the threads (a query of the field per piece),
+  // each chunk's samples in segment order, joined in chunk order: the same
+  // samples, and the same sum, as one pass.
+  constexpr std::size_t segments_per_chunk = 256;
+  const std::size_t chunks = (domain.segments.size() + segments_per_chunk - 1) / segments_per_chunk;
+  std::vector<std::vector<ValuedPoint>> chunk_samples(chunks);
+  for_each_on_threads(chunks, options.threads, [&](std::size_t c) {
+    BoundHint hint;  // the pieces of a ring come in order
+    const std::size_t end = std::min(domain.segments.size(), (c + 1) * segments_per_chunk);
+    for (auto j = static_cast<std::uint32_t>(c * segments_per_chunk); j < end; ++j) {
+      if (!found[j]) continue;
+      const Point a = domain.points[domain.segments[j].a], b = domain.points[domain.segments[j].b];
+      const double length = distance(a, b);
+      const double size_at = std::sqrt(size.area_at(midpoint(a, b), &hint));
+      if (!std::isfinite(size_at) || !(size_at > 0)) continue;
+      const auto pieces =
+          static_cast<std::size_t>(std::clamp(std::ceil(length / (piece_in_sizes * size_at)), 1.0, 1e6));
+      for (std::size_t k = 0; k < pieces; ++k) {
+        const Point m = lerp(a, b, (static_cast<double>(k) + 0.5) / static_cast<double>(pieces));
+        const double bound = size.area_at(m, &hint);
+        if (!std::isfinite(bound) || !(bound > 0)) continue;
+        const double triangles = beta * (length / static_cast<double>(pieces)) / std::sqrt(bound);
+        chunk_samples[c].push_back({lerp(m, inside[j], 1e-3), uniform ? triangles * kappa * bound : triangles});
+      }
+    }
+  });
   std::vector<ValuedPoint> samples;
   double boundary = 0;
-  BoundHint hint;  // the pieces of a ring come in order
-  for (std::uint32_t j = 0; j < domain.segments.size(); ++j) {
-    if (!found[j]) continue;
-    const Point a = domain.points[domain.segments[j].a], b = domain.points[domain.segments[j].b];
-    const double length = distance(a, b);
-    const double size_at = std::sqrt(size.area_at(midpoint(a, b), &hint));
-    if (!std::isfinite(size_at) || !(size_at > 0)) continue;
-    const auto pieces = static_cast<std::size_t>(std::clamp(std::ceil(length / (piece_in_sizes * size_at)), 1.0, 1e6));
-    for (std::size_t k = 0; k < pieces; ++k) {
-      const Point m = lerp(a, b, (static_cast<double>(k) + 0.5) / static_cast<double>(pieces));
-      const double bound = size.area_at(m, &hint);
-      if (!std::isfinite(bound) || !(bound > 0)) continue;
-      const double triangles = beta * (length / static_cast<double>(pieces)) / std::sqrt(bound);
-      samples.push_back({lerp(m, inside[j], 1e-3), uniform ? triangles * kappa * bound : triangles});
-      boundary += uniform ? triangles * kappa * bound : 0.0;
+  for (const std::vector<ValuedPoint>& some : chunk_samples)
+    for (const ValuedPoint& p : some) {
+      samples.push_back(p);
+      boundary += uniform ? p.value : 0.0;
     }
-  }
   const double area = domain_area(domain);
   if (uniform) {
     // The narrow gaps' and the pinches' triangles, which the area term does not count.
