@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "kernel/threads.hpp"
 #include "madd/triangulation.hpp"
 #include "sizing/triangle_locator.hpp"
 
@@ -46,21 +47,45 @@ void quadtree_points(const Coast& coast, const RawField& raw, const BackgroundOp
   for (std::size_t v = 0; v < coast.points.size(); ++v)
     if (!on_segment[v]) isolated.insert({coast.points[v].x, coast.points[v].y});
   const std::size_t first = out.at.size();
+  // What a cell's centre tells, measured for a whole level on the threads
+  // (the queries of the coast are most of the build); the cells are then
+  // taken in order, as the budget wants.
+  struct Measured {
+    double clearance = 0.0;  // from every segment (a cell wholly inside is clear of them)
+    bool outside = false;    // wholly outside: dropped
+    bool inside = false;
+    RawSample sample;
+  };
+  std::vector<Measured> measured;
+  constexpr std::size_t cells_per_task = 256;
   std::vector<Cell> level{{lo, root, false}}, next;
   while (!level.empty()) {
     next.clear();
-    for (const Cell& c : level) {
-      const Point m{c.lo.x + 0.5 * c.size, c.lo.y + 0.5 * c.size};
-      bool inside = c.inside;
-      double clearance = c.size;  // from every segment (a cell wholly inside is clear of them)
-      if (!inside) {
-        clearance = coast.segment_distance(m);
-        if (clearance > 0.7072 * c.size) {  // no segment meets the cell: wholly in or out
-          if (!coast.contains(m)) continue;
-          inside = true;
+    measured.assign(level.size(), Measured{});
+    for_each_on_threads((level.size() + cells_per_task - 1) / cells_per_task, options.threads, [&](std::size_t task) {
+      for (std::size_t i = task * cells_per_task; i < std::min(level.size(), (task + 1) * cells_per_task); ++i) {
+        const Cell& c = level[i];
+        Measured& here = measured[i];
+        const Point m{c.lo.x + 0.5 * c.size, c.lo.y + 0.5 * c.size};
+        here.inside = c.inside;
+        here.clearance = c.size;
+        if (!here.inside) {
+          here.clearance = coast.segment_distance(m);
+          if (here.clearance > 0.7072 * c.size) {  // no segment meets the cell: wholly in or out
+            here.outside = !coast.contains(m);
+            here.inside = !here.outside;
+          }
         }
+        if (!here.outside) here.sample = raw.at(m);
       }
-      const RawSample sample = raw.at(m);
+    });
+    for (std::size_t i = 0; i < level.size(); ++i) {
+      const Cell& c = level[i];
+      if (measured[i].outside) continue;
+      const Point m{c.lo.x + 0.5 * c.size, c.lo.y + 0.5 * c.size};
+      const bool inside = measured[i].inside;
+      const double clearance = measured[i].clearance;
+      const RawSample& sample = measured[i].sample;
       const bool split = c.size > options.cell_over_h * sample.edge && c.size > smallest &&
                          out.at.size() - first + next.size() + 4 <= options.budget;
       if (split) {
@@ -141,8 +166,12 @@ std::vector<std::uint8_t> flood_inside(const Triangulation& tri, const std::vect
 
 BackgroundBuild build_background(const Coast& coast, const RawField& raw, const BackgroundOptions& options) {
   Points points;
-  for (std::size_t v = 0; v < coast.points.size(); ++v)
-    points.add(coast.points[v], raw.at(coast.points[v], coast.inward[v]));
+  points.at = coast.points;
+  points.samples.resize(coast.points.size());
+  for_each_on_threads((coast.points.size() + 255) / 256, options.threads, [&](std::size_t task) {
+    for (std::size_t v = task * 256; v < std::min(coast.points.size(), (task + 1) * 256); ++v)
+      points.samples[v] = raw.at(coast.points[v], coast.inward[v]);
+  });
   Pslg pslg;
   pslg.segments = split_pieces(coast, raw, options, points);
   const std::size_t before = points.at.size();

@@ -31,6 +31,9 @@ struct BackgroundOptions {
   double cell_over_h = 4.0;
   double keep_away = 0.25;
   std::size_t budget = std::size_t{1} << 19;
+  // The quadtree's cells of a level are measured on this many threads (0:
+  // one per core); the points are the same for any count.
+  unsigned threads = 1;
 };
 
 struct BackgroundBuild {

@@ -104,6 +104,7 @@ SizeField::SizeField(const Pslg& domain, const MeshSizeOptions& size, unsigned t
       size.distance_rate > 0.0 && (size.size_gradation == 0.0 || size.distance_rate <= size.size_gradation);
   BackgroundOptions options;
   options.cell_over_h = cell_over_h(size, exact);
+  options.threads = threads;
   BackgroundBuild built = build_background(coast, raw, options);
   background_ = std::move(built.background);
   report_.steiner_points = built.steiner_points;
