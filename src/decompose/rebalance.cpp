@@ -162,10 +162,17 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
   const auto n = static_cast<std::uint32_t>(sub.faces.size());
   if (n < 2) return 0;
   // `area` holds what is balanced: the areas, or the measure's weights.
+  // Each face's weight on the threads (a graded measure integrates the
+  // field over the face), summed in face order.
   std::vector<double> area(n);
+  const auto weigh_all = [&] {
+    for_each_on_threads(n, options.threads,
+                        [&](std::size_t f) { area[f] = weight_of(sub, static_cast<std::uint32_t>(f), measure); });
+  };
+  weigh_all();
   double total = 0.0, total_area = 0.0;
   for (std::uint32_t f = 0; f < n; ++f) {
-    total += area[f] = weight_of(sub, f, measure);
+    total += area[f];
     total_area += sub.face_area(f);
   }
   const double bound = options.target * total / n;
@@ -213,7 +220,7 @@ std::uint32_t rebalance(Subdivision& sub, const SplitOptions& split_options_in, 
       continue;
     }
     sub = std::move(best->sub);
-    for (std::uint32_t f = 0; f < n; ++f) area[f] = weight_of(sub, f, measure);
+    weigh_all();
     std::fill(tried.begin(), tried.end(), 0);  // face ids moved
     ++repairs;
   }
