@@ -6,7 +6,9 @@
 # CPU-seconds over J - 1 are the serial seconds s of Amdahl's model, and
 # s over the busy CPU-seconds (the one-thread time, less what threads add)
 # is the serial fraction f. Each run follows an untimed twin (cold memory:
-# docs/performance.md).
+# docs/performance.md). CLEAN="GLOB" removes the files matching GLOB before
+# each timed run (replacing a file frees the old one's pages in rename, on
+# one thread: a cost of the file system, which a first run does not pay).
 #   tests/bench/serial_seconds.sh J K -- COMMAND...   (K runs; needs perf)
 # for example
 #   tests/bench/serial_seconds.sh 2 5 -- build/madd mesh data/pipe.poly -n 64 -q 30 -a 0.00025 -j 2 -o /tmp/m
@@ -18,6 +20,8 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 for i in $(seq "$runs"); do
   "$@" >/dev/null
+  # shellcheck disable=SC2086
+  [ -n "${CLEAN:-}" ] && rm -f $CLEAN
   perf record -q -F 5000 -o "$scratch/p.data" -- "$@" >/dev/null 2>&1
   perf script -i "$scratch/p.data" -F time 2>/dev/null >"$scratch/t$i"
 done
