@@ -3,7 +3,6 @@
 
 #include <condition_variable>
 #include <cstdint>
-#include <memory>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <pthread.h>

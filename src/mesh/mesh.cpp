@@ -9,7 +9,6 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
-#include <thread>
 #include <unordered_map>
 #include <utility>
 
