@@ -12,6 +12,7 @@
 #include "madd/bathymetry.hpp"
 #include "madd/error.hpp"
 #include "madd/mesh.hpp"
+#include "madd/predicates.hpp"
 #include "madd/pslg.hpp"
 #include "madd/decomposition.hpp"
 #include "mesh/narrow_gaps.hpp"
@@ -300,6 +301,78 @@ TEST_CASE("narrow gap: a channel far narrower than the bound costs what refineme
     CHECK(predicted > 0.9 * total);
     CHECK(predicted < 1.1 * total);
   }
+}
+
+TEST_CASE("a narrow gap's excess is spread along it, never one point a separator cannot split") {
+  // The Seto Inland Sea's needle (docs/mesh.md, "Balance by work"; its
+  // vertices 1807-1809, moved to the origin): a triangle 1.8 long, 0.0026
+  // wide at its base, its domain triangulation that one sliver; under one
+  // bound of side ~0.37 the gap's excess over the area term is thousands of
+  // triangles. Placed at the sliver's centroid as one sample it made the
+  // subdomain holding it 1.44 x the mean at N = 256.
+  madd::Pslg d;
+  d.points = {{0, 0}, {1.750882, 0.01112}, {-0.074564, 0.002224}};
+  for (std::uint32_t i = 0; i < 3; ++i) d.segments.push_back({i, (i + 1) % 3, 1});
+  madd::MeshSizeOptions size;
+  size.min_triangle_angle_deg = 30;
+  size.max_triangle_area = 0.06;
+  const madd::detail::AreaBound bound(size, &d);
+  REQUIRE(bound.uniform());
+  const madd::detail::DomainWork work(d, bound);
+  REQUIRE(work.triangulation.triangles.size() == 1);
+  double total = 0, largest = 0, lo_x = 2, hi_x = -1;
+  for (const madd::ValuedPoint& p : work.excess) {
+    CHECK(p.value > 0);
+    // Strictly inside the sliver (counter-clockwise).
+    for (std::uint32_t i = 0; i < 3; ++i) CHECK(madd::orient2d(d.points[i], d.points[(i + 1) % 3], p.at) > 0);
+    total += p.value;
+    largest = std::max(largest, p.value);
+    lo_x = std::min(lo_x, p.at.x);
+    hi_x = std::max(hi_x, p.at.x);
+  }
+  // Hundreds of triangles or more, along most of the sliver, no sample a
+  // tenth of them.
+  CHECK(total > 1000);
+  CHECK(largest < 0.1 * total);
+  CHECK(lo_x < 0.3);
+  CHECK(hi_x > 1.4);
+  // And the whole is what refinement makes of the needle (within 25%).
+  madd::MeshOptions o;
+  o.decomposition.subdomains = 1;
+  o.size = size;
+  const madd::MeshRun run = madd::mesh_with_report(d, o);
+  const auto actual = static_cast<double>(run.mesh.triangles.size());
+  CHECK(run.report.expected_triangles[0] > 0.75 * actual);
+  CHECK(run.report.expected_triangles[0] < 1.25 * actual);
+}
+
+TEST_CASE("under one bound, no merged work sample weighs more than a sixteenth of a mean subdomain") {
+  // A 50 x 50 basin with the needle above on its east side: its excess is
+  // 4% of the work, 2.7 mean subdomains at N = 64, inside two cells of the
+  // samples' 64 x 64 grid.
+  madd::Pslg d;
+  d.points = {{0, 0}, {50, 0}, {50, 25}, {51.750882, 25.01112}, {50, 25.0026}, {50, 50}, {0, 50}};
+  for (std::uint32_t i = 0; i < 7; ++i) d.segments.push_back({i, (i + 1) % 7, 1});
+  madd::MeshSizeOptions size;
+  size.min_triangle_angle_deg = 30;
+  size.max_triangle_area = 0.06;
+  const madd::detail::AreaBound bound(size, &d);
+  const madd::detail::DomainWork work(d, bound);
+  double excess = 0;
+  for (const madd::ValuedPoint& p : work.excess) excess += p.value;
+  const double triangles = 2500 / (0.645 * 0.06);
+  REQUIRE(excess > 0.02 * triangles);
+  madd::DecomposeOptions o;
+  o.subdomains = 64;
+  madd::detail::weigh_by_work(o, work);
+  REQUIRE(o.weight_samples.size() > 0);
+  // The weights are in units of area (kappa A a triangle) beside the area itself.
+  double total = 2500 + 0.0026 * 1.75 / 2, largest = 0;
+  for (const madd::ValuedPoint& p : o.weight_samples) {
+    total += p.value;
+    largest = std::max(largest, p.value);
+  }
+  CHECK(largest <= total / (16 * 64) * (1 + 1e-9));
 }
 
 TEST_CASE("pinch: two islands all but touching at a corner cost a cluster the estimate counts") {
