@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <filesystem>
+#include <string>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -20,6 +22,14 @@
 namespace {
 
 long os_thread_id() { return static_cast<long>(::syscall(SYS_gettid)); }
+
+// The OS thread ids of the process's threads (/proc/self/task).
+std::set<long> process_threads() {
+  std::set<long> out;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task"))
+    out.insert(std::stol(entry.path().filename().string()));
+  return out;
+}
 
 // Runs one step of n ids; returns the OS thread each id ran on.
 std::vector<long> step(unsigned n) {
@@ -47,18 +57,20 @@ TEST_CASE("run_on_threads: each id once, id 0 on the caller, the others on disti
 }
 
 TEST_CASE("run_on_threads: the helpers are parked between steps, not made again") {
-  // A step of 32 ids makes the helpers up to 31 and uses every one of them
-  // (each takes one id): their OS thread ids are all there are. Threads made
-  // for every step would get new ids (Linux hands them out in increasing
-  // order); parked ones answer the later steps themselves.
+  // A step of 32 ids makes the helpers up to 32 (one spare, for the files'
+  // writer) and uses 31 of them. Threads made for every step would add
+  // tasks to the process; parked ones answer the later steps themselves.
   const std::vector<long> all = step(32);
   const std::set<long> helpers(all.begin() + 1, all.end());
   REQUIRE(helpers.size() == 31);
+  const std::set<long> tasks = process_threads();
+  for (const long helper : helpers) CHECK(tasks.count(helper) == 1);
   for (int k = 0; k < 20; ++k)
-    for (const unsigned n : {2u, 3u, 8u}) {
+    for (const unsigned n : {2u, 3u, 8u, 31u}) {
       const std::vector<long> again = step(n);
-      for (unsigned id = 1; id < n; ++id) CHECK(helpers.count(again[id]) == 1);
+      for (unsigned id = 1; id < n; ++id) CHECK(tasks.count(again[id]) == 1);
     }
+  CHECK(process_threads() == tasks);
 }
 
 TEST_CASE("run_on_threads: a nested step and a second caller's step run all their ids") {

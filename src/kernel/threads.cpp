@@ -22,7 +22,12 @@ public:
     bool expected = false;
     if (!busy_.compare_exchange_strong(expected, true)) return false;
     try {
-      while (helpers_ + 1 < n) {
+      // One helper more than the job needs: the files' writer runs its
+      // formatters beside the calling thread (J + 1 threads at -j J), and a
+      // helper made at that moment started on a busy core, two formatters
+      // sharing one CPU for 15 ms while the other idled (the pipe at -j 2);
+      // made with the run's first job, it has its own core long before.
+      while (helpers_ < n) {
         std::thread(&ParkedThreads::serve, this, generation()).detach();
         ++helpers_;
       }
