@@ -105,14 +105,13 @@ private:
   const std::vector<double>& label_area_;
   // The size bound's queries come in runs around each new point: each starts where the last ended.
   mutable BoundHint bound_hint_;
-  // The last query of the field (bound_of): at a triangle's centroid, the
-  // edge length there, the triangle's newest corner.
+  // Per vertex: the last query of the field (bound_of) at the centroid of a
+  // triangle with that corner, and the edge length there (NaN: none yet).
   struct FieldQuery {
     Point at;
-    double edge = 0.0;
-    std::uint32_t vertex = no_index;
+    double edge = std::numeric_limits<double>::quiet_NaN();
   };
-  mutable FieldQuery last_query_;
+  mutable std::vector<FieldQuery> anchor_;
   double beta_ = 1.0;                // circumradius / shortest edge bound: 1 / (2 sin theta)
   std::vector<std::uint8_t> sharp_;  // per input vertex: two pieces meet there below 60 degrees
   std::vector<std::uint8_t>
@@ -257,30 +256,38 @@ bool Refiner::too_big(std::uint32_t t, const TriangleShape& s, Point a, Point b,
 
 // The size bound at t's centroid g, or, under a field of slope L
 // (AreaBound::edge_slope), a value on the same side of t's area, read from
-// the last query when the two triangles share their newest corner v (the
-// new vertex of a cavity's fan): the path from that query's centroid to v
-// and on to g lies in the two triangles, in the domain, so h(g) is within
-// L times its length of h there. Past that band the bound is known without
-// a query (with the floor below, 46% of the bounds a graded coast needs at
-// L = 0.2: 2.7 M on the Maine coast, 1.46 M queried). The margin covers the
-// rounding of the field's value, far below 1e-9. No triangle within
-// AreaBound::least is queried at all.
+// the last query made in a triangle at one of t's corners v (each corner
+// keeps its own, anchor_): the path from that query's centroid to v (inside
+// the triangle it was made in, since remade or not, but in the domain) and
+// on to g (inside t) lies in the domain, so h(g) is within L times its length
+// of h there. Past that band the bound is known without a query; the
+// tightest of the three corners decides. The margin covers the rounding of
+// the field's value, far below 1e-9. No triangle within AreaBound::least is
+// queried at all. (Reading only the last query, and only when t shared its
+// newest corner, left 1.46 M of 2.7 M bounds to query on the Maine coast at
+// L = 0.2; docs/mesh.md, "Size field".)
 double Refiner::bound_of(std::uint32_t t, double area, Point a, Point b, Point c) const {
   const AreaBound& bound = *settings_.size;
   if (area <= bound.least()) return bound.least();
   const Point g = triangle_centroid(a, b, c);
   if (!(bound.edge_slope() > 0.0) || !settings_.bounds_from_neighbours) return bound.area_at(g, &bound_hint_);
-  const std::uint32_t v = std::max({m_.corner(t, 0), m_.corner(t, 1), m_.corner(t, 2)});
-  if (v == last_query_.vertex) {
+  const std::uint32_t corners[3] = {m_.corner(t, 0), m_.corner(t, 1), m_.corner(t, 2)};
+  const std::uint32_t most = std::max({corners[0], corners[1], corners[2]});
+  if (anchor_.size() <= most) anchor_.resize(most + 1 + most / 2);
+  double low = 0.0, high = std::numeric_limits<double>::infinity();
+  for (const std::uint32_t v : corners) {
+    const FieldQuery& q = anchor_[v];
+    if (std::isnan(q.edge)) continue;
     const Point pv = m_.point(v);
-    const double reach = bound.edge_slope() * (distance(last_query_.at, pv) + distance(pv, g));
-    const double low = (last_query_.edge - reach) * (1.0 - 1e-9);
-    if (low > 0.0 && area <= bound.area_of_field_edge(low)) return bound.area_of_field_edge(low);
-    const double high = (last_query_.edge + reach) * (1.0 + 1e-9);
-    if (area > bound.area_of_field_edge(high)) return bound.area_of_field_edge(high);
+    const double reach = bound.edge_slope() * (distance(q.at, pv) + distance(pv, g));
+    low = std::max(low, (q.edge - reach) * (1.0 - 1e-9));
+    high = std::min(high, (q.edge + reach) * (1.0 + 1e-9));
   }
-  last_query_ = {g, bound.field_edge_at(g, &bound_hint_), v};
-  return bound.area_of_field_edge(last_query_.edge);
+  if (low > 0.0 && area <= bound.area_of_field_edge(low)) return bound.area_of_field_edge(low);
+  if (std::isfinite(high) && area > bound.area_of_field_edge(high)) return bound.area_of_field_edge(high);
+  const FieldQuery here{g, bound.field_edge_at(g, &bound_hint_)};
+  for (const std::uint32_t v : corners) anchor_[v] = here;
+  return bound.area_of_field_edge(here.edge);
 }
 
 bool Refiner::is_bad(std::uint32_t t) const {
