@@ -418,6 +418,16 @@ TEST_CASE("pinch: two islands all but touching at a corner cost a cluster the es
   const double predicted = run.report.expected_triangles.at(0);
   CHECK(predicted > 0.95 * total);
   CHECK(predicted < 1.05 * total);
+
+  // Under a varying bound (the estimate integrates it) the cluster is
+  // there all the same, and counted (without the pinch term: 0.8 of the count).
+  madd::MeshOptions graded = o;
+  graded.size.max_triangle_area = 0;
+  graded.size.triangle_area_function = [](double x, double) { return 0.16 * (1.0 + 0.02 * x); };
+  const madd::MeshRun graded_run = madd::mesh_with_report(d, graded);
+  const auto graded_total = static_cast<double>(graded_run.mesh.triangles.size());
+  CHECK(graded_run.report.expected_triangles.at(0) > 0.95 * graded_total);
+  CHECK(graded_run.report.expected_triangles.at(0) < 1.05 * graded_total);
 }
 
 TEST_CASE("pinch: a few of them tip a subdomain unless the decomposition weighs the work") {

@@ -24,11 +24,13 @@ struct DomainWork {
   const AreaBound& size;
   Triangulation triangulation;  // the domain's constrained Delaunay triangulation
   NarrowGaps gaps;
-  // Under one bound everywhere (whose interior is counted by area): the
-  // triangles the estimate's terms do not count, as samples (each in
-  // triangles, a hair inside the domain): the narrow gaps' excess, one
-  // sample per triangle of the triangulation where a gap binds at its
-  // centroid, and the pinches (work.cpp, pinch_excess). Empty otherwise.
+  // The triangles the estimate's terms do not count, as samples (each in
+  // triangles, a hair inside the domain): under one bound everywhere (whose
+  // interior is counted by area) the narrow gaps' excess, a sample per piece
+  // of each triangle of the triangulation where a gap binds at its centroid,
+  // and the pinches (work.cpp, pinch_excess); under a varying bound (whose
+  // integral counts the gaps) the pinches only; without a bound, none. The
+  // subdomains' and faces' estimates add them; the weights only under one bound.
   std::vector<ValuedPoint> excess;
 };
 
