@@ -109,7 +109,8 @@ void merge_on_sub_grid(const std::vector<ValuedPoint>& samples, const std::vecto
   // Calls f(first, last) for each sub-cell's run of in_sub.
   const auto each_sub_cell = [&](auto&& f) {
     for (std::size_t first = 0, last = 0; first < in_sub.size(); first = last) {
-      for (last = first; last < in_sub.size() && in_sub[last].first == in_sub[first].first; ++last) {}
+      last = first + 1;
+      while (last < in_sub.size() && in_sub[last].first == in_sub[first].first) ++last;
       f(first, last);
     }
   };
