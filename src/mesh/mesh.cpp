@@ -75,7 +75,7 @@ namespace {
 void refine_some(const Decomposition& d, const MeshOptions& options, const detail::AreaBound& field,
                  const std::vector<double>& work, const detail::ResourceGuard& guard, MeshReport& report,
                  const std::vector<std::uint32_t>& todo, const std::vector<std::vector<Region>>& regions,
-                 std::vector<detail::SubdomainMesh>& out) {
+                 const detail::SubdomainCheck& check, bool last_round, std::vector<detail::SubdomainMesh>& out) {
   const auto n = static_cast<std::uint32_t>(todo.size());
   const auto all = static_cast<std::uint32_t>(d.subdomains.size());
   std::vector<std::uint32_t> order = todo;
@@ -107,6 +107,9 @@ void refine_some(const Decomposition& d, const MeshOptions& options, const detai
         mine.max_steiner_points = detail::steiner_budget(work[k], local.pslg.points.size());
         mine.expected_triangles = work[k];
         out[k] = detail::refine_subdomain(local.pslg, local.splittable, mine);
+        // Checked here, while in this thread's cache, unless a later round
+        // meshes it again (a separator piece of it stopped a fix).
+        if (check && (out[k].blocking_separators.empty() || last_round)) check(k, local, out[k]);
         const double s = clock.lap();
         report.subdomain_seconds[k] += s;
         report.thread_seconds[id] += s;
@@ -153,14 +156,14 @@ void throw_failed_check(const Verification& v) {
 void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBound& field,
                       const std::vector<double>& work, const ResourceGuard& guard, const std::vector<bool>& mine,
                       const SeparatorUnion& union_of, MeshReport& report, std::vector<SubdomainMesh>& pieces,
-                      const std::vector<std::vector<Region>>& regions) {
+                      const std::vector<std::vector<Region>>& regions, const SubdomainCheck& check) {
   pieces.assign(d.subdomains.size(), SubdomainMesh{});
   // Splitting separators later changes no face, so the regions hold for every round.
   std::vector<std::uint32_t> todo;
   for (std::uint32_t k = 0; k < d.subdomains.size(); ++k)
     if (mine[k]) todo.push_back(k);
   for (int round = 0;; ++round) {
-    refine_some(d, options, field, work, guard, report, todo, regions, pieces);
+    refine_some(d, options, field, work, guard, report, todo, regions, check, round == max_separator_rounds, pieces);
     if (round == max_separator_rounds) break;
     const std::vector<std::uint32_t> blocking = union_of(blocking_separators(d, todo, pieces));
     if (blocking.empty()) break;

@@ -209,16 +209,16 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
     }
   std::vector<detail::SubdomainMesh> pieces;
   const std::vector<std::vector<Region>>& regions = view.regions;
+  // Each subdomain is checked whole, against its own boundary, by the thread
+  // that meshed it as soon as it has (the union of the shares is checked by
+  // whoever joins them: tests/mpi).
+  const detail::SubdomainCheck check = [&](std::uint32_t k, const detail::LocalDomain&,
+                                           const detail::SubdomainMesh& piece) {
+    verify_subdomain(d, k, regions[k], piece, options, field);
+  };
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces,
-                           regions);
+                           regions, options.verify ? check : detail::SubdomainCheck{});
   report.phases.push_back({"refine", clock.lap()});
-  if (options.verify) {
-    detail::for_each_on_threads(part.subdomains.size(), options.decomposition.threads, [&](std::size_t i) {
-      const std::uint32_t k = part.subdomains[i];
-      verify_subdomain(d, k, regions[k], pieces[k], options, field);
-    });
-  }
-  report.phases.push_back({"verify", clock.lap()});
 
   // Steiner points and triangles of every subdomain, from every share: the
   // offsets mesh()'s merge numbers them with.
