@@ -22,8 +22,7 @@ using SeparatorUnion = std::function<std::vector<std::uint32_t>(const std::vecto
 // The self-check of subdomain k's mesh, run by the thread that made it as
 // soon as the mesh is final (no separator piece of it stopped a fix, or the
 // last round): throws to stop the run.
-using SubdomainCheck =
-    std::function<void(std::uint32_t k, const LocalDomain& local, const SubdomainMesh& piece)>;
+using SubdomainCheck = std::function<void(std::uint32_t k, const LocalDomain& local, const SubdomainMesh& piece)>;
 
 // Meshes the subdomains k with mine[k] of the discretised decomposition `d`,
 // then, round after round, splits every separator piece that stopped a fix
