@@ -223,7 +223,8 @@ MeshRun mesh_decomposition(const Decomposition& decomposition, const Pslg& domai
   detail::Stopwatch clock;
   const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   const double field_seconds = clock.lap();
-  MeshRun run = detail::mesh_decomposition_bounded(decomposition, detail::DomainWork(domain, field), options);
+  MeshRun run = detail::mesh_decomposition_bounded(
+      decomposition, detail::DomainWork(domain, field, options.decomposition.threads), options);
   if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
   return run;
 }
@@ -232,7 +233,7 @@ DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) 
   check_options(options);
   validate(domain);
   const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
-  return detail::decompose_bounded(detail::DomainWork(domain, field), options);
+  return detail::decompose_bounded(detail::DomainWork(domain, field, options.decomposition.threads), options);
 }
 
 MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
@@ -243,7 +244,7 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
   const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
   const double field_seconds = clock.lap();
   // One reading of the whole domain's work for the weights and the estimates.
-  const detail::DomainWork work(domain, field);
+  const detail::DomainWork work(domain, field, options.decomposition.threads);
   const Decomposition d = detail::decompose_bounded(work, options).decomposition;
   const double decompose_seconds = clock.lap();
   MeshRun run = detail::mesh_decomposition_bounded(d, work, options);

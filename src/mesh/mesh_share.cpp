@@ -194,8 +194,9 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   const detail::RegionView view = detail::region_view(decomposition, options.decomposition.threads);
   Decomposition d = detail::discretise(decomposition, field, false, &guard, options.decomposition.threads, &view);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, detail::DomainWork(domain, field),
-                                                         options.decomposition.threads, &decomposition, &view);
+  report.expected_triangles =
+      detail::expected_triangles(d, detail::DomainWork(domain, field, options.decomposition.threads),
+                                 options.decomposition.threads, &decomposition, &view);
   report.phases.push_back({"estimate", clock.lap()});
 
   part.share = share;

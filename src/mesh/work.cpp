@@ -340,30 +340,34 @@ void integrate_triangulation(const Triangulation& tri, Pieces pieces, const Area
 
 // Per input vertex: Ruppert's local feature size, the distance to the
 // nearest vertex or segment not incident to it (+infinity when none).
-std::vector<double> vertex_feature_sizes(const Pslg& domain) {
+std::vector<double> vertex_feature_sizes(const Pslg& domain, unsigned threads) {
   const FeatureDistance features(domain.points, domain.segments);
   std::vector<double> out(domain.points.size());
-  for (std::uint32_t v = 0; v < domain.points.size(); ++v) out[v] = features.to_nonincident(domain.points[v], v, v);
+  constexpr std::size_t chunk = 4096;
+  for_each_on_threads((out.size() + chunk - 1) / chunk, threads, [&](std::size_t k) {
+    for (std::size_t v = k * chunk; v < std::min(out.size(), (k + 1) * chunk); ++v) {
+      const auto i = static_cast<std::uint32_t>(v);
+      out[v] = features.to_nonincident(domain.points[v], i, i);
+    }
+  });
   return out;
 }
 
-// What the narrow gaps and the input's small features add under one bound
-// everywhere (whose interior is counted by area): per triangle of `tri`
-// where a gap binds at the centroid or a corner's feature size is below the
-// bound's edge, the integral with them less the integral without, one
-// sample per piece (in triangles).
-std::vector<ValuedPoint> excess_of_features(const Triangulation& tri, Pieces pieces, const AreaBound& size,
-                                            const NarrowGaps& gaps, const std::vector<double>& lfs) {
-  std::vector<ValuedPoint> out, with;
+// Triangles [begin, end) of `tri`, appended to `out`.
+void excess_of_features_in(const Triangulation& tri, std::size_t begin, std::size_t end, Pieces pieces,
+                           const AreaBound& size, const NarrowGaps& gaps, const std::vector<double>& lfs,
+                           std::vector<ValuedPoint>& out) {
+  std::vector<ValuedPoint> with;
   BoundHint hint;
-  for (const auto& v : tri.triangles) {
+  const auto lfs_of = [&](std::uint32_t i) {
+    return i < lfs.size() ? lfs[i] : std::numeric_limits<double>::infinity();
+  };
+  for (std::size_t t = begin; t < end; ++t) {
+    const auto& v = tri.triangles[t];
     const Point a = tri.points[v[0]], b = tri.points[v[1]], c = tri.points[v[2]];
     const Point g = triangle_centroid(a, b, c);
     const double bound = size.area_at(g, &hint);
     const double h = edge_of_area(bound);
-    const auto lfs_of = [&](std::uint32_t i) {
-      return i < lfs.size() ? lfs[i] : std::numeric_limits<double>::infinity();
-    };
     FeatureCorners corners{{a, b, c}, {lfs_of(v[0]), lfs_of(v[1]), lfs_of(v[2])}};
     bool small = false;
     for (int i = 0; i < 3; ++i) small |= feature_scale * corners.lfs[i] < h;
@@ -378,6 +382,24 @@ std::vector<ValuedPoint> excess_of_features(const Triangulation& tri, Pieces pie
       if (share > 0.0) out.push_back({p.at, share});
     }
   }
+}
+
+// What the narrow gaps and the input's small features add under one bound
+// everywhere (whose interior is counted by area): per triangle of `tri`
+// where a gap binds at the centroid or a corner's feature size (lfs, per
+// input vertex) is below the bound's edge, the integral with them less the
+// integral without, one sample per piece (in triangles). In chunks of
+// triangles on `threads` threads, joined in order: the same for any count.
+std::vector<ValuedPoint> excess_of_features(const Triangulation& tri, Pieces pieces, const AreaBound& size,
+                                            const NarrowGaps& gaps, const std::vector<double>& lfs, unsigned threads) {
+  constexpr std::size_t chunk = 2048;
+  const std::size_t n = tri.triangles.size(), chunks = (n + chunk - 1) / chunk;
+  std::vector<std::vector<ValuedPoint>> parts(chunks);
+  for_each_on_threads(chunks, threads, [&](std::size_t k) {
+    excess_of_features_in(tri, k * chunk, std::min(n, (k + 1) * chunk), pieces, size, gaps, lfs, parts[k]);
+  });
+  std::vector<ValuedPoint> out;
+  for (const std::vector<ValuedPoint>& part : parts) out.insert(out.end(), part.begin(), part.end());
   return out;
 }
 
@@ -509,7 +531,7 @@ Pieces domain_pieces(const Triangulation& tri) {
 
 }  // namespace
 
-DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_)
+DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_, unsigned threads)
     : domain(domain_), size(size_), triangulation(triangulate(domain_)), gaps(domain_) {
   const Pieces pieces = domain_pieces(triangulation);
   if (!size.bounded()) return;
@@ -523,7 +545,8 @@ DomainWork::DomainWork(const Pslg& domain_, const AreaBound& size_)
     excess = pinch_excess(triangulation, domain, size, gaps);
     return;
   }
-  if (pieces.longest > 0) excess = excess_of_features(triangulation, pieces, size, gaps, vertex_feature_sizes(domain));
+  if (pieces.longest > 0)
+    excess = excess_of_features(triangulation, pieces, size, gaps, vertex_feature_sizes(domain, threads), threads);
   const std::vector<ValuedPoint> pinches = pinch_excess(triangulation, domain, size, gaps);
   excess.insert(excess.end(), pinches.begin(), pinches.end());
 }

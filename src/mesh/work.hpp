@@ -18,8 +18,9 @@ namespace madd::detail {
 // (weigh_by_work, before decomposing) and every subdomain's estimate
 // (expected_triangles, after). Keeps references to `domain` and `size`.
 struct DomainWork {
-  // `domain` passed validate().
-  DomainWork(const Pslg& domain, const AreaBound& size);
+  // `domain` passed validate(). The excess is found on `threads` threads
+  // (0: one per core), the same for any count.
+  DomainWork(const Pslg& domain, const AreaBound& size, unsigned threads = 1);
   const Pslg& domain;
   const AreaBound& size;
   Triangulation triangulation;  // the domain's constrained Delaunay triangulation
