@@ -347,7 +347,11 @@ std::vector<double> vertex_feature_sizes(const Pslg& domain, unsigned threads) {
   for_each_on_threads((out.size() + chunk - 1) / chunk, threads, [&](std::size_t k) {
     for (std::size_t v = k * chunk; v < std::min(out.size(), (k + 1) * chunk); ++v) {
       const auto i = static_cast<std::uint32_t>(v);
-      out[v] = features.to_nonincident(domain.points[v], i, i);
+      const double d = features.to_nonincident(domain.points[v], i, i);
+      // 0: the vertex lies on a segment not its own (valid: refinement
+      // splits the segment there, and the pieces' ends, whose own sizes
+      // count it, are its features).
+      out[v] = d > 0.0 ? d : std::numeric_limits<double>::infinity();
     }
   });
   return out;
