@@ -27,9 +27,11 @@ struct DomainWork {
   NarrowGaps gaps;
   // The triangles the estimate's terms do not count, as samples (each in
   // triangles, a hair inside the domain): under one bound everywhere (whose
-  // interior is counted by area) the narrow gaps' excess, a sample per piece
-  // of each triangle of the triangulation where a gap binds at its centroid,
-  // and the pinches (work.cpp, pinch_excess); under a varying bound (whose
+  // interior is counted by area) the narrow gaps' and the input's small
+  // features' excess, a sample per piece of each triangle of the
+  // triangulation where a gap binds at its centroid or a corner's local
+  // feature size is below the bound's edge (work.cpp, excess_of_features),
+  // and the pinches (pinch_excess); under a varying bound (whose
   // integral counts the gaps) the pinches only; without a bound, none. The
   // subdomains' and faces' estimates add them; the weights only under one bound.
   std::vector<ValuedPoint> excess;
