@@ -240,9 +240,10 @@ struct FeatureCorners {
 
 // What a varying bound's integral reads: the bound, or the area a narrow
 // gap holds refinement to where that is smaller (narrow_gaps.hpp; null: the
-// bound alone), or the edge the input's small features hold it to (null: none). The pieces of one triangle come one
-// after another, a few triangle sides apart: each query starts where the last one ended (`hint`; a walk from the grid
-// cost a tenth of a graded decomposition).
+// bound alone), or the edge the input's small features hold it to (null:
+// none). The pieces of one triangle come one after another, a few triangle
+// sides apart: each query starts where the last one ended (`hint`; a walk
+// from the grid cost a tenth of a graded decomposition).
 struct WorkBound {
   const AreaBound& size;
   const NarrowGaps* gaps = nullptr;
