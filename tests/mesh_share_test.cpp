@@ -18,6 +18,12 @@
 #include "madd/mesh_part_output.hpp"
 #include "madd/mesh_share.hpp"
 #include "madd/poly_io.hpp"
+#include "kernel/resource_limits.hpp"
+#include "mesh/discretise.hpp"
+#include "mesh/rounds.hpp"
+#include "mesh/subdomain_regions.hpp"
+#include "mesh/work.hpp"
+#include "quality/area_bound.hpp"
 #include "interior_fixture.hpp"
 #include "mesh_fixtures.hpp"
 
@@ -207,6 +213,55 @@ TEST_CASE("mesh_share: separator pieces split between rounds are agreed on by ev
   const std::vector<madd::MeshPart> parts = mesh_in_shares(domain, o, 3, rounds);
   CHECK(rounds > 0);  // the case this test is for: a split agreed between rounds
   check_union_is(whole, parts);
+}
+
+TEST_CASE("refine_in_rounds: each subdomain's mesh is checked on its thread once final, and only then") {
+  // The archipelago at q 33 has separator pieces split between rounds (the
+  // test above): a subdomain meshed again in a later round must be checked
+  // in that round, on the mesh it keeps, and a mesh that stopped a fix only
+  // when the rounds have run out.
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/archipelago.poly");
+  madd::MeshOptions o = madd::test::options_for(12, 33, madd::domain_area(domain) / 20000);
+  o.decomposition.threads = 2;
+  const madd::detail::AreaBound field(o.size, &domain);
+  const madd::Decomposition before = madd::decompose_for_mesh(domain, o).decomposition;
+  const madd::detail::ResourceGuard guard({0.0, 0, static_cast<std::uint32_t>(before.subdomains.size())});
+  const madd::detail::RegionView view = madd::detail::region_view(before);
+  madd::Decomposition d = madd::detail::discretise(before, field, false, &guard, 2, &view);
+  const std::vector<double> work =
+      madd::detail::expected_triangles(d, madd::detail::DomainWork(domain, field), 2, &before, &view);
+  const std::size_t n = d.subdomains.size();
+  std::mutex m;
+  std::vector<int> checks(n, 0);
+  std::vector<std::size_t> last_checked(n, 0);
+  std::vector<int> blocked_at(n, 0);  // 1 + the check of k whose mesh still stopped a fix
+
+  const madd::detail::SubdomainCheck check = [&](std::uint32_t k, const madd::detail::LocalDomain&,
+                                                 const madd::detail::SubdomainMesh& piece) {
+    const std::lock_guard lock(m);
+    ++checks[k];
+    last_checked[k] = piece.triangles.size();
+    if (!piece.blocking_separators.empty()) blocked_at[k] = checks[k];
+  };
+  madd::MeshReport report;
+  std::vector<madd::detail::SubdomainMesh> pieces;
+  const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
+  madd::detail::refine_in_rounds(d, o, field, work, guard, std::vector<bool>(n, true), alone, report, pieces,
+                                 view.regions, check);
+  int again = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    CHECK(checks[k] >= 1);
+    CHECK(last_checked[k] == pieces[k].triangles.size());
+    again += checks[k] > 1 ? 1 : 0;
+  }
+  // A mesh that stopped a fix is checked only when no round follows (the
+  // rounds ran out): its check is the subdomain's last, on the mesh it keeps.
+  for (std::size_t k = 0; k < n; ++k)
+    if (blocked_at[k] != 0) {
+      CHECK(blocked_at[k] == checks[k]);
+      CHECK(!pieces[k].blocking_separators.empty());
+    }
+  CHECK(again > 0);  // the case this test is for: meshed again, checked again
 }
 
 TEST_CASE("mesh_share: with interior segments, isolated vertices and regions, 1 and 2 shares make mesh()'s mesh") {
