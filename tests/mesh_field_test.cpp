@@ -508,6 +508,27 @@ TEST_CASE("small features: a coast of short segments, or a small bump on a strai
   CHECK(plain < 1.02);
 }
 
+TEST_CASE("small features: the excess is the same on one thread and on two (chunks joined in order)") {
+  // A basin whose south side zigzags in 2,000 teeth: its triangulation has
+  // more triangles than one chunk of the pass (2,048).
+  madd::Pslg d;
+  for (int i = 0; i <= 4000; ++i) d.points.push_back({i * 0.0025, i % 2 == 0 ? 0.0 : 0.0025});
+  d.points.insert(d.points.end(), {{10, 10}, {0, 10}});
+  const auto n = static_cast<std::uint32_t>(d.points.size());
+  for (std::uint32_t i = 0; i < n; ++i) d.segments.push_back({i, (i + 1) % n, 1});
+  madd::MeshSizeOptions size;
+  size.max_triangle_area = 0.04;
+  const madd::detail::AreaBound bound(size, &d);
+  const madd::detail::DomainWork one(d, bound, 1), two(d, bound, 2);
+  REQUIRE(one.triangulation.triangles.size() > 2048);
+  REQUIRE(one.excess.size() > 1000);
+  REQUIRE(one.excess.size() == two.excess.size());
+  for (std::size_t i = 0; i < one.excess.size(); ++i) {
+    CHECK(one.excess[i].at == two.excess[i].at);
+    CHECK(one.excess[i].value == two.excess[i].value);
+  }
+}
+
 TEST_CASE("small features: a vertex on a segment not its own has no feature size of 0") {
   // The fuzz finding of issue 26 (vertex 5 on segment 1, a valid domain:
   // refinement splits the segment there). Its distance to a feature not

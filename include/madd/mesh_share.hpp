@@ -86,8 +86,9 @@ struct MeshPart {
   friend bool operator==(const MeshPart&, const MeshPart&) = default;
 };
 
-// A share's part and the report of the run that made it (the phases
-// "discretise", "refine", "verify", "merge"; the share's threads and subdomains).
+// A share's part and the report of the run that made it (the phases "size
+// field" when there is one, "discretise", "estimate", "refine", each
+// subdomain's check included, and "merge"; the share's threads and subdomains).
 struct MeshPartRun {
   MeshPart part;
   MeshReport report;
@@ -98,7 +99,8 @@ struct MeshPartRun {
 // `domain` (decompose_for_mesh's), on options.decomposition.threads threads.
 // With options.verify, each of this share's subdomain meshes is checked
 // (verify_mesh on the subdomain alone: constrained Delaunay, covering,
-// conforming to its discretised boundary, sizes and angles) before returning;
+// conforming to its discretised boundary, sizes and angles) by the thread
+// that meshed it, as soon as its mesh is final;
 // the separators both sides share are discretised identically by
 // construction, which is what makes the union conform. Throws OptionError on
 // bad options (or share >= shares), LimitError, InternalError on a failed
