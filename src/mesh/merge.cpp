@@ -1,6 +1,7 @@
 // Subdomain in, subdomain meshes out: the local view of one subdomain and
 // the merge of all of them into one mesh.
 #include "mesh/merge.hpp"
+#include "mesh/mesh_pieces.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -57,22 +58,12 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k) {
 
 namespace {
 
-// Global ids of one subdomain mesh's points.
-std::vector<std::uint32_t> global_ids(const LocalDomain& local, const SubdomainMesh& piece,
-                                      std::uint32_t first_steiner) {
-  std::vector<std::uint32_t> ids(piece.points.size());
-  for (std::size_t v = 0; v < ids.size(); ++v) {
-    ids[v] = v < local.to_global.size() ? local.to_global[v]
-                                        : first_steiner + static_cast<std::uint32_t>(v - local.to_global.size());
-  }
-  return ids;
-}
-
 // The edges of each boundary or interior piece (refinement may split both),
 // along its local segment: its end, the Steiner points on it by parameter,
 // its other end.
-void add_boundary_segments(std::vector<MeshSegment>& out, const LocalDomain& local, const SubdomainMesh& piece,
-                           const std::vector<std::uint32_t>& ids) {
+void add_boundary_segments(std::vector<MeshSegment>& out, const MeshPiecesData& m, std::uint32_t k) {
+  const LocalDomain& local = m.local[k];
+  const SubdomainMesh& piece = m.pieces[k];
   std::vector<std::tuple<std::uint32_t, double, std::uint32_t>> on;  // (local segment, parameter, vertex)
   for (std::size_t v = local.to_global.size(); v < piece.points.size(); ++v) {
     if (piece.point_segment[v] != no_index)
@@ -83,13 +74,13 @@ void add_boundary_segments(std::vector<MeshSegment>& out, const LocalDomain& loc
   for (std::uint32_t s = 0; s < local.pslg.segments.size(); ++s) {
     if (!local.splittable[s]) continue;
     const Segment& seg = local.pslg.segments[s];
-    std::uint32_t from = ids[seg.a];
+    std::uint32_t from = m.global_point(k, seg.a);
     for (; at < on.size() && std::get<0>(on[at]) == s; ++at) {
-      const std::uint32_t v = ids[std::get<2>(on[at])];
+      const std::uint32_t v = m.global_point(k, std::get<2>(on[at]));
       out.push_back({from, v, seg.marker, local.piece[s]});
       from = v;
     }
-    out.push_back({from, ids[seg.b], seg.marker, local.piece[s]});
+    out.push_back({from, m.global_point(k, seg.b), seg.marker, local.piece[s]});
   }
 }
 
@@ -98,12 +89,12 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 }
 
 // One subdomain's side of each of its separator segments: the separator
-// (global id) and the edge 3 t + i (global t) of the triangle along it.
-using SeparatorSides = std::vector<std::pair<std::uint32_t, std::uint64_t>>;
+// (global id) and the edge 3 t + i (local t) of the triangle along it.
+using SeparatorSides = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
 // Subdomain k's triangles along its separator segments (never split, so each
 // is one edge with no neighbour across, between the segment's own ends).
-SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p, std::uint32_t first_triangle) {
+SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p) {
   std::unordered_map<std::uint64_t, std::uint32_t> separator;  // local edge -> local segment
   for (std::uint32_t s = 0; s < local.pslg.segments.size(); ++s)
     if (!local.splittable[s]) {
@@ -117,7 +108,7 @@ SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p,
       if (p.neighbours[t][i] != no_index) continue;
       const std::uint32_t a = p.triangles[t][(i + 1) % 3], b = p.triangles[t][(i + 2) % 3];
       const auto it = separator.find(edge_key(a, b));
-      if (it != separator.end()) sides.emplace_back(local.piece[it->second], 3 * std::uint64_t{first_triangle + t} + i);
+      if (it != separator.end()) sides.emplace_back(local.piece[it->second], 3 * t + i);
     }
   return sides;
 }
@@ -125,124 +116,49 @@ SeparatorSides separator_sides(const LocalDomain& local, const SubdomainMesh& p,
 // Triangles on the two sides of a separator edge see each other: each
 // subdomain found its side; the second side found (in subdomain order)
 // links the two.
-void link_across_separators(Mesh& m, const std::vector<SeparatorSides>& sides) {
-  std::vector<std::uint64_t> first_side(m.decomposition.segments.size(), ~std::uint64_t{0});
-  for (const SeparatorSides& mine : sides)
-    for (const auto& [j, code] : mine) {
-      if (first_side[j] == ~std::uint64_t{0}) {
-        first_side[j] = code;
+void link_across_separators(MeshPiecesData& m, const std::vector<SeparatorSides>& sides) {
+  constexpr std::uint64_t none = ~std::uint64_t{0};
+  std::vector<std::uint64_t> first_side(m.decomposition.segments.size(), none);  // (k << 32) | local code
+  m.across.assign(sides.size(), {});
+  for (std::uint32_t k = 0; k < sides.size(); ++k)
+    for (const auto& [j, code] : sides[k]) {
+      if (first_side[j] == none) {
+        first_side[j] = (std::uint64_t{k} << 32) | code;
         continue;
       }
-      const auto t = static_cast<std::uint32_t>(code / 3), u = static_cast<std::uint32_t>(first_side[j] / 3);
-      m.neighbours[t][code % 3] = u;
-      m.neighbours[u][first_side[j] % 3] = t;
+      const auto h = static_cast<std::uint32_t>(first_side[j] >> 32);
+      const auto other = static_cast<std::uint32_t>(first_side[j]);
+      m.across[k].emplace_back(code, m.first_triangle[h] + other / 3);
+      m.across[h].emplace_back(other, m.first_triangle[k] + code / 3);
     }
+  for (auto& list : m.across) std::sort(list.begin(), list.end());
 }
 
 // Where each subdomain's Steiner points and triangles go in the merged mesh.
-struct Placement {
-  std::vector<std::uint32_t> first_point, first_triangle;  // per subdomain, N + 1 entries
-};
-
-Placement place(const Decomposition& d, const std::vector<SubdomainMesh>& pieces, const std::vector<LocalDomain>& local,
-                const std::vector<bool>& kept) {
-  Placement at;
-  std::size_t points = d.points.size(), triangles = 0;
-  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
-    at.first_point.push_back(static_cast<std::uint32_t>(points));
-    at.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
+void place(MeshPiecesData& m, const std::vector<bool>& kept) {
+  std::size_t points = m.decomposition.points.size(), triangles = 0;
+  for (std::uint32_t k = 0; k < m.pieces.size(); ++k) {
+    m.first_point.push_back(static_cast<std::uint32_t>(points));
+    m.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
     if (!kept[k]) continue;
-    points += pieces[k].points.size() - local[k].to_global.size();
-    triangles += pieces[k].triangles.size();
+    points += m.pieces[k].points.size() - m.local[k].to_global.size();
+    triangles += m.pieces[k].triangles.size();
   }
   if (points >= no_index || triangles >= no_index)
     throw LimitError("the merged mesh would have " + std::to_string(points) + " points and " +
                      std::to_string(triangles) + " triangles: more than 32-bit indices can number");
-  at.first_point.push_back(static_cast<std::uint32_t>(points));
-  at.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
-  return at;
+  m.first_point.push_back(static_cast<std::uint32_t>(points));
+  m.first_triangle.push_back(static_cast<std::uint32_t>(triangles));
 }
 
-// Subdomain k's points and triangles into their places (its own ranges:
-// any number of subdomains at once); ids: its points' global ids, base: its
-// first triangle.
-void copy_piece(Mesh& m, const LocalDomain& local, const SubdomainMesh& p, const std::vector<std::uint32_t>& ids,
-                std::uint32_t k, std::uint32_t base) {
-  for (std::size_t v = local.to_global.size(); v < p.points.size(); ++v) {
-    const std::uint32_t g = ids[v];
-    m.points[g] = p.points[v];
-    const std::uint32_t s = p.point_segment[v];
-    m.point_markers[g] = s == no_index ? 0 : local.pslg.segments[s].marker;
-  }
-  for (std::uint32_t t = 0; t < p.triangles.size(); ++t) {
-    const auto& tri = p.triangles[t];
-    m.triangles[base + t] = {ids[tri[0]], ids[tri[1]], ids[tri[2]]};
-    const auto& n = p.neighbours[t];
-    m.neighbours[base + t] = {n[0] == no_index ? no_index : base + n[0], n[1] == no_index ? no_index : base + n[1],
-                              n[2] == no_index ? no_index : base + n[2]};
-    m.triangle_subdomain[base + t] = k;
-  }
-  if (!m.decomposition.regions.empty() && p.triangle_attribute.size() == p.triangles.size())
-    std::copy(p.triangle_attribute.begin(), p.triangle_attribute.end(), m.triangle_attribute.begin() + base);
-}
-
-}  // namespace
-
-// Every subdomain on its own thread into its own ranges (placed by prefix
-// sums in subdomain order), then the short serial steps: the segments in
-// decomposition order and the links across separators.
-Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
-           const std::vector<bool>* kept_or_all, unsigned threads) {
-  const std::vector<bool> kept = kept_or_all != nullptr ? *kept_or_all : std::vector<bool>(pieces.size(), true);
-  std::vector<LocalDomain> local(pieces.size());
-  for_each_on_threads(pieces.size(), threads, [&](std::size_t k) {
-    if (kept[k]) local[k] = local_domain(d, static_cast<std::uint32_t>(k));
-  });
-  const Placement at = place(d, pieces, local, kept);
-  Mesh m;
-  m.decomposition = d;
-  m.min_triangle_angle_deg = min_triangle_angle_deg;
-  // The merged arrays' pages are faulted in on the threads that fill them
-  // (kernel/fresh_memory.hpp): on one thread they were most of the merge.
-  m.points = d.points;
-  resize_on_threads(m.points, at.first_point.back(), threads);
-  assign_on_threads(m.point_markers, at.first_point.back(), 0, threads);
-  for (std::uint32_t j = 0; j < d.segments.size(); ++j) {
-    if (d.is_separator(j)) continue;
-    const Segment& s = d.segments[j];
-    m.point_markers[s.a] = std::max(m.point_markers[s.a], s.marker);
-    m.point_markers[s.b] = std::max(m.point_markers[s.b], s.marker);
-  }
-  const std::uint32_t triangles = at.first_triangle.back();
-  resize_on_threads(m.triangles, triangles, threads);
-  resize_on_threads(m.neighbours, triangles, threads);
-  resize_on_threads(m.triangle_subdomain, triangles, threads);
-  if (!d.regions.empty()) assign_on_threads(m.triangle_attribute, triangles, 0.0, threads);  // 0: in no region
-  m.subdomain_first_triangle = at.first_triangle;
-  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
-    if (!kept[k]) continue;
-    m.shortfall.input_angle += pieces[k].shortfall.input_angle;
-    m.shortfall.separator += pieces[k].shortfall.separator;
-    m.shortfall.precision += pieces[k].shortfall.precision;
-    m.shortfall.limit += pieces[k].shortfall.limit;
-  }
-  std::vector<std::vector<MeshSegment>> segments_of(pieces.size());
-  std::vector<SeparatorSides> sides(pieces.size());
-  for_each_on_threads(pieces.size(), threads, [&](std::size_t i) {
-    const auto k = static_cast<std::uint32_t>(i);
-    if (!kept[k]) return;
-    SubdomainMesh& p = pieces[k];
-    const std::vector<std::uint32_t> ids = global_ids(local[k], p, at.first_point[k]);
-    add_boundary_segments(segments_of[k], local[k], p, ids);
-    sides[k] = separator_sides(local[k], p, at.first_triangle[k]);
-    copy_piece(m, local[k], p, ids, k, at.first_triangle[k]);
-    p = SubdomainMesh{};  // release as we go
-  });
-  // The mesh segments in decomposition-segment order, each piece's in
-  // subdomain order (a stable counting sort: no list per piece).
-  std::vector<bool> kept_separator(d.segments.size(), kept_or_all == nullptr);
+// The mesh segments in decomposition-segment order, each piece's in
+// subdomain order (a stable counting sort: no list per piece).
+void gather_segments(MeshPiecesData& m, const std::vector<std::vector<MeshSegment>>& segments_of,
+                     const std::vector<bool>& kept, bool all) {
+  const Decomposition& d = m.decomposition;
+  std::vector<bool> kept_separator(d.segments.size(), all);
   std::vector<std::uint32_t> first_of(d.segments.size() + 1, 0);
-  for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+  for (std::uint32_t k = 0; k < m.pieces.size(); ++k) {
     if (!kept[k]) continue;
     for (const auto& ring : d.subdomains[k].ring_segments)
       for (const std::uint32_t j : ring) kept_separator[j] = true;
@@ -253,10 +169,131 @@ Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double mi
   m.segments.resize(first_of.back());
   for (std::uint32_t j = 0; j < d.segments.size(); ++j)
     if (d.is_separator(j) && kept_separator[j]) m.segments[first_of[j]++] = {d.segments[j].a, d.segments[j].b, 0, j};
-  for (std::uint32_t k = 0; k < pieces.size(); ++k)
+  for (std::uint32_t k = 0; k < m.pieces.size(); ++k)
     for (const MeshSegment& s : segments_of[k]) m.segments[first_of[s.piece]++] = s;
+}
+
+// Subdomain k's points and triangles into their places (its own ranges:
+// any number of subdomains at once).
+void copy_piece(Mesh& out, const MeshPiecesData& m, std::uint32_t k) {
+  const LocalDomain& local = m.local[k];
+  const SubdomainMesh& p = m.pieces[k];
+  for (std::uint32_t v = static_cast<std::uint32_t>(local.to_global.size()); v < p.points.size(); ++v) {
+    const std::uint32_t g = m.global_point(k, v);
+    out.points[g] = p.points[v];
+    out.point_markers[g] = m.steiner_marker(k, v);
+  }
+  const std::uint32_t base = m.first_triangle[k];
+  for (std::uint32_t t = 0; t < p.triangles.size(); ++t) {
+    const auto& tri = p.triangles[t];
+    out.triangles[base + t] = {m.global_point(k, tri[0]), m.global_point(k, tri[1]), m.global_point(k, tri[2])};
+    const auto& n = p.neighbours[t];
+    for (std::uint32_t i = 0; i < 3; ++i)
+      out.neighbours[base + t][i] = n[i] == no_index ? m.global_neighbour(k, t, i) : base + n[i];
+    out.triangle_subdomain[base + t] = k;
+  }
+  if (!m.decomposition.regions.empty() && p.triangle_attribute.size() == p.triangles.size())
+    std::copy(p.triangle_attribute.begin(), p.triangle_attribute.end(), out.triangle_attribute.begin() + base);
+}
+
+}  // namespace
+
+std::uint32_t MeshPiecesData::subdomain_of_triangle(std::uint32_t t) const {
+  // The last subdomain whose range starts at or before t (empty ones skipped).
+  return static_cast<std::uint32_t>(std::upper_bound(first_triangle.begin(), first_triangle.end() - 1, t) -
+                                    first_triangle.begin() - 1);
+}
+
+std::uint32_t MeshPiecesData::subdomain_of_point(std::uint32_t v) const {
+  return static_cast<std::uint32_t>(std::upper_bound(first_point.begin(), first_point.end() - 1, v) -
+                                    first_point.begin() - 1);
+}
+
+std::uint32_t MeshPiecesData::global_neighbour(std::uint32_t k, std::uint32_t t, std::uint32_t i) const {
+  const std::uint32_t n = pieces[k].neighbours[t][i];
+  if (n != no_index) return first_triangle[k] + n;
+  const auto& list = across[k];
+  const auto it = std::lower_bound(list.begin(), list.end(), std::pair{3 * t + i, std::uint32_t{0}});
+  return it != list.end() && it->first == 3 * t + i ? it->second : no_index;
+}
+
+int MeshPiecesData::point_marker(std::uint32_t v) const {
+  if (v < point_markers.size()) return point_markers[v];
+  const std::uint32_t k = subdomain_of_point(v);
+  return steiner_marker(k, v - first_point[k] + static_cast<std::uint32_t>(local[k].to_global.size()));
+}
+
+// Every subdomain's local view and segments on the threads, then the short
+// serial steps: the placement by prefix sums, the segments in decomposition
+// order and the links across separators.
+MeshPiecesData assemble(Decomposition d, std::vector<SubdomainMesh>&& pieces, double min_triangle_angle_deg,
+                        const std::vector<bool>* kept_or_all, unsigned threads) {
+  const std::vector<bool> kept = kept_or_all != nullptr ? *kept_or_all : std::vector<bool>(pieces.size(), true);
+  MeshPiecesData m;
+  m.decomposition = std::move(d);
+  m.pieces = std::move(pieces);
+  m.min_triangle_angle_deg = min_triangle_angle_deg;
+  m.local.resize(m.pieces.size());
+  for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {
+    if (kept[k]) m.local[k] = local_domain(m.decomposition, static_cast<std::uint32_t>(k));
+  });
+  place(m, kept);
+  m.point_markers.assign(m.decomposition.points.size(), 0);
+  for (std::uint32_t j = 0; j < m.decomposition.segments.size(); ++j) {
+    if (m.decomposition.is_separator(j)) continue;
+    const Segment& s = m.decomposition.segments[j];
+    m.point_markers[s.a] = std::max(m.point_markers[s.a], s.marker);
+    m.point_markers[s.b] = std::max(m.point_markers[s.b], s.marker);
+  }
+  for (std::uint32_t k = 0; k < m.pieces.size(); ++k) {
+    if (!kept[k]) continue;
+    m.shortfall.input_angle += m.pieces[k].shortfall.input_angle;
+    m.shortfall.separator += m.pieces[k].shortfall.separator;
+    m.shortfall.precision += m.pieces[k].shortfall.precision;
+    m.shortfall.limit += m.pieces[k].shortfall.limit;
+  }
+  std::vector<std::vector<MeshSegment>> segments_of(m.pieces.size());
+  std::vector<SeparatorSides> sides(m.pieces.size());
+  for_each_on_threads(m.pieces.size(), threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    if (!kept[k]) return;
+    add_boundary_segments(segments_of[k], m, k);
+    sides[k] = separator_sides(m.local[k], m.pieces[k]);
+  });
+  gather_segments(m, segments_of, kept, kept_or_all == nullptr);
   link_across_separators(m, sides);
   return m;
+}
+
+// Every subdomain on its own thread into its own ranges.
+Mesh join(MeshPiecesData&& m, unsigned threads) {
+  Mesh out;
+  const std::uint32_t points = m.point_count(), triangles = m.triangle_count();
+  // The merged arrays' pages are faulted in on the threads that fill them
+  // (kernel/fresh_memory.hpp): on one thread they were most of the merge.
+  out.points = m.decomposition.points;
+  resize_on_threads(out.points, points, threads);
+  assign_on_threads(out.point_markers, points, 0, threads);
+  std::copy(m.point_markers.begin(), m.point_markers.end(), out.point_markers.begin());
+  resize_on_threads(out.triangles, triangles, threads);
+  resize_on_threads(out.neighbours, triangles, threads);
+  resize_on_threads(out.triangle_subdomain, triangles, threads);
+  if (m.has_regions()) assign_on_threads(out.triangle_attribute, triangles, 0.0, threads);  // 0: in no region
+  for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {
+    copy_piece(out, m, static_cast<std::uint32_t>(k));
+    m.pieces[k] = SubdomainMesh{};  // release as we go
+  });
+  out.subdomain_first_triangle = std::move(m.first_triangle);
+  out.segments = std::move(m.segments);
+  out.shortfall = m.shortfall;
+  out.min_triangle_angle_deg = m.min_triangle_angle_deg;
+  out.decomposition = std::move(m.decomposition);
+  return out;
+}
+
+Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
+           const std::vector<bool>* kept, unsigned threads) {
+  return join(assemble(d, std::move(pieces), min_triangle_angle_deg, kept, threads), threads);
 }
 
 }  // namespace madd::detail

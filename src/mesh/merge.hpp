@@ -30,7 +30,8 @@ LocalDomain local_domain(const Decomposition& d, std::uint32_t k);
 // ranges are empty, and only the separators of kept subdomains are listed);
 // the points are still all of d's, then the kept subdomains' Steiner points.
 // The subdomains are copied on `threads` threads, each into its own ranges
-// (the same mesh for any count); `pieces` are emptied as they are copied.
+// (the same mesh for any count); `pieces` are moved from. assemble() then
+// join() (mesh/mesh_pieces.hpp).
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,
            const std::vector<bool>* kept = nullptr, unsigned threads = 1);
 
