@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <type_traits>
 
 #include "commands.hpp"
 #include "input_domain.hpp"
@@ -20,6 +21,7 @@
 #include "madd/mesh.hpp"
 #include "madd/mesh_metrics.hpp"
 #include "madd/mesh_output.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/poly_io.hpp"
 
 namespace madd::cli {
@@ -38,6 +40,16 @@ constexpr const char* mesh_intro = "usage: madd mesh [options] INPUT.poly|INPUT.
 constexpr const char* mesh_exit_codes =
     "\nexit codes: 0 ok, 2 usage error, 3 bad input, 4 no decomposition, 5 output not written,\n"
     "6 limit, 70 internal error\n";
+
+template <typename AnyMesh>
+int write_mesh_outputs(const MeshArgs& args, const MeshOptions& options, const CoastDomain& input,
+                       const std::optional<DepthField>& depth, const AnyMesh& m, const MeshReport& report,
+                       std::chrono::steady_clock::time_point start, Progress& progress);
+
+std::uint64_t subdomain_triangles(const Mesh& m, std::uint32_t k) {
+  return m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k];
+}
+std::uint64_t subdomain_triangles(const MeshPieces& m, std::uint32_t k) { return m.subdomain_triangle_count(k); }
 
 int mesh_body(void* context) {
   const auto& args = *static_cast<const MeshArgs*>(context);
@@ -58,21 +70,40 @@ int mesh_body(void* context) {
   const std::optional<DepthField> depth = read_depth(line);
   if (depth) set_depth(options.size, *depth, input.projection);
   progress.say("meshing " + std::to_string(options.decomposition.subdomains) + " subdomains");
-  const MeshRun run = [&] {
+  const auto meshed = [&](auto make) {
     try {
-      return mesh_with_report(domain, options);
+      return make(domain, options);
     } catch (const OptionError& e) {  // a check that needs the domain (the coast markers), said with the flags
       throw OptionError(e.option(), e.requirement(), cli_message(e, mesh_options(), line));
     }
-  }();
-  const Mesh& m = run.mesh;
-  const MeshReport& report = run.report;
+  };
+  // The files of Triangle's formats and the split pieces are written from
+  // the subdomains' meshes as they were made (docs/mesh.md, "Meshes in
+  // pieces"); the model files, .msh and .vtu from the merged mesh.
+  const bool merged = wants_model_files(line, input.projection) || line.formats.msh || line.formats.vtu;
+  if (merged) {
+    const MeshRun run = meshed([](const Pslg& d, const MeshOptions& o) { return mesh_with_report(d, o); });
+    return write_mesh_outputs(args, options, input, depth, run.mesh, run.report, start, progress);
+  }
+  const MeshPiecesRun run = meshed([](const Pslg& d, const MeshOptions& o) { return mesh_pieces_with_report(d, o); });
+  return write_mesh_outputs(args, options, input, depth, run.mesh, run.report, start, progress);
+}
+
+// The outputs of a mesh, merged (Mesh) or in pieces (MeshPieces), all or
+// nothing, then the summary line.
+template <typename AnyMesh>
+int write_mesh_outputs(const MeshArgs& args, const MeshOptions& options, const CoastDomain& input,
+                       const std::optional<DepthField>& depth, const AnyMesh& m, const MeshReport& report,
+                       std::chrono::steady_clock::time_point start, Progress& progress) {
+  const CommandLine& line = args.line;
   progress.say("writing");
   OutputSet outputs;
   ModelFiles model_files;
-  if (!add_model_files(outputs, model_files, m, line, args.prefix, input.projection, depth,
-                       options.decomposition.threads))
-    add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
+  bool model = false;
+  if constexpr (std::is_same_v<AnyMesh, Mesh>)
+    model = add_model_files(outputs, model_files, m, line, args.prefix, input.projection, depth,
+                            options.decomposition.threads);
+  if (!model) add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
   if (!line.split_mesh_dir.empty()) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
     add_split_mesh(outputs, m, line.split_mesh_dir, stem, line.formats.first_index, options.decomposition.threads);
@@ -84,7 +115,7 @@ int mesh_body(void* context) {
     std::vector<RunFigure> figures_of_run = run_figures(report);
     std::vector<double> triangles_per_subdomain;
     for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
-      triangles_per_subdomain.push_back(m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k]);
+      triangles_per_subdomain.push_back(static_cast<double>(subdomain_triangles(m, k)));
     figures_of_run.push_back({"subdomain_triangles", triangles_per_subdomain});
     figures_of_run.push_back({"seconds", seconds_since(start)});
     json = format_mesh_report_json(figures, figures_of_run);

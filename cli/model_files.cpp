@@ -25,11 +25,16 @@ std::optional<DepthField> read_depth(const CommandLine& line) {
   return DepthField(read_bathymetry(line.depth_file, line.depth_up));
 }
 
+bool wants_model_files(const CommandLine& line, const Projection& projection) {
+  const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
+  return model || (line.lonlat && projection.geographic);
+}
+
 bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
                      const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
                      unsigned threads, const std::string& title) {
+  if (!wants_model_files(line, projection)) return false;
   const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
-  if (!model && !(line.lonlat && projection.geographic)) return false;
   const std::vector<Point> lonlat = projection.geographic ? in_lonlat(mesh.points, projection) : std::vector<Point>{};
   files.metres.title = !title.empty() ? title : std::filesystem::path(prefix).filename().string() + " (madd mesh)";
   if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);

@@ -26,6 +26,11 @@ struct ModelFiles {
 // The depth file of the command line, read (nullopt without --depth).
 std::optional<DepthField> read_depth(const CommandLine& line);
 
+// Whether the command line asks for model files (--fort14, --gr3, --sms) or
+// for the mesh files in lon/lat (--lonlat on a geographic input): what
+// add_model_files writes, from the merged mesh.
+bool wants_model_files(const CommandLine& line, const Projection& projection);
+
 // Fills `files` for `mesh` and adds every model file the command line asks
 // for to `outputs`, and with --lonlat PREFIX's mesh files in lon/lat
 // (instead of add_mesh's). Returns whether it added the mesh files. The

@@ -12,6 +12,7 @@
 #include "madd/intersections.hpp"
 #include "madd/medial.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/mesh_metrics.hpp"
 #include "madd/mesh_output.hpp"
 #include "madd/mesh_part_output.hpp"

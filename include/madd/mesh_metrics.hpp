@@ -13,6 +13,7 @@
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/mesh_share.hpp"
 
 namespace madd {
@@ -53,6 +54,8 @@ MeshMetrics mesh_metrics(const Mesh& mesh, const MeshSizeOptions& size = {}, uns
 // The same figures of one share's triangles (MeshPart::mesh): subdomains is
 // the whole count, largest_subdomain_triangles that of the share's largest.
 MeshMetrics mesh_metrics(const LocalMesh& mesh, const MeshSizeOptions& size = {}, unsigned threads = 1);
+// The figures of a mesh kept in pieces: those of join(mesh).
+MeshMetrics mesh_metrics(const MeshPieces& mesh, const MeshSizeOptions& size = {}, unsigned threads = 1);
 
 // One figure of a run beside the mesh's own, as a report writes it after
 // them: a number, a list of seconds, or named seconds. Run figures (times,

@@ -18,6 +18,7 @@
 #include "madd/atomic_write.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_metrics.hpp"
+#include "madd/mesh_pieces.hpp"
 
 namespace madd {
 
@@ -101,6 +102,12 @@ struct MeshFormats {
 // bytes for any count (FilePieces): `mesh` must outlive outputs.write().
 void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {},
               unsigned threads = 1);
+// The same files of a mesh kept in pieces (madd/mesh_pieces.hpp), byte for
+// byte those of join(mesh), read from the pieces while they are written:
+// `mesh` must outlive outputs.write(). The .msh and .vtu files are made from
+// the merged mesh only (OptionError naming "msh" or "vtu").
+void add_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& prefix, const MeshFormats& formats = {},
+              unsigned threads = 1);
 // The same, written at once, all or nothing. Throws OutputError on I/O failure.
 void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats = {}, unsigned threads = 1);
 
@@ -111,6 +118,8 @@ void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& 
 // The subdomains' files are formatted on `threads` threads (0: one per
 // core), the same bytes for any count.
 void add_split_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& dir, std::string_view stem,
+                    unsigned first_index = 1, unsigned threads = 1);
+void add_split_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& dir, std::string_view stem,
                     unsigned first_index = 1, unsigned threads = 1);
 void write_split_mesh(const Mesh& mesh, const std::string& dir, std::string_view stem, unsigned first_index = 1,
                       unsigned threads = 1);

@@ -2,6 +2,7 @@
 // the merge of all of them into one mesh.
 #include "mesh/merge.hpp"
 #include "mesh/mesh_pieces.hpp"
+#include "mesh/pieces_view.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -289,6 +290,32 @@ Mesh join(MeshPiecesData&& m, unsigned threads) {
   out.min_triangle_angle_deg = m.min_triangle_angle_deg;
   out.decomposition = std::move(m.decomposition);
   return out;
+}
+
+Point PiecesView::point_at(const MeshPiecesData& m, std::size_t v) {
+  const auto g = static_cast<std::uint32_t>(v);
+  if (g < m.decomposition.points.size()) return m.decomposition.points[g];
+  const std::uint32_t k = m.subdomain_of_point(g);
+  return m.pieces[k].points[g - m.first_point[k] + m.local[k].to_global.size()];
+}
+
+std::array<std::uint32_t, 3> PiecesView::triangle_at(const MeshPiecesData& m, std::size_t t) {
+  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
+  const auto& c = m.pieces[k].triangles[t - m.first_triangle[k]];
+  return {m.global_point(k, c[0]), m.global_point(k, c[1]), m.global_point(k, c[2])};
+}
+
+std::array<std::uint32_t, 3> PiecesView::neighbours_at(const MeshPiecesData& m, std::size_t t) {
+  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
+  const auto local = static_cast<std::uint32_t>(t - m.first_triangle[k]);
+  return {m.global_neighbour(k, local, 0), m.global_neighbour(k, local, 1), m.global_neighbour(k, local, 2)};
+}
+
+// As join() copies it: a piece's attributes when it has one per triangle, else 0.
+double PiecesView::attribute_at(const MeshPiecesData& m, std::size_t t) {
+  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
+  const SubdomainMesh& p = m.pieces[k];
+  return p.triangle_attribute.size() == p.triangles.size() ? p.triangle_attribute[t - m.first_triangle[k]] : 0.0;
 }
 
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -20,6 +21,10 @@
 #include "decompose/decompose_valid.hpp"
 #include "mesh/discretise.hpp"
 #include "mesh/merge.hpp"
+#include "mesh/mesh_pieces.hpp"
+#include "mesh/pieces_check.hpp"
+#include "mesh/subdomain_check.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "mesh/refine.hpp"
 #include "mesh/rounds.hpp"
 #include "quality/area_bound.hpp"
@@ -177,36 +182,77 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 
 namespace detail {
 
-// Meshes `decomposition` of work.domain under work.size (built once per run).
-MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const DomainWork& work,
-                                   const MeshOptions& options) {
-  const Pslg& domain = work.domain;
+// A run up to its refined subdomains: the discretised decomposition, each
+// subdomain's mesh and regions.
+struct Refined {
+  Decomposition d;
+  std::vector<SubdomainMesh> pieces;
+  RegionView view;
+};
+
+// The decoupling, the estimate and refinement of `decomposition` of
+// work.domain under work.size (built once per run); `check`: run on each
+// subdomain's mesh by the thread that made it, once final.
+Refined refine_decomposition(const Decomposition& decomposition, const DomainWork& work, const MeshOptions& options,
+                             MeshReport& report, detail::Stopwatch& clock, bool check_on_workers) {
   const AreaBound& field = work.size;
-  MeshRun run;
-  MeshReport& report = run.report;
-  detail::Stopwatch clock;
   const detail::ResourceGuard guard({options.decomposition.time_limit_seconds, options.decomposition.max_memory_bytes,
                                      static_cast<std::uint32_t>(decomposition.subdomains.size())});
   const unsigned threads = options.decomposition.threads;
+  Refined out;
   // The subdomains' regions, found once (a triangulation of the whole
   // domain): the decoupling's split points change no face.
-  const RegionView view = region_view(decomposition, threads);
-  Decomposition d = detail::discretise(decomposition, field, false, &guard, threads, &view);
+  out.view = region_view(decomposition, threads);
+  out.d = detail::discretise(decomposition, field, false, &guard, threads, &out.view);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(d, work, threads, &decomposition, &view);
+  report.expected_triangles = detail::expected_triangles(out.d, work, threads, &decomposition, &out.view);
   report.phases.push_back({"estimate", clock.lap()});
-  std::vector<detail::SubdomainMesh> pieces;
-  const std::vector<bool> all(d.subdomains.size(), true);
+  const std::vector<bool> all(out.d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
-  detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, all, alone, report, pieces,
-                           view.regions);
+  const SubdomainCheck check = [&](std::uint32_t k, const LocalDomain&, const SubdomainMesh& piece) {
+    verify_subdomain(out.d, k, out.view.regions[k], piece, options.size.min_triangle_angle_deg, field);
+  };
+  detail::refine_in_rounds(out.d, options, field, report.expected_triangles, guard, all, alone, report, out.pieces,
+                           out.view.regions, check_on_workers ? check : SubdomainCheck{});
   report.phases.push_back({"refine", clock.lap()});
-  run.mesh = detail::merge(d, pieces, options.size.min_triangle_angle_deg, nullptr, options.decomposition.threads);
-  report.phases.push_back({"merge", clock.lap()});
-  const Verification v =
-      options.verify ? detail::verify_mesh(run.mesh, domain, field, options.decomposition.threads) : Verification{};
-  report.phases.push_back({"verify", clock.lap()});
+  return out;
+}
+
+// Meshes `decomposition` of work.domain under work.size into one Mesh,
+// checked whole.
+MeshRun mesh_decomposition_bounded(const Decomposition& decomposition, const DomainWork& work,
+                                   const MeshOptions& options) {
+  MeshRun run;
+  detail::Stopwatch clock;
+  Refined refined = refine_decomposition(decomposition, work, options, run.report, clock, false);
+  run.mesh = detail::merge(refined.d, refined.pieces, options.size.min_triangle_angle_deg, nullptr,
+                           options.decomposition.threads);
+  run.report.phases.push_back({"merge", clock.lap()});
+  const Verification v = options.verify
+                             ? detail::verify_mesh(run.mesh, work.domain, work.size, options.decomposition.threads)
+                             : Verification{};
+  run.report.phases.push_back({"verify", clock.lap()});
   if (!v.ok()) detail::throw_failed_check(v);
+  return run;
+}
+
+// The same kept in pieces: each subdomain checked by its worker, what
+// crosses subdomains after.
+MeshPiecesRun mesh_pieces_bounded(const Decomposition& decomposition, const DomainWork& work,
+                                  const MeshOptions& options) {
+  MeshPiecesRun run;
+  detail::Stopwatch clock;
+  Refined refined = refine_decomposition(decomposition, work, options, run.report, clock, options.verify);
+  const unsigned threads = options.decomposition.threads;
+  MeshPiecesData pieces = detail::assemble(std::move(refined.d), std::move(refined.pieces),
+                                           options.size.min_triangle_angle_deg, nullptr, threads);
+  run.report.phases.push_back({"assemble", clock.lap()});
+  const Verification v =
+      options.verify ? detail::verify_pieces(pieces, work.domain, work.size, refined.view.regions, true, threads)
+                     : Verification{};
+  run.report.phases.push_back({"verify", clock.lap()});
+  if (!v.ok()) detail::throw_failed_check(v);
+  run.mesh = MeshPieces(std::move(pieces));
   return run;
 }
 
@@ -254,5 +300,70 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
 }
 
 Mesh mesh(const Pslg& domain, const MeshOptions& options) { return mesh_with_report(domain, options).mesh; }
+
+MeshPiecesRun mesh_pieces_with_report(const Pslg& domain, const MeshOptions& options) {
+  check_options(options);
+  detail::Stopwatch clock;
+  validate(domain);
+  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
+  const double field_seconds = clock.lap();
+  const detail::DomainWork work(domain, field, options.decomposition.threads);
+  const Decomposition d = detail::decompose_bounded(work, options).decomposition;
+  const double decompose_seconds = clock.lap();
+  MeshPiecesRun run = detail::mesh_pieces_bounded(d, work, options);
+  run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
+  if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
+  return run;
+}
+
+// MeshPieces: a value holding the pieces' data.
+MeshPieces::MeshPieces() : data_(std::make_unique<detail::MeshPiecesData>()) {}
+MeshPieces::MeshPieces(detail::MeshPiecesData data)
+    : data_(std::make_unique<detail::MeshPiecesData>(std::move(data))) {}
+MeshPieces::MeshPieces(const MeshPieces& other) : data_(std::make_unique<detail::MeshPiecesData>(*other.data_)) {}
+MeshPieces::MeshPieces(MeshPieces&& other) noexcept : data_(std::move(other.data_)) {
+  other.data_ = std::make_unique<detail::MeshPiecesData>();
+}
+MeshPieces& MeshPieces::operator=(const MeshPieces& other) {
+  if (this != &other) *data_ = *other.data_;
+  return *this;
+}
+MeshPieces& MeshPieces::operator=(MeshPieces&& other) noexcept {
+  std::swap(data_, other.data_);
+  return *this;
+}
+MeshPieces::~MeshPieces() = default;
+
+std::uint32_t MeshPieces::subdomain_count() const noexcept { return data_->subdomain_count(); }
+std::uint64_t MeshPieces::point_count() const noexcept { return data_->point_count(); }
+std::uint64_t MeshPieces::triangle_count() const noexcept { return data_->triangle_count(); }
+std::uint64_t MeshPieces::subdomain_triangle_count(std::uint32_t k) const {
+  return data_->first_triangle.at(k + 1) - data_->first_triangle.at(k);
+}
+const Decomposition& MeshPieces::decomposition() const noexcept { return data_->decomposition; }
+MeshShortfall MeshPieces::shortfall() const noexcept { return data_->shortfall; }
+double MeshPieces::min_triangle_angle_deg() const noexcept { return data_->min_triangle_angle_deg; }
+
+Mesh join(MeshPieces pieces, unsigned threads) { return detail::join(std::move(*pieces.data_), threads); }
+
+Verification verify_mesh(const MeshPieces& mesh, const Pslg& domain, const MeshSizeOptions& size, unsigned threads) {
+  Verification result;
+  std::optional<detail::AreaBound> bound;
+  try {
+    bound.emplace(size, &domain, threads);
+  } catch (const std::exception& e) {
+    result.add(std::string("the size bound could not be built: ") + e.what());
+    return result;
+  }
+  const detail::MeshPiecesData& m = mesh.data();
+  std::vector<std::vector<Region>> regions(m.pieces.size());
+  try {
+    regions = detail::region_view(m.decomposition, threads).regions;
+  } catch (const std::exception& e) {
+    result.add(std::string("the subdomains' regions could not be found: ") + e.what());
+    return result;
+  }
+  return detail::verify_pieces(m, domain, *bound, regions, false, threads);
+}
 
 }  // namespace madd

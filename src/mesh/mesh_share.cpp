@@ -19,6 +19,7 @@
 #include "quality/verify_mesh_bounded.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/rounds.hpp"
+#include "mesh/subdomain_check.hpp"
 #include "quality/area_bound.hpp"
 #include "mesh/work.hpp"
 
@@ -41,60 +42,6 @@ std::vector<std::uint32_t> assign_shares(const std::vector<double>& expected_tri
 }
 
 namespace {
-
-// Subdomain k of `d` as a domain of its own, every ring segment a boundary
-// piece (a separator's marker 0 becomes 1, as an unmarked boundary), its
-// interior pieces and isolated vertices its own, and its regions, so that
-// verify_mesh can check its mesh alone.
-struct SubdomainAlone {
-  Pslg domain;
-  Decomposition decomposition;
-};
-
-SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions) {
-  const detail::LocalDomain local = detail::local_domain(d, k);
-  SubdomainAlone out;
-  out.domain = local.pslg;
-  out.domain.regions = regions;  // the subdomain's own regions (mesh/subdomain_regions.hpp)
-  for (Segment& s : out.domain.segments)
-    if (s.marker == 0) s.marker = 1;
-  Decomposition& dk = out.decomposition;
-  dk.points = out.domain.points;
-  dk.segments = out.domain.segments;
-  dk.segment_origin.resize(dk.segments.size());
-  std::iota(dk.segment_origin.begin(), dk.segment_origin.end(), 0u);
-  dk.holes = out.domain.holes;
-  dk.regions = out.domain.regions;
-  dk.separator_angle_deg = d.separator_angle_deg;
-  Subdomain s = d.subdomains[k];
-  std::uint32_t next = 0;
-  for (std::size_t r = 0; r < s.rings.size(); ++r)
-    for (std::size_t i = 0; i < s.rings[r].size(); ++i, ++next) {
-      s.rings[r][i] = next;
-      s.ring_segments[r][i] = next;
-    }
-  // Interior pieces follow the ring segments, in order; isolated vertices
-  // are the local points of their global ids.
-  for (std::uint32_t& j : s.interior_segments) j = next++;
-  std::unordered_map<std::uint32_t, std::uint32_t> local_of;
-  for (std::uint32_t v = 0; v < local.to_global.size(); ++v) local_of.emplace(local.to_global[v], v);
-  for (std::uint32_t& v : s.interior_points) v = local_of.at(v);
-  std::sort(s.interior_points.begin(), s.interior_points.end());
-  dk.subdomains.push_back(std::move(s));
-  return out;
-}
-
-void verify_subdomain(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions,
-                      const detail::SubdomainMesh& piece, const MeshOptions& options, const detail::AreaBound& field) {
-  const SubdomainAlone alone = subdomain_alone(d, k, regions);
-  std::vector<detail::SubdomainMesh> one{piece};
-  const Mesh m = detail::merge(alone.decomposition, one, options.size.min_triangle_angle_deg);
-  const Verification v = detail::verify_mesh(m, alone.domain, field);
-  if (v.ok()) return;
-  Verification named;
-  for (const std::string& p : v.problems) named.problems.push_back("subdomain " + std::to_string(k) + ": " + p);
-  detail::throw_failed_check(named);
-}
 
 std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& counts, std::size_t first, std::size_t n,
                                           std::uint64_t& total) {
@@ -215,7 +162,7 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   // whoever joins them: tests/mpi).
   const detail::SubdomainCheck check = [&](std::uint32_t k, const detail::LocalDomain&,
                                            const detail::SubdomainMesh& piece) {
-    verify_subdomain(d, k, regions[k], piece, options, field);
+    detail::verify_subdomain(d, k, regions[k], piece, options.size.min_triangle_angle_deg, field);
   };
   detail::refine_in_rounds(d, options, field, report.expected_triangles, guard, mine, exchange.union_of, report, pieces,
                            regions, options.verify ? check : detail::SubdomainCheck{});

@@ -52,7 +52,7 @@ struct Model {
 // input segment) join the curve of their marker too, once each, as the
 // lower-numbered of their triangles runs them.
 Model boundary_model(const Mesh& mesh) {
-  const auto segment_markers = detail::segment_markers(mesh);
+  const auto segment_markers = detail::segment_markers(mesh.segments);
   const std::vector<std::uint32_t> owner = interior_segment_owners(mesh.decomposition);
   std::unordered_map<std::uint64_t, int> interior;
   for (const MeshSegment& s : mesh.segments)

@@ -15,6 +15,7 @@
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
 #include "kernel/number_format.hpp"
+#include "mesh/pieces_view.hpp"
 
 namespace madd::detail {
 
@@ -81,6 +82,14 @@ inline std::string joined(const FilePieces& pieces) {
 FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
 FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
 FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads);
+// The same files of a mesh kept in pieces (mesh/mesh_pieces.hpp): the same
+// bytes as those of the merged mesh, read through PiecesView.
+FilePieces mesh_node_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads);
+FilePieces mesh_ele_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads);
+FilePieces mesh_neigh_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads);
+std::string format_mesh_edge(const MeshPiecesData& mesh, unsigned first_index);
+std::string format_subdomain_mesh_node(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index);
+std::string format_subdomain_mesh_ele(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index);
 
 // One value of a line: integers as they are, doubles as %.17g, so a vertex
 // has the same text in the whole mesh's files and in its split pieces.
@@ -100,6 +109,7 @@ void line(std::string& out, First first, Rest... rest) {
 // part of a distributed one (even a part with no triangles), has the same columns.
 inline bool has_region_attributes(const Mesh& mesh) { return !mesh.decomposition.regions.empty(); }
 inline bool has_region_attributes(const MeshPart& part) { return !part.decomposition.regions.empty(); }
+inline bool has_region_attributes(const PiecesView& view) { return view.data().has_regions(); }
 template <typename AnyMesh>  // a Mesh or a part's LocalMesh
 double region_attribute(const AnyMesh& mesh, std::size_t t) {
   return t < mesh.triangle_attribute.size() ? mesh.triangle_attribute[t] : 0.0;
@@ -113,7 +123,7 @@ inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 
 // The marker of every MeshSegment, by edge: what a boundary edge of the mesh
 // is labelled with.
-std::unordered_map<std::uint64_t, int> segment_markers(const Mesh& mesh);
+std::unordered_map<std::uint64_t, int> segment_markers(const std::vector<MeshSegment>& segments);
 
 // The marker written for the domain-boundary edge {a, b}: its segment's, or 1
 // (Triangle's marker of an unmarked boundary) should no segment cover it.

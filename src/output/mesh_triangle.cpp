@@ -4,6 +4,7 @@
 // output take them.
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -21,10 +22,10 @@ void check_first_index(unsigned first_index) {
   if (first_index > 1) throw OptionError("first_index", "must be 0 or 1 (the id of the first point and triangle)");
 }
 
-std::unordered_map<std::uint64_t, int> segment_markers(const Mesh& mesh) {
+std::unordered_map<std::uint64_t, int> segment_markers(const std::vector<MeshSegment>& segments) {
   std::unordered_map<std::uint64_t, int> markers;
-  markers.reserve(mesh.segments.size());
-  for (const MeshSegment& s : mesh.segments) markers[edge_key(s.a, s.b)] = s.marker;
+  markers.reserve(segments.size());
+  for (const MeshSegment& s : segments) markers[edge_key(s.a, s.b)] = s.marker;
   return markers;
 }
 
@@ -41,38 +42,48 @@ using detail::line;
 
 // Lines of "id v0 v1 v2 k" per triangle, vertices through `id_of`, then
 // the region attribute of triangle `t` when the mesh has them.
-template <typename IdOf>
+template <typename IdOf, typename AnyMesh>
 void append_triangle_line(std::string& out, std::int64_t id, const std::array<std::uint32_t, 3>& t, IdOf id_of,
-                          std::uint32_t subdomain, const Mesh& mesh, std::size_t triangle) {
+                          std::uint32_t subdomain, const AnyMesh& mesh, std::size_t triangle) {
   if (!detail::has_region_attributes(mesh)) line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain);
   else line(out, id, id_of(t[0]), id_of(t[1]), id_of(t[2]), subdomain, detail::region_attribute(mesh, triangle));
 }
 
 // The .ele attribute count: the subdomain, and the region attribute with regions.
-int ele_attributes(const Mesh& mesh) { return detail::has_region_attributes(mesh) ? 2 : 1; }
+template <typename AnyMesh>
+int ele_attributes(const AnyMesh& mesh) {
+  return detail::has_region_attributes(mesh) ? 2 : 1;
+}
 
 }  // namespace
 
 namespace detail {
 
-FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+// `handle`: a pointer to the mesh or its view, copied into the pieces'
+// functions (so a view made here lives as long as they do).
+template <typename Handle>
+FilePieces mesh_node_pieces_of(Handle handle, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
-  const std::size_t n = mesh.points.size();
+  const std::size_t n = handle->points.size();
   return line_pieces(
       n, 48, [n](std::string& out) { line(out, n, 2, 0, 1); },
-      [&mesh, first_index](std::string& out, std::size_t v) {
+      [handle, first_index](std::string& out, std::size_t v) {
+        const auto& mesh = *handle;
         const int marker = v < mesh.point_markers.size() ? mesh.point_markers[v] : 0;
-        line(out, v + first_index, mesh.points[v].x, mesh.points[v].y, marker);
+        const Point p = mesh.points[v];
+        line(out, v + first_index, p.x, p.y, marker);
       },
       threads);
 }
 
-FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+template <typename Handle>
+FilePieces mesh_ele_pieces_of(Handle handle, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
-  const std::size_t n = mesh.triangles.size();
+  const std::size_t n = handle->triangles.size();
   return line_pieces(
-      n, 40, [&mesh, n](std::string& out) { line(out, n, 3, ele_attributes(mesh)); },
-      [&mesh, first_index](std::string& out, std::size_t t) {
+      n, 40, [handle, n](std::string& out) { line(out, n, 3, ele_attributes(*handle)); },
+      [handle, first_index](std::string& out, std::size_t t) {
+        const auto& mesh = *handle;
         const auto id_of = [first_index](std::uint32_t v) { return std::int64_t{v} + first_index; };
         append_triangle_line(out, static_cast<std::int64_t>(t + first_index), mesh.triangles[t], id_of,
                              mesh.triangle_subdomain[t], mesh, t);
@@ -80,19 +91,41 @@ FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned thre
       threads);
 }
 
-FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+template <typename Handle>
+FilePieces mesh_neigh_pieces_of(Handle handle, unsigned first_index, unsigned threads) {
   check_first_index(first_index);
-  const std::size_t n = mesh.neighbours.size();
+  const std::size_t n = handle->neighbours.size();
   return line_pieces(
-      n, 36, [&mesh](std::string& out) { line(out, mesh.triangles.size(), 3); },
-      [&mesh, first_index](std::string& out, std::size_t t) {
+      n, 36, [n](std::string& out) { line(out, n, 3); },
+      [handle, first_index](std::string& out, std::size_t t) {
         const auto id_of = [first_index](std::uint32_t u) {
           return u == no_index ? -1 : std::int64_t{u} + first_index;
         };
-        const auto& u = mesh.neighbours[t];
+        const std::array<std::uint32_t, 3> u = handle->neighbours[t];
         line(out, t + first_index, id_of(u[0]), id_of(u[1]), id_of(u[2]));
       },
       threads);
+}
+
+FilePieces mesh_node_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  return mesh_node_pieces_of(&mesh, first_index, threads);
+}
+FilePieces mesh_ele_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  return mesh_ele_pieces_of(&mesh, first_index, threads);
+}
+FilePieces mesh_neigh_pieces(const Mesh& mesh, unsigned first_index, unsigned threads) {
+  return mesh_neigh_pieces_of(&mesh, first_index, threads);
+}
+// The pieces' view lives in the FilePieces' functions (it holds only
+// references to the pieces, which outlive the write).
+FilePieces mesh_node_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads) {
+  return mesh_node_pieces_of(std::make_shared<const PiecesView>(mesh), first_index, threads);
+}
+FilePieces mesh_ele_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads) {
+  return mesh_ele_pieces_of(std::make_shared<const PiecesView>(mesh), first_index, threads);
+}
+FilePieces mesh_neigh_pieces(const MeshPiecesData& mesh, unsigned first_index, unsigned threads) {
+  return mesh_neigh_pieces_of(std::make_shared<const PiecesView>(mesh), first_index, threads);
 }
 
 }  // namespace detail
@@ -111,18 +144,22 @@ std::string format_mesh_neigh(const Mesh& mesh, unsigned first_index) {
 
 // Each edge once, from the lower-numbered of its two triangles (or its only
 // one), as cmd_triangulate writes it: the count is only known at the end.
-std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) {
+namespace {
+
+template <typename AnyMesh>
+std::string edge_text(const AnyMesh& mesh, unsigned first_index) {
   detail::check_first_index(first_index);
-  const auto markers = detail::segment_markers(mesh);
+  const auto markers = detail::segment_markers(mesh.segments);
   std::string body;
   body.reserve(30 * 3 * mesh.triangles.size() / 2 + 32);
   std::int64_t count = 0;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::array<std::uint32_t, 3> neighbours = mesh.neighbours[t], corners = mesh.triangles[t];
     for (int i = 0; i < 3; ++i) {
-      const std::uint32_t across = mesh.neighbours[t][static_cast<std::size_t>(i)];
+      const std::uint32_t across = neighbours[static_cast<std::size_t>(i)];
       if (across != no_index && across < t) continue;
-      const std::uint32_t a = mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)];
-      const std::uint32_t b = mesh.triangles[t][static_cast<std::size_t>((i + 2) % 3)];
+      const std::uint32_t a = corners[static_cast<std::size_t>((i + 1) % 3)];
+      const std::uint32_t b = corners[static_cast<std::size_t>((i + 2) % 3)];
       // An edge inside the domain: an interior segment's marker, else 0 (separators too).
       const auto inside = across == no_index ? markers.end() : markers.find(detail::edge_key(a, b));
       const int marker = across == no_index        ? detail::boundary_marker(markers, a, b)
@@ -137,22 +174,36 @@ std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) {
   return out + body;
 }
 
+}  // namespace
+
+std::string format_mesh_edge(const Mesh& mesh, unsigned first_index) { return edge_text(mesh, first_index); }
+
+namespace detail {
+
+std::string format_mesh_edge(const MeshPiecesData& mesh, unsigned first_index) {
+  return edge_text(PiecesView(mesh), first_index);
+}
+
+}  // namespace detail
+
 namespace {
 
 // The global vertices of subdomain k's triangles, in increasing index: its
 // piece's local numbering (local id = position + first_index).
-std::vector<std::uint32_t> subdomain_vertices(const Mesh& mesh, std::uint32_t k) {
+template <typename AnyMesh>
+std::vector<std::uint32_t> subdomain_vertices(const AnyMesh& mesh, std::uint32_t k) {
   std::vector<std::uint32_t> vertices;
-  for (std::uint32_t t = mesh.subdomain_first_triangle.at(k); t < mesh.subdomain_first_triangle.at(k + 1); ++t)
-    vertices.insert(vertices.end(), mesh.triangles[t].begin(), mesh.triangles[t].end());
+  for (std::uint32_t t = mesh.subdomain_first_triangle.at(k); t < mesh.subdomain_first_triangle.at(k + 1); ++t) {
+    const std::array<std::uint32_t, 3> corners = mesh.triangles[t];
+    vertices.insert(vertices.end(), corners.begin(), corners.end());
+  }
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   return vertices;
 }
 
-}  // namespace
-
-std::string format_subdomain_mesh_node(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+template <typename AnyMesh>
+std::string subdomain_node_text(const AnyMesh& mesh, std::uint32_t k, unsigned first_index) {
   detail::check_first_index(first_index);
   const std::vector<std::uint32_t> vertices = subdomain_vertices(mesh, k);
   std::string out;
@@ -161,12 +212,14 @@ std::string format_subdomain_mesh_node(const Mesh& mesh, std::uint32_t k, unsign
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const std::uint32_t g = vertices[i];
     const int marker = g < mesh.point_markers.size() ? mesh.point_markers[g] : 0;
-    line(out, i + first_index, mesh.points[g].x, mesh.points[g].y, std::int64_t{g} + first_index, marker);
+    const Point p = mesh.points[g];
+    line(out, i + first_index, p.x, p.y, std::int64_t{g} + first_index, marker);
   }
   return out;
 }
 
-std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+template <typename AnyMesh>
+std::string subdomain_ele_text(const AnyMesh& mesh, std::uint32_t k, unsigned first_index) {
   detail::check_first_index(first_index);
   const std::vector<std::uint32_t> vertices = subdomain_vertices(mesh, k);
   const auto id_of = [&](std::uint32_t g) {
@@ -181,5 +234,25 @@ std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigne
     append_triangle_line(out, std::int64_t{t - first} + first_index, mesh.triangles[t], id_of, k, mesh, t);
   return out;
 }
+
+}  // namespace
+
+std::string format_subdomain_mesh_node(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+  return subdomain_node_text(mesh, k, first_index);
+}
+std::string format_subdomain_mesh_ele(const Mesh& mesh, std::uint32_t k, unsigned first_index) {
+  return subdomain_ele_text(mesh, k, first_index);
+}
+
+namespace detail {
+
+std::string format_subdomain_mesh_node(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index) {
+  return subdomain_node_text(PiecesView(mesh), k, first_index);
+}
+std::string format_subdomain_mesh_ele(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index) {
+  return subdomain_ele_text(PiecesView(mesh), k, first_index);
+}
+
+}  // namespace detail
 
 }  // namespace madd

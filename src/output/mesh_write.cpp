@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "kernel/threads.hpp"
+#include "madd/error.hpp"
 #include "madd/mesh_output.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/output.hpp"
 #include "output/mesh_text.hpp"
 
@@ -57,6 +59,20 @@ void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, c
   if (formats.vtu) outputs.add_file(prefix + ".vtu", detail::mesh_vtu_pieces(mesh, threads));
 }
 
+void add_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& prefix, const MeshFormats& formats,
+              unsigned threads) {
+  detail::check_first_index(formats.first_index);
+  if (formats.msh || formats.vtu)
+    throw OptionError(formats.msh ? "msh" : "vtu", "is written from the merged mesh only: join() the pieces first");
+  const detail::MeshPiecesData& m = mesh.data();
+  if (formats.triangle) {
+    outputs.add_file(prefix + ".node", detail::mesh_node_pieces(m, formats.first_index, threads));
+    outputs.add_file(prefix + ".ele", detail::mesh_ele_pieces(m, formats.first_index, threads));
+  }
+  if (formats.neigh) outputs.add_file(prefix + ".neigh", detail::mesh_neigh_pieces(m, formats.first_index, threads));
+  if (formats.edge) outputs.add_file(prefix + ".edge", detail::format_mesh_edge(m, formats.first_index));
+}
+
 void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats, unsigned threads) {
   OutputSet outputs;
   add_mesh(outputs, mesh, prefix, formats, threads);
@@ -73,6 +89,23 @@ void add_split_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& dir
     const auto k = static_cast<std::uint32_t>(i);
     files[2 * i] = {split_mesh_file_name(stem, k, count, ".node"), format_subdomain_mesh_node(mesh, k, first_index)};
     files[2 * i + 1] = {split_mesh_file_name(stem, k, count, ".ele"), format_subdomain_mesh_ele(mesh, k, first_index)};
+  });
+  outputs.add_directory(dir, std::move(files),
+                        [stem = std::string(stem)](const std::string& name) { return is_split_mesh_name(name, stem); });
+}
+
+void add_split_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& dir, std::string_view stem,
+                    unsigned first_index, unsigned threads) {
+  detail::check_first_index(first_index);
+  const detail::MeshPiecesData& m = mesh.data();
+  const std::uint32_t count = m.subdomain_count();
+  std::vector<std::pair<std::string, std::string>> files(2 * std::size_t{count});
+  detail::for_each_on_threads(count, threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    files[2 * i] = {split_mesh_file_name(stem, k, count, ".node"),
+                    detail::format_subdomain_mesh_node(m, k, first_index)};
+    files[2 * i + 1] = {split_mesh_file_name(stem, k, count, ".ele"),
+                        detail::format_subdomain_mesh_ele(m, k, first_index)};
   });
   outputs.add_directory(dir, std::move(files),
                         [stem = std::string(stem)](const std::string& name) { return is_split_mesh_name(name, stem); });

@@ -63,7 +63,7 @@ struct Loop {
 // touch), loops in the order of their first edge's side.
 std::vector<Loop> boundary_loops(const Mesh& mesh, int open_marker) {
   check(mesh);
-  const std::unordered_map<std::uint64_t, int> markers = detail::segment_markers(mesh);
+  const std::unordered_map<std::uint64_t, int> markers = detail::segment_markers(mesh.segments);
   std::vector<detail::BoundaryLoop> traced;
   try {
     traced = detail::boundary_loops(mesh.triangles, mesh.neighbours);

@@ -44,6 +44,27 @@ std::string mesh_triangle_text(const Mesh& mesh, std::uint32_t t) {
   return text;
 }
 
+// Full cover: twice the triangles' area against twice the domain's, both
+// exact. A correct mesh can differ only by the area between its boundary
+// chains and the input segments (the rounding of its boundary vertices),
+// which check_mesh_segments bounds from their exact distances (`sliver`, 0
+// when every boundary vertex lies exactly on its segment). With the
+// orientation, adjacency and boundary checks this rules out any gap or
+// overlap: the triangles, all counter-clockwise and glued edge to edge, cover
+// each point as many times as their free edges (exactly the boundary chains)
+// wind around it, and a boundary ring walked the wrong way changes the area
+// by twice its own.
+void check_cover(const ExactSum& triangles, const Pslg& domain, double sliver, ProblemLog& log) {
+  const ExactSum whole = domain_twice_area_exact(domain);
+  ExactSum difference = triangles;
+  difference.subtract(whole);
+  if (difference.magnitude_at_most(sliver)) return;
+  log.add("the triangles' areas add up to " + number_text(0.5 * triangles.approximate()) + " but the domain's is " +
+          number_text(0.5 * whole.approximate()) + ": a gap or an overlap (they differ by " +
+          number_text(0.5 * difference.approximate()) + ", more than the " + number_text(0.5 * sliver) +
+          " the rounding of boundary vertices can account for)");
+}
+
 }  // namespace detail
 
 namespace {
@@ -173,28 +194,6 @@ std::vector<std::uint8_t> check_orientation(const Mesh& m, ProblemLog& log, unsi
   return ccw;
 }
 
-// Full cover: twice the triangles' area against twice the domain's, both
-// exact. A correct mesh can differ only by the area between its boundary
-// chains and the input segments (the rounding of its boundary vertices),
-// which check_mesh_segments bounds from their exact distances (`sliver`, 0
-// when every boundary vertex lies exactly on its segment). With the
-// orientation, adjacency and boundary checks this rules out any gap or
-// overlap: the triangles, all counter-clockwise and glued edge to edge, cover
-// each point as many times as their free edges (exactly the boundary chains)
-// wind around it, and a boundary ring walked the wrong way changes the area
-// by twice its own.
-void check_cover(const detail::ExactSum& triangles, const Pslg& domain, double sliver, ProblemLog& log) {
-  const detail::ExactSum whole = detail::domain_twice_area_exact(domain);
-  detail::ExactSum difference = triangles;
-  difference.subtract(whole);
-  if (difference.magnitude_at_most(sliver)) return;
-  log.add("the triangles' areas add up to " + detail::number_text(0.5 * triangles.approximate()) +
-          " but the domain's is " + detail::number_text(0.5 * whole.approximate()) +
-          ": a gap or an overlap (they differ by " + detail::number_text(0.5 * difference.approximate()) +
-          ", more than the " + detail::number_text(0.5 * sliver) +
-          " the rounding of boundary vertices can account for)");
-}
-
 }  // namespace
 
 Verification verify_mesh(const Mesh& mesh, const Pslg& domain, const MeshSizeOptions& size) {
@@ -225,7 +224,7 @@ Verification detail::verify_mesh(const Mesh& mesh, const Pslg& domain, const Are
       const detail::MeshEdges edges = detail::check_mesh_edges(mesh, ccw, log, threads);
       const double sliver = detail::check_mesh_segments(mesh, domain, log, threads);
       detail::check_hanging_vertices(mesh, edges.boundary, log, threads);
-      check_cover(edges.twice_area, domain, sliver, log);
+      detail::check_cover(edges.twice_area, domain, sliver, log);
       detail::check_interior_points(mesh, log, threads);
       const std::vector<std::uint32_t> region = detail::mesh_regions(mesh, threads);
       if (attributes_sized(mesh, log)) detail::check_region_attributes(mesh, region, log, threads);

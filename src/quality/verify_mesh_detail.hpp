@@ -41,6 +41,11 @@ MeshEdges check_mesh_edges(const Mesh& mesh, const std::vector<std::uint8_t>& cc
 // same report and bound for any count.
 double check_mesh_segments(const Mesh& mesh, const Pslg& domain, ProblemLog& log, unsigned threads = 1);
 
+// Twice the triangles' exact area (the sum over the free edges) equal to
+// twice the domain's, up to `sliver` (check_mesh_segments' bound): with the
+// links and the boundary chains checked, no gap and no overlap.
+void check_cover(const ExactSum& twice_area, const Pslg& domain, double sliver, ProblemLog& log);
+
 // No triangle vertex strictly inside an edge that only one triangle has
 // (the vertices in parts on `threads` threads).
 void check_hanging_vertices(const Mesh& mesh, const std::vector<Segment>& boundary, ProblemLog& log,
