@@ -27,7 +27,7 @@ std::string piece_triangle_text(std::uint32_t k, std::uint32_t t) {
 
 // Sizes and offsets: a piece per subdomain, each numbered by the prefix sums
 // of the pieces before it. Everything after relies on these.
-bool check_placement(const MeshPiecesData& m, ProblemLog& log) {
+bool check_placement(const MeshPiecesData& m, ProblemLog& log, unsigned threads) {
   const Decomposition& d = m.decomposition;
   const std::size_t n = d.subdomains.size();
   if (m.pieces.size() != n || m.local.size() != n || m.across.size() != n || m.first_point.size() != n + 1 ||
@@ -58,6 +58,26 @@ bool check_placement(const MeshPiecesData& m, ProblemLog& log) {
     points += p.points.size() - own;
     triangles += p.triangles.size();
   }
+  MeshShortfall sum;
+  for (const SubdomainMesh& p : m.pieces) {
+    sum.input_angle += p.shortfall.input_angle;
+    sum.separator += p.shortfall.separator;
+    sum.precision += p.shortfall.precision;
+    sum.limit += p.shortfall.limit;
+  }
+  if (sum != m.shortfall)
+    log.add("the mesh counts " + std::to_string(m.shortfall.total()) + " triangles below the angle bound, its pieces " +
+            std::to_string(sum.total()));
+  // Each piece's own points are the decomposition's points its local view
+  // names (what the files number them by), as local_domain lists them.
+  std::vector<std::uint8_t> renamed(n, 0);
+  for_each_on_threads(n, threads, [&](std::size_t k) {
+    renamed[k] = local_domain(d, static_cast<std::uint32_t>(k)).to_global != m.local[k].to_global ? 1 : 0;
+  });
+  for (std::uint32_t k = 0; k < n; ++k)
+    if (renamed[k] != 0)
+      log.add("subdomain " + std::to_string(k) +
+              "'s piece names other decomposition points than the subdomain's rings and constraints");
   if (m.first_point[n] != points || m.first_triangle[n] != triangles)
     log.add("the pieces are numbered to " + std::to_string(m.first_point[n]) + " points and " +
             std::to_string(m.first_triangle[n]) + " triangles, but hold " + std::to_string(points) + " and " +
@@ -175,7 +195,7 @@ Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const Ar
   Verification result;
   ProblemLog log(result);
   try {
-    if (check_placement(m, log)) {
+    if (check_placement(m, log, threads)) {
       if (!pieces_checked) {
         std::vector<Verification> found(m.pieces.size());
         for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {

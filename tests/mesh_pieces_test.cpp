@@ -1,0 +1,237 @@
+// A mesh kept in pieces (include/madd/mesh_pieces.hpp): the same mesh as
+// mesh() once joined, the same bytes in every file written from the pieces,
+// the same figures; and its check, each piece alone then what crosses
+// subdomains, catching every kind of defect the check of the merged mesh
+// catches.
+#include <doctest/doctest.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "madd/mesh.hpp"
+#include "madd/mesh_metrics.hpp"
+#include "madd/mesh_output.hpp"
+#include "madd/mesh_pieces.hpp"
+#include "madd/poly_io.hpp"
+#include "mesh/mesh_pieces.hpp"
+#include "mesh/pieces_check.hpp"
+#include "mesh/subdomain_regions.hpp"
+#include "output/mesh_text.hpp"
+#include "quality/area_bound.hpp"
+#include "mesh_fixtures.hpp"
+
+namespace {
+
+struct Case {
+  const char* file;
+  std::uint32_t n;
+  double q;
+  double area_fraction;  // the area bound: the domain's area over this
+};
+
+// The key; the estuary (interior segments, survey points, a region); the
+// archipelago at q 33 (separator pieces split between rounds).
+const Case cases[] = {{"/key.poly", 8, 30, 3000}, {"/estuary.poly", 6, 30, 400}, {"/archipelago.poly", 12, 33, 20000}};
+
+madd::MeshOptions options_of(const madd::Pslg& domain, const Case& c, unsigned threads) {
+  madd::MeshOptions o = madd::test::options_for(c.n, c.q, madd::domain_area(domain) / c.area_fraction);
+  o.decomposition.threads = threads;
+  return o;
+}
+
+void check_same_files(const madd::Mesh& merged, const madd::MeshPieces& pieces, unsigned threads) {
+  using madd::detail::joined;
+  const madd::detail::MeshPiecesData& m = pieces.data();
+  for (const unsigned first : {0u, 1u}) {
+    CAPTURE(first);
+    CHECK(joined(madd::detail::mesh_node_pieces(m, first, threads)) == madd::format_mesh_node(merged, first));
+    CHECK(joined(madd::detail::mesh_ele_pieces(m, first, threads)) == madd::format_mesh_ele(merged, first));
+    CHECK(joined(madd::detail::mesh_neigh_pieces(m, first, threads)) == madd::format_mesh_neigh(merged, first));
+    CHECK(madd::detail::format_mesh_edge(m, first) == madd::format_mesh_edge(merged, first));
+    for (std::uint32_t k = 0; k < merged.subdomain_count(); ++k) {
+      CHECK(madd::detail::format_subdomain_mesh_node(m, k, first) ==
+            madd::format_subdomain_mesh_node(merged, k, first));
+      CHECK(madd::detail::format_subdomain_mesh_ele(m, k, first) == madd::format_subdomain_mesh_ele(merged, k, first));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("mesh_pieces_with_report: joined, mesh()'s mesh; its files and figures those of the merged mesh") {
+  for (const Case& c : cases) {
+    CAPTURE(c.file);
+    const madd::Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + c.file);
+    const madd::Mesh whole = madd::mesh(domain, options_of(domain, c, 1));
+    for (const unsigned threads : {1u, 3u}) {
+      CAPTURE(threads);
+      const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, options_of(domain, c, threads));
+      const madd::MeshPieces& pieces = run.mesh;
+      REQUIRE(pieces.triangle_count() == whole.triangle_count());
+      CHECK(pieces.point_count() == whole.points.size());
+      CHECK(pieces.subdomain_count() == whole.subdomain_count());
+      for (std::uint32_t k = 0; k < whole.subdomain_count(); ++k)
+        CHECK(pieces.subdomain_triangle_count(k) ==
+              whole.subdomain_first_triangle[k + 1] - whole.subdomain_first_triangle[k]);
+      CHECK(pieces.shortfall() == whole.shortfall);
+      check_same_files(whole, pieces, threads);
+      CHECK(madd::mesh_metrics(pieces, {}, threads) == madd::mesh_metrics(whole, {}, threads));
+      CHECK(madd::verify_mesh(pieces, domain, options_of(domain, c, 1).size, threads).ok());
+      CHECK(madd::join(pieces, threads) == whole);
+      // Its phases: the subdomains' checks inside refine, then the crossing ones.
+      std::vector<std::string> names;
+      for (const madd::PhaseTime& p : run.report.phases) names.push_back(p.name);
+      CHECK(names == std::vector<std::string>{"decompose", "discretise", "estimate", "refine", "assemble", "verify"});
+    }
+  }
+}
+
+TEST_CASE("mesh_pieces_with_report: the estuary's region attributes and markers in the pieces' files") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/estuary.poly");
+  const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, options_of(domain, cases[1], 2));
+  REQUIRE(run.mesh.data().has_regions());
+  const madd::Mesh whole = madd::join(run.mesh, 2);
+  REQUIRE(whole.triangle_attribute.size() == whole.triangle_count());
+  bool some_region = false;
+  for (const double a : whole.triangle_attribute) some_region = some_region || a != 0.0;
+  CHECK(some_region);
+  // Two attributes a triangle in the pieces' .ele: the subdomain and the region's.
+  const std::string ele = madd::detail::joined(madd::detail::mesh_ele_pieces(run.mesh.data(), 1, 2));
+  CHECK(ele.substr(0, ele.find('\n')) == std::to_string(whole.triangle_count()) + " 3 2");
+}
+
+namespace {
+
+// A defect made in a copy of the pieces, and whether the pieces' check and
+// the merged mesh's check both report it.
+struct Defect {
+  const char* what;
+  std::function<void(madd::detail::MeshPiecesData&)> make;
+};
+
+// The first triangle of piece k whose three links stay inside the piece.
+std::uint32_t inner_triangle(const madd::detail::SubdomainMesh& p) {
+  for (std::uint32_t t = 0; t < p.triangles.size(); ++t)
+    if (p.neighbours[t][0] != madd::no_index && p.neighbours[t][1] != madd::no_index &&
+        p.neighbours[t][2] != madd::no_index)
+      return t;
+  return madd::no_index;
+}
+
+// The first subdomain with a link across a separator.
+std::uint32_t linked_subdomain(const madd::detail::MeshPiecesData& m) {
+  for (std::uint32_t k = 0; k < m.across.size(); ++k)
+    if (!m.across[k].empty()) return k;
+  return madd::no_index;
+}
+
+}  // namespace
+
+TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the merged mesh's check catches it") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/estuary.poly");
+  const madd::MeshOptions o = options_of(domain, cases[1], 2);
+  const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, o);
+  const madd::detail::MeshPiecesData& good = run.mesh.data();
+  const madd::detail::AreaBound field(o.size, &domain);
+  const std::vector<std::vector<madd::Region>> regions = madd::detail::region_view(good.decomposition).regions;
+  REQUIRE(madd::detail::verify_pieces(good, domain, field, regions, false, 2).ok());
+  REQUIRE(madd::detail::verify_pieces(good, domain, field, regions, true, 2).ok());
+  // A subdomain with a region (its triangles carry attributes) and Steiner points.
+  std::uint32_t k = 0;
+  while (k < good.pieces.size() && (good.pieces[k].triangle_attribute.empty() ||
+                                    good.pieces[k].points.size() < good.local[k].to_global.size() + 2))
+    ++k;
+  REQUIRE(k < good.pieces.size());
+  const madd::detail::SubdomainMesh& piece = good.pieces[k];
+  const std::uint32_t t = inner_triangle(piece);
+  REQUIRE(t != madd::no_index);
+  const std::uint32_t own = static_cast<std::uint32_t>(good.local[k].to_global.size());
+  REQUIRE(piece.points.size() > own + 1);
+  const std::uint32_t linked = linked_subdomain(good);
+  REQUIRE(linked != madd::no_index);
+  const std::vector<Defect> defects = {
+      {"a triangle turned clockwise",
+       [&](auto& m) { std::swap(m.pieces[k].triangles[t][0], m.pieces[k].triangles[t][1]); }},
+      {"a Steiner point moved onto another", [&](auto& m) { m.pieces[k].points[own] = m.pieces[k].points[own + 1]; }},
+      {"a link inside a piece cut",
+       [&](auto& m) {
+         const std::uint32_t u = m.pieces[k].neighbours[t][0];
+         m.pieces[k].neighbours[t][0] = madd::no_index;
+         for (auto& back : m.pieces[k].neighbours[u])
+           if (back == t) back = madd::no_index;
+       }},
+      {"a triangle left out",
+       [&](auto& m) {
+         // The last triangle of the piece dropped, its neighbours' links to it cut.
+         auto& p = m.pieces[k];
+         const auto last = static_cast<std::uint32_t>(p.triangles.size() - 1);
+         for (auto& links : p.neighbours)
+           for (auto& u : links)
+             if (u == last) u = madd::no_index;
+         p.triangles.pop_back();
+         p.neighbours.pop_back();
+         if (!p.triangle_attribute.empty()) p.triangle_attribute.pop_back();
+         for (std::size_t h = k + 1; h < m.first_triangle.size(); ++h) --m.first_triangle[h];
+         for (auto& list : m.across)
+           for (auto& [code, u] : list)
+             if (u > m.first_triangle[k] + last) --u;
+       }},
+      {"a link across a separator pointed elsewhere", [&](auto& m) { m.across[linked][0].second += 1; }},
+      {"a separator's two sides unlinked",
+       [&](auto& m) {
+         const auto [code, u] = m.across[linked][0];
+         m.across[linked].erase(m.across[linked].begin());
+         const std::uint32_t h = m.subdomain_of_triangle(u);
+         std::erase_if(m.across[h], [&](const auto& e) { return e.second == m.first_triangle[linked] + code / 3; });
+       }},
+      {"a piece placed one point too far", [&](auto& m) { ++m.first_point[k]; }},
+      {"a piece naming another decomposition point",
+       [&](auto& m) { std::swap(m.local[k].to_global[0], m.local[k].to_global[1]); }},
+      {"a mesh segment's marker changed", [&](auto& m) { m.segments.front().marker += 7; }},
+      {"a decomposition point's marker changed", [&](auto& m) { m.point_markers[0] += 7; }},
+      {"the shortfall miscounted",
+       [&](auto& m) {
+         m.pieces[k].shortfall.input_angle += 1;
+         m.shortfall.input_angle += 1;
+       }},
+      {"the pieces' shortfall summed wrong", [&](auto& m) { m.shortfall.separator += 1; }},
+      {"a region attribute changed",
+       [&](auto& m) {
+         REQUIRE(!m.pieces[k].triangle_attribute.empty());
+         m.pieces[k].triangle_attribute[t] += 1;
+       }},
+  };
+  for (const Defect& defect : defects) {
+    const std::string what = defect.what;
+    CAPTURE(what);
+    madd::detail::MeshPiecesData bad = good;
+    defect.make(bad);
+    const madd::Verification from_pieces = madd::detail::verify_pieces(bad, domain, field, regions, false, 2);
+    CHECK_FALSE(from_pieces.ok());
+    // The merged mesh of the same pieces fails its check too (the placement
+    // defect aside: the merge would place the piece where it says).
+    if (what != "a piece placed one point too far") {
+      const madd::Mesh merged = madd::detail::join(madd::detail::MeshPiecesData(bad), 1);
+      CHECK_FALSE(madd::verify_mesh(merged, domain, o.size).ok());
+    }
+  }
+  // A size bound below the one meshed to: caught piece by piece.
+  madd::MeshSizeOptions finer = o.size;
+  finer.max_triangle_area /= 2;
+  const madd::detail::AreaBound finer_field(finer, &domain);
+  CHECK_FALSE(madd::detail::verify_pieces(good, domain, finer_field, regions, false, 2).ok());
+  CHECK_FALSE(madd::verify_mesh(run.mesh, domain, finer, 2).ok());
+}
+
+TEST_CASE("add_mesh of pieces: .msh and .vtu are refused (they are made from the merged mesh)") {
+  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
+  const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, options_of(domain, cases[0], 1));
+  madd::OutputSet outputs;
+  madd::MeshFormats formats;
+  formats.msh = true;
+  CHECK_THROWS_AS(madd::add_mesh(outputs, run.mesh, "/tmp/never", formats), madd::OptionError);
+  formats.msh = false;
+  formats.vtu = true;
+  CHECK_THROWS_AS(madd::add_mesh(outputs, run.mesh, "/tmp/never", formats), madd::OptionError);
+}
