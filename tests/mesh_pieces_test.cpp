@@ -64,10 +64,12 @@ TEST_CASE("mesh_pieces_with_report: joined, mesh()'s mesh; its files and figures
     CAPTURE(c.file);
     const madd::Pslg domain = madd::read_domain(std::string(MADD_DATA_DIR) + c.file);
     const madd::Mesh whole = madd::mesh(domain, options_of(domain, c, 1));
+    const madd::MeshPieces one_thread = madd::mesh_pieces_with_report(domain, options_of(domain, c, 1)).mesh;
     for (const unsigned threads : {1u, 3u}) {
       CAPTURE(threads);
       const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, options_of(domain, c, threads));
       const madd::MeshPieces& pieces = run.mesh;
+      CHECK(pieces == one_thread);  // the same pieces for any thread count
       REQUIRE(pieces.triangle_count() == whole.triangle_count());
       CHECK(pieces.point_count() == whole.points.size());
       CHECK(pieces.subdomain_count() == whole.subdomain_count());

@@ -42,6 +42,9 @@ public:
   MeshShortfall shortfall() const noexcept;
   double min_triangle_angle_deg() const noexcept;
 
+  // Equal pieces: the same mesh, in the same pieces.
+  friend bool operator==(const MeshPieces& a, const MeshPieces& b);
+
   // The library's own view (src/mesh/mesh_pieces.hpp).
   const detail::MeshPiecesData& data() const noexcept { return *data_; }
 
@@ -54,6 +57,7 @@ private:
 struct MeshPiecesRun {
   MeshPieces mesh;
   MeshReport report;
+  friend bool operator==(const MeshPiecesRun&, const MeshPiecesRun&) = default;
 };
 
 // mesh_with_report()'s mesh, kept in pieces: the same options, the same

@@ -20,6 +20,7 @@ struct LocalDomain {
   std::vector<bool> splittable;          // per local segment: a boundary or interior piece (never a separator)
   std::vector<std::uint32_t> to_global;  // per local point: its point of the decomposition
   std::vector<std::uint32_t> piece;      // per local segment: its segment of the decomposition
+  friend bool operator==(const LocalDomain&, const LocalDomain&) = default;
 };
 LocalDomain local_domain(const Decomposition& d, std::uint32_t k);
 

@@ -333,6 +333,7 @@ MeshPieces& MeshPieces::operator=(MeshPieces&& other) noexcept {
   return *this;
 }
 MeshPieces::~MeshPieces() = default;
+bool operator==(const MeshPieces& a, const MeshPieces& b) { return *a.data_ == *b.data_; }
 
 std::uint32_t MeshPieces::subdomain_count() const noexcept { return data_->subdomain_count(); }
 std::uint64_t MeshPieces::point_count() const noexcept { return data_->point_count(); }

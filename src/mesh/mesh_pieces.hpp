@@ -28,6 +28,7 @@ struct MeshPiecesData {
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> across;
   MeshShortfall shortfall;
   double min_triangle_angle_deg = 30.0;
+  friend bool operator==(const MeshPiecesData&, const MeshPiecesData&) = default;
 
   std::uint32_t subdomain_count() const noexcept { return static_cast<std::uint32_t>(pieces.size()); }
   std::uint32_t point_count() const noexcept { return first_point.empty() ? 0 : first_point.back(); }

@@ -50,6 +50,7 @@ struct SubdomainMesh {
   // fix a bad triangle fell into: split them (for both subdomains) and mesh
   // again (docs/mesh.md, "Decoupling").
   std::vector<std::uint32_t> blocking_separators;
+  friend bool operator==(const SubdomainMesh&, const SubdomainMesh&) = default;
 };
 
 // Refines the constrained Delaunay triangulation of `pslg` (one closed

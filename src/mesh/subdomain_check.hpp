@@ -5,7 +5,7 @@
 // regions its own. What a subdomain's mesh must be in the whole mesh it must
 // be alone (constrained Delaunay, covering its rings exactly, conforming to
 // its pieces, sizes, angles, region attributes); what crosses subdomains is
-// checked from the pieces' numbering (quality/verify_mesh_pieces.hpp).
+// checked from the pieces' numbering (mesh/pieces_check.hpp).
 #include <cstdint>
 #include <vector>
 
