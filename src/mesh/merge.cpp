@@ -199,16 +199,26 @@ void copy_piece(Mesh& out, const MeshPiecesData& m, std::uint32_t k) {
 
 }  // namespace
 
-std::uint32_t MeshPiecesData::subdomain_of_triangle(std::uint32_t t) const {
-  // The last subdomain whose range starts at or before t (empty ones skipped).
-  return static_cast<std::uint32_t>(std::upper_bound(first_triangle.begin(), first_triangle.end() - 1, t) -
-                                    first_triangle.begin() - 1);
+namespace {
+
+// The range of `first` (offsets, one more than the ranges) holding i: the
+// last whose start is at or before i (empty ones skipped). Readers go
+// through the mesh in order, so each thread first tries the range it found
+// last (for the same offsets), then searches.
+std::uint32_t range_of(const std::vector<std::uint32_t>& first, std::uint32_t i) {
+  thread_local const std::vector<std::uint32_t>* last_offsets = nullptr;
+  thread_local std::uint32_t last = 0;
+  if (last_offsets == &first && last + 1 < first.size() && first[last] <= i && i < first[last + 1]) return last;
+  last = static_cast<std::uint32_t>(std::upper_bound(first.begin(), first.end() - 1, i) - first.begin() - 1);
+  last_offsets = &first;
+  return last;
 }
 
-std::uint32_t MeshPiecesData::subdomain_of_point(std::uint32_t v) const {
-  return static_cast<std::uint32_t>(std::upper_bound(first_point.begin(), first_point.end() - 1, v) -
-                                    first_point.begin() - 1);
-}
+}  // namespace
+
+std::uint32_t MeshPiecesData::subdomain_of_triangle(std::uint32_t t) const { return range_of(first_triangle, t); }
+
+std::uint32_t MeshPiecesData::subdomain_of_point(std::uint32_t v) const { return range_of(first_point, v); }
 
 std::uint32_t MeshPiecesData::global_neighbour(std::uint32_t k, std::uint32_t t, std::uint32_t i) const {
   const std::uint32_t n = pieces[k].neighbours[t][i];
