@@ -62,4 +62,10 @@ private:
   const MeshPiecesData* data_;
 };
 
+// Triangle t's smallest angle, from its piece's own coordinates (those of
+// its decomposition points are the decomposition's, bit for bit): what the
+// figures (quality/mesh_figures.hpp) read for every triangle, without
+// mapping its corners to global ids first.
+double angle_of(const PiecesView& view, std::size_t t);
+
 }  // namespace madd::detail
