@@ -79,8 +79,8 @@ int mesh_body(void* context) {
   };
   // The files of Triangle's formats and the split pieces are written from
   // the subdomains' meshes as they were made (docs/mesh.md, "Meshes in
-  // pieces"); the model files, .msh and .vtu from the merged mesh.
-  const bool merged = wants_model_files(line, input.projection) || line.formats.msh || line.formats.vtu;
+  // pieces"); the model files from the merged mesh.
+  const bool merged = wants_model_files(line, input.projection);
   if (merged) {
     const MeshRun run = meshed([](const Pslg& d, const MeshOptions& o) { return mesh_with_report(d, o); });
     return write_mesh_outputs(args, options, input, depth, run.mesh, run.report, start, progress);

@@ -49,6 +49,10 @@ void check_same_files(const madd::Mesh& merged, const madd::MeshPieces& pieces, 
     CHECK(joined(madd::detail::mesh_ele_pieces(m, first, threads)) == madd::format_mesh_ele(merged, first));
     CHECK(joined(madd::detail::mesh_neigh_pieces(m, first, threads)) == madd::format_mesh_neigh(merged, first));
     CHECK(madd::detail::format_mesh_edge(m, first) == madd::format_mesh_edge(merged, first));
+    if (first == 1) {
+      CHECK(madd::detail::format_mesh_msh(m) == madd::format_mesh_msh(merged));
+      CHECK(joined(madd::detail::mesh_vtu_pieces(m, threads)) == madd::format_mesh_vtu(merged));
+    }
     for (std::uint32_t k = 0; k < merged.subdomain_count(); ++k) {
       CHECK(madd::detail::format_subdomain_mesh_node(m, k, first) ==
             madd::format_subdomain_mesh_node(merged, k, first));
@@ -224,16 +228,4 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
   const madd::detail::AreaBound finer_field(finer, &domain);
   CHECK_FALSE(madd::detail::verify_pieces(good, domain, finer_field, regions, false, 2).ok());
   CHECK_FALSE(madd::verify_mesh(run.mesh, domain, finer, 2).ok());
-}
-
-TEST_CASE("add_mesh of pieces: .msh and .vtu are refused (they are made from the merged mesh)") {
-  const madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/key.poly");
-  const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, options_of(domain, cases[0], 1));
-  madd::OutputSet outputs;
-  madd::MeshFormats formats;
-  formats.msh = true;
-  CHECK_THROWS_AS(madd::add_mesh(outputs, run.mesh, "/tmp/never", formats), madd::OptionError);
-  formats.msh = false;
-  formats.vtu = true;
-  CHECK_THROWS_AS(madd::add_mesh(outputs, run.mesh, "/tmp/never", formats), madd::OptionError);
 }

@@ -104,8 +104,7 @@ void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, c
               unsigned threads = 1);
 // The same files of a mesh kept in pieces (madd/mesh_pieces.hpp), byte for
 // byte those of join(mesh), read from the pieces while they are written:
-// `mesh` must outlive outputs.write(). The .msh and .vtu files are made from
-// the merged mesh only (OptionError naming "msh" or "vtu").
+// `mesh` must outlive outputs.write().
 void add_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& prefix, const MeshFormats& formats = {},
               unsigned threads = 1);
 // The same, written at once, all or nothing. Throws OutputError on I/O failure.

@@ -27,6 +27,7 @@ public:
   struct Array {
     const MeshPiecesData* m;
     std::size_t size() const { return count(*m); }
+    bool empty() const { return size() == 0; }
     Element operator[](std::size_t i) const { return at(*m, i); }
   };
 

@@ -51,7 +51,8 @@ struct Model {
 // Interior-segment edges (two triangles of one subdomain, on a piece of an
 // input segment) join the curve of their marker too, once each, as the
 // lower-numbered of their triangles runs them.
-Model boundary_model(const Mesh& mesh) {
+template <typename AnyMesh>
+Model boundary_model(const AnyMesh& mesh) {
   const auto segment_markers = detail::segment_markers(mesh.segments);
   const std::vector<std::uint32_t> owner = interior_segment_owners(mesh.decomposition);
   std::unordered_map<std::uint64_t, int> interior;
@@ -103,7 +104,8 @@ std::vector<std::int64_t> physical_curve_tags(const std::vector<int>& markers) {
   return tags;
 }
 
-void append_physical_names(std::string& out, const Mesh& mesh, const Model& model) {
+template <typename AnyMesh>
+void append_physical_names(std::string& out, const AnyMesh& mesh, const Model& model) {
   const std::vector<std::int64_t> tags = physical_curve_tags(model.markers);
   out += "$PhysicalNames\n";
   line(out, model.markers.size() + mesh.subdomain_count());
@@ -121,7 +123,8 @@ void append_box(std::string& out, const Box& box) {
   }
 }
 
-void append_entities(std::string& out, const Mesh& mesh, const Model& model) {
+template <typename AnyMesh>
+void append_entities(std::string& out, const AnyMesh& mesh, const Model& model) {
   const std::vector<std::int64_t> tags = physical_curve_tags(model.markers);
   std::vector<Box> curve_box(model.markers.size()), surface_box(mesh.subdomain_count());
   for (const BoundaryEdge& e : model.edges) {
@@ -154,7 +157,8 @@ void append_entities(std::string& out, const Mesh& mesh, const Model& model) {
 // on the domain boundary, else the surface of the lowest subdomain using it.
 // A node shared by two surfaces (a separator's) is used by the other one's
 // triangles too; MSH 4.1 numbers nodes globally, so that is allowed.
-void append_nodes(std::string& out, const Mesh& mesh, const Model& model) {
+template <typename AnyMesh>
+void append_nodes(std::string& out, const AnyMesh& mesh, const Model& model) {
   const std::size_t curves = model.markers.size();
   constexpr std::size_t unset = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> entity(mesh.points.size(), unset);  // c < curves, or curves + k for surface k
@@ -185,7 +189,8 @@ void append_nodes(std::string& out, const Mesh& mesh, const Model& model) {
 
 // Triangles first, so that triangle t has tag t + 1 as in PREFIX.ele; then
 // the boundary lines, curve by curve.
-void append_elements(std::string& out, const Mesh& mesh, const Model& model) {
+template <typename AnyMesh>
+void append_elements(std::string& out, const AnyMesh& mesh, const Model& model) {
   const std::uint32_t n = mesh.subdomain_count();
   std::size_t blocks = 0;
   for (std::uint32_t k = 0; k < n; ++k)
@@ -216,7 +221,8 @@ void append_elements(std::string& out, const Mesh& mesh, const Model& model) {
 
 // With regions (Triangle's -A): the region attribute of every triangle as
 // one element data view, "region_attribute" (time 0, step 0, one component).
-void append_region_attributes(std::string& out, const Mesh& mesh) {
+template <typename AnyMesh>
+void append_region_attributes(std::string& out, const AnyMesh& mesh) {
   if (!detail::has_region_attributes(mesh)) return;
   out += "$ElementData\n1\n\"region_attribute\"\n1\n0\n3\n0\n1\n";
   line(out, mesh.triangles.size());
@@ -225,9 +231,8 @@ void append_region_attributes(std::string& out, const Mesh& mesh) {
   out += "$EndElementData\n";
 }
 
-}  // namespace
-
-std::string format_mesh_msh(const Mesh& mesh) {
+template <typename AnyMesh>
+std::string msh_text(const AnyMesh& mesh) {
   const Model model = boundary_model(mesh);
   std::string out;
   out.reserve(64 * mesh.points.size() + 48 * (mesh.triangles.size() + model.edges.size()) + 1024);
@@ -239,5 +244,11 @@ std::string format_mesh_msh(const Mesh& mesh) {
   append_region_attributes(out, mesh);
   return out;
 }
+
+}  // namespace
+
+std::string format_mesh_msh(const Mesh& mesh) { return msh_text(mesh); }
+
+std::string detail::format_mesh_msh(const MeshPiecesData& mesh) { return msh_text(PiecesView(mesh)); }
 
 }  // namespace madd

@@ -90,6 +90,8 @@ FilePieces mesh_neigh_pieces(const MeshPiecesData& mesh, unsigned first_index, u
 std::string format_mesh_edge(const MeshPiecesData& mesh, unsigned first_index);
 std::string format_subdomain_mesh_node(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index);
 std::string format_subdomain_mesh_ele(const MeshPiecesData& mesh, std::uint32_t k, unsigned first_index);
+std::string format_mesh_msh(const MeshPiecesData& mesh);
+FilePieces mesh_vtu_pieces(const MeshPiecesData& mesh, unsigned threads);
 
 // One value of a line: integers as they are, doubles as %.17g, so a vertex
 // has the same text in the whole mesh's files and in its split pieces.

@@ -2,6 +2,7 @@
 // ASCII so it diffs and greps; ParaView reads it as it is. Connectivity and
 // offsets are Int64: a mesh of more than 2^31 / 3 triangles overflows Int32.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -98,10 +99,15 @@ detail::SectionedText vtu_text(const AnyMesh& mesh, bool regions, const detail::
   text.text() += "      <Points>\n";
   add_array(
       text, "Float64", nullptr, n,
-      [&mesh](std::string& out, std::size_t v) { line(out, mesh.points[v].x, mesh.points[v].y, 0.0); }, 3);
+      [&mesh](std::string& out, std::size_t v) {
+        const Point p = mesh.points[v];
+        line(out, p.x, p.y, 0.0);
+      },
+      3);
   text.text() += "      </Points>\n      <Cells>\n";
   add_array(text, "Int64", "connectivity", t, [&mesh](std::string& out, std::size_t c) {
-    line(out, mesh.triangles[c][0], mesh.triangles[c][1], mesh.triangles[c][2]);
+    const std::array<std::uint32_t, 3> corners = mesh.triangles[c];
+    line(out, corners[0], corners[1], corners[2]);
   });
   add_array(text, "Int64", "offsets", t, [](std::string& out, std::size_t c) { line(out, 3 * (c + 1)); });
   add_array(text, "UInt8", "types", t, [](std::string& out, std::size_t) { out += "5\n"; });
@@ -160,6 +166,14 @@ FilePieces vtu_pieces(const LocalMesh& mesh, bool regions, const VtuGlobalIds& g
 
 FilePieces mesh_vtu_pieces(const Mesh& mesh, unsigned threads) {
   return vtu_text(mesh, has_region_attributes(mesh), nullptr).pieces(threads);
+}
+
+// The view the sections read is kept alive by the pieces' function.
+FilePieces mesh_vtu_pieces(const MeshPiecesData& mesh, unsigned threads) {
+  const auto view = std::make_shared<const PiecesView>(mesh);
+  FilePieces pieces = vtu_text(*view, has_region_attributes(*view), nullptr).pieces(threads);
+  pieces.make = [view, make = std::move(pieces.make)](std::size_t i) { return make(i); };
+  return pieces;
 }
 
 }  // namespace detail

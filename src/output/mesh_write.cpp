@@ -62,8 +62,6 @@ void add_mesh(OutputSet& outputs, const Mesh& mesh, const std::string& prefix, c
 void add_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& prefix, const MeshFormats& formats,
               unsigned threads) {
   detail::check_first_index(formats.first_index);
-  if (formats.msh || formats.vtu)
-    throw OptionError(formats.msh ? "msh" : "vtu", "is written from the merged mesh only: join() the pieces first");
   const detail::MeshPiecesData& m = mesh.data();
   if (formats.triangle) {
     outputs.add_file(prefix + ".node", detail::mesh_node_pieces(m, formats.first_index, threads));
@@ -71,6 +69,8 @@ void add_mesh(OutputSet& outputs, const MeshPieces& mesh, const std::string& pre
   }
   if (formats.neigh) outputs.add_file(prefix + ".neigh", detail::mesh_neigh_pieces(m, formats.first_index, threads));
   if (formats.edge) outputs.add_file(prefix + ".edge", detail::format_mesh_edge(m, formats.first_index));
+  if (formats.msh) outputs.add_file(prefix + ".msh", detail::format_mesh_msh(m));
+  if (formats.vtu) outputs.add_file(prefix + ".vtu", detail::mesh_vtu_pieces(m, threads));
 }
 
 void write_mesh(const Mesh& mesh, const std::string& prefix, const MeshFormats& formats, unsigned threads) {
