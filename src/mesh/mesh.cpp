@@ -282,7 +282,13 @@ DecomposeRun decompose_for_mesh(const Pslg& domain, const MeshOptions& options) 
   return detail::decompose_bounded(detail::DomainWork(domain, field, options.decomposition.threads), options);
 }
 
-MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
+namespace {
+
+// The whole run on `domain`: checks, the size field, the decomposition, then
+// mesh_decomposed(decomposition, work, options) (merged or in pieces), the
+// first two phases put in front of its report.
+template <typename MeshDecomposed>
+auto mesh_domain(const Pslg& domain, const MeshOptions& options, const MeshDecomposed& mesh_decomposed) {
   check_options(options);
   detail::Stopwatch clock;
   // The domain is validated once, before the size field is built on it.
@@ -293,27 +299,22 @@ MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
   const detail::DomainWork work(domain, field, options.decomposition.threads);
   const Decomposition d = detail::decompose_bounded(work, options).decomposition;
   const double decompose_seconds = clock.lap();
-  MeshRun run = detail::mesh_decomposition_bounded(d, work, options);
+  auto run = mesh_decomposed(d, work, options);
   run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
   if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
   return run;
 }
 
+}  // namespace
+
+MeshRun mesh_with_report(const Pslg& domain, const MeshOptions& options) {
+  return mesh_domain(domain, options, detail::mesh_decomposition_bounded);
+}
+
 Mesh mesh(const Pslg& domain, const MeshOptions& options) { return mesh_with_report(domain, options).mesh; }
 
 MeshPiecesRun mesh_pieces_with_report(const Pslg& domain, const MeshOptions& options) {
-  check_options(options);
-  detail::Stopwatch clock;
-  validate(domain);
-  const detail::AreaBound field(options.size, &domain, options.decomposition.threads);
-  const double field_seconds = clock.lap();
-  const detail::DomainWork work(domain, field, options.decomposition.threads);
-  const Decomposition d = detail::decompose_bounded(work, options).decomposition;
-  const double decompose_seconds = clock.lap();
-  MeshPiecesRun run = detail::mesh_pieces_bounded(d, work, options);
-  run.report.phases.insert(run.report.phases.begin(), {"decompose", decompose_seconds});
-  if (!field.field().empty()) run.report.phases.insert(run.report.phases.begin(), {"size field", field_seconds});
-  return run;
+  return mesh_domain(domain, options, detail::mesh_pieces_bounded);
 }
 
 // MeshPieces: a value holding the pieces' data.
