@@ -2,8 +2,9 @@
 // discretise, refine, merge, and mesh()'s own verify_mesh self-check), then
 // properties checked here independently of verify_mesh: every triangle
 // strictly counter-clockwise, the shortfall equal to the number of triangles
-// below the angle bound (the one measure, src/quality/mesh_angle.hpp), and
-// the mesh the same on 2 threads as on 1.
+// below the angle bound (the one measure, src/quality/mesh_angle.hpp), the
+// mesh the same on 2 threads as on 1, and the same kept in pieces and
+// checked there (madd mesh's path, include/madd/mesh_pieces.hpp), joined.
 //
 // Options come from the last five bytes, which stay part of the text (a
 // newline, a digit, or the end of a trailing '#' comment), so plain .poly
@@ -59,6 +60,7 @@
 
 #include "madd/error.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/poly_io.hpp"
 #include "madd/predicates.hpp"
 #include "mesh/feature_distance.hpp"
@@ -210,6 +212,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!(wanted <= 2e4)) return 0;
     const madd::Mesh m = madd::mesh(file.pslg, options);
     check_properties(m, options);
+    // madd mesh's own path: the mesh kept in pieces, each checked on its
+    // worker and what crosses them after (InternalError on a failed check),
+    // joined, must be mesh()'s.
+    if (madd::join(madd::mesh_pieces_with_report(file.pslg, options).mesh) != m)
+      fail(options, "the mesh kept in pieces differs from mesh()'s");
     if (options.decomposition.threads == 2) {
       madd::MeshOptions one = options;
       one.decomposition.threads = 1;
