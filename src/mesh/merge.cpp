@@ -276,9 +276,41 @@ MeshPiecesData assemble(Decomposition d, std::vector<SubdomainMesh>&& pieces, do
   return m;
 }
 
+namespace {
+
+// One piece whose own points are the decomposition's, in order (a subdomain
+// checked alone: mesh/subdomain_check.hpp): numbered already as the mesh.
+bool numbered_as_is(const MeshPiecesData& m) {
+  if (m.pieces.size() != 1 || !m.across[0].empty()) return false;
+  const std::vector<std::uint32_t>& ids = m.local[0].to_global;
+  if (ids.size() != m.decomposition.points.size()) return false;
+  for (std::uint32_t v = 0; v < ids.size(); ++v)
+    if (ids[v] != v) return false;
+  return true;
+}
+
+// Such a piece's arrays taken as the mesh's, not copied; its own points
+// written over with the decomposition's, as copy_piece leaves them.
+void take_piece(Mesh& out, MeshPiecesData& m) {
+  SubdomainMesh& p = m.pieces[0];
+  const std::uint32_t points = m.point_count(), triangles = m.triangle_count();
+  out.point_markers = m.point_markers;
+  out.point_markers.resize(points, 0);
+  for (auto v = static_cast<std::uint32_t>(m.decomposition.points.size()); v < points; ++v)
+    out.point_markers[v] = m.steiner_marker(0, v);
+  out.points = std::move(p.points);
+  std::copy(m.decomposition.points.begin(), m.decomposition.points.end(), out.points.begin());
+  out.triangles = std::move(p.triangles);
+  out.neighbours = std::move(p.neighbours);
+  out.triangle_subdomain.assign(triangles, 0);
+  if (m.has_regions())
+    out.triangle_attribute = p.triangle_attribute.size() == triangles ? std::move(p.triangle_attribute)
+                                                                      : std::vector<double>(triangles, 0.0);
+  p = SubdomainMesh{};
+}
+
 // Every subdomain on its own thread into its own ranges.
-Mesh join(MeshPiecesData&& m, unsigned threads) {
-  Mesh out;
+void copy_pieces(Mesh& out, MeshPiecesData& m, unsigned threads) {
   const std::uint32_t points = m.point_count(), triangles = m.triangle_count();
   // The merged arrays' pages are faulted in on the threads that fill them
   // (kernel/fresh_memory.hpp): on one thread they were most of the merge.
@@ -294,6 +326,16 @@ Mesh join(MeshPiecesData&& m, unsigned threads) {
     copy_piece(out, m, static_cast<std::uint32_t>(k));
     m.pieces[k] = SubdomainMesh{};  // release as we go
   });
+}
+
+}  // namespace
+
+// The pieces copied into one mesh, or, one piece numbered as the mesh
+// already, taken.
+Mesh join(MeshPiecesData&& m, unsigned threads) {
+  Mesh out;
+  if (numbered_as_is(m)) take_piece(out, m);
+  else copy_pieces(out, m, threads);
   out.subdomain_first_triangle = std::move(m.first_triangle);
   out.segments = std::move(m.segments);
   out.shortfall = m.shortfall;
