@@ -93,6 +93,26 @@ TEST_CASE("madd mesh: from the bay's GeoJSON and depth grid to fort.14, hgrid.gr
   CHECK(!grid.land_boundaries.empty());
 }
 
+TEST_CASE("madd mesh: the mesh files are the same written from the pieces (no model file) and from the merged mesh") {
+  // Without a model file madd mesh writes from the subdomains' meshes and
+  // checks them where they were made; with --fort14 it merges and checks the
+  // merged mesh (docs/mesh.md, "Meshes in pieces"). The same bytes either way.
+  const CliSandbox box("madd-coast-cli");
+  const std::string common = "mesh " + coast_dir + "bay.geojson" + bay_box +
+                             " --hmin 200 --hmax 4000 --distance-rate 0.2 --cells-across 2 --gradation 0.25 -n 8 -j 2"
+                             " --neigh --edge --msh --vtu";
+  const CliRun pieces = box.run(common + " -o pieces");
+  const CliRun merged = box.run(common + " -o merged --fort14 merged.14");
+  REQUIRE_MESSAGE(pieces.status == 0, pieces.output);
+  REQUIRE_MESSAGE(merged.status == 0, merged.output);
+  for (const char* extension : {".node", ".ele", ".neigh", ".edge", ".msh", ".vtu"}) {
+    CAPTURE(extension);
+    const std::string a = slurp(box.path(std::string("pieces") + extension));
+    CHECK(!a.empty());
+    CHECK(a == slurp(box.path(std::string("merged") + extension)));
+  }
+}
+
 TEST_CASE("a malformed GeoJSON is one located line and exit 3, nothing written; a box on a .poly is a usage error") {
   const CliSandbox box("madd-coast-cli");
   std::ofstream(box.path("bad.geojson"))
