@@ -5,6 +5,7 @@
 // catches.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "madd/poly_io.hpp"
 #include "mesh/mesh_pieces.hpp"
 #include "mesh/pieces_check.hpp"
+#include "mesh/subdomain_check.hpp"
 #include "mesh/subdomain_regions.hpp"
 #include "output/mesh_text.hpp"
 #include "quality/area_bound.hpp"
@@ -221,6 +223,25 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
       const madd::Mesh merged = madd::detail::join(madd::detail::MeshPiecesData(bad), 1);
       CHECK_FALSE(madd::verify_mesh(merged, domain, o.size).ok());
     }
+  }
+  // A subdomain given the wrong region (as if the decomposition's regions
+  // were wrong): its triangles carry what its own check expects, but the
+  // flood over the whole mesh, across the separators, says otherwise.
+  {
+    std::vector<std::vector<madd::Region>> wrong = regions;
+    REQUIRE(!wrong[k].empty());
+    madd::detail::MeshPiecesData bad = good;
+    for (madd::Region& r : wrong[k]) r.attribute += 100;
+    for (double& a : bad.pieces[k].triangle_attribute)
+      for (const madd::Region& r : regions[k])
+        if (a == r.attribute) a = r.attribute + 100;
+    REQUIRE(
+        madd::detail::check_subdomain(bad.decomposition, k, wrong[k], bad.pieces[k], bad.min_triangle_angle_deg, field)
+            .ok());
+    const madd::Verification v = madd::detail::verify_pieces(bad, domain, field, wrong, false, 2);
+    CHECK_FALSE(v.ok());
+    CHECK(std::any_of(v.problems.begin(), v.problems.end(),
+                      [](const std::string& p) { return p.find("region attribute") != std::string::npos; }));
   }
   // A size bound below the one meshed to: caught piece by piece.
   madd::MeshSizeOptions finer = o.size;

@@ -2,6 +2,8 @@
 #include "mesh/pieces_check.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <exception>
 #include <string>
 #include <unordered_map>
@@ -10,6 +12,9 @@
 #include "kernel/exact_sum.hpp"
 #include "kernel/threads.hpp"
 #include "mesh/subdomain_check.hpp"
+#include "kernel/number_format.hpp"
+#include "mesh/pieces_view.hpp"
+#include "quality/mesh_regions.hpp"
 #include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
@@ -188,6 +193,45 @@ ExactSum twice_area(const MeshPiecesData& m, unsigned threads) {
   return sum;
 }
 
+// "triangle t (subdomain k) (x, y) (x, y) (x, y)" in the merged mesh's
+// numbering, as verify_mesh names a triangle.
+std::string merged_triangle_text(const PiecesView& view, std::uint32_t t) {
+  std::string text =
+      "triangle " + std::to_string(t) + " (subdomain " + std::to_string(view.triangle_subdomain[t]) + ")";
+  for (const std::uint32_t v : view.triangles[t]) text += " " + point_text(view.points[v]);
+  return text;
+}
+
+// The regions flooded over the whole mesh, across the separators (each
+// subdomain's check floods only its own triangles, from the regions the
+// decomposition gives it): every triangle's attribute, and its region's
+// area bound (Region::max_area > 0), as verify_mesh checks them.
+void check_regions(const MeshPiecesData& m, ProblemLog& log, unsigned threads) {
+  if (!m.has_regions()) return;
+  const PiecesView view(m);
+  const std::vector<std::uint32_t> label = mesh_regions_of(view, threads);
+  const auto text = [&view](std::uint32_t t) { return merged_triangle_text(view, t); };
+  check_region_attributes_of(view, label, log, threads, text);
+  const std::vector<Region>& regions = m.decomposition.regions;
+  constexpr double u = 0x1p-53;
+  const std::size_t n = view.triangle_count();
+  log_in_parts(n, 4 * std::size_t{thread_count(threads, n)}, threads, log,
+               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+                 for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t) {
+                   if (label[t] == 0 || !(regions[label[t] - 1].max_area > 0)) continue;
+                   const double bound = regions[label[t] - 1].max_area;
+                   const std::array<std::uint32_t, 3> c = view.triangles[t];
+                   const Point a = view.points[c[0]], ab = view.points[c[1]] - a, ac = view.points[c[2]] - a;
+                   const Point bc = ac - ab;
+                   const double twice = std::abs(cross(ab, ac));
+                   const double longest2 = std::max({dot(ab, ab), dot(ac, ac), dot(bc, bc)});
+                   if (twice > 2.0 * bound * (1.0 + 1e-12) + 32.0 * u * longest2)
+                     mine.add(text(t) + " has area " + number_text(0.5 * twice) + ", above the area bound " +
+                              number_text(bound) + " of region " + std::to_string(label[t] - 1));
+                 }
+               });
+}
+
 }  // namespace
 
 Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const AreaBound& field,
@@ -208,6 +252,7 @@ Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const Ar
       check_separator_links(m, log);
       const double sliver = check_mesh_segments(segment_mesh(m), domain, log, threads);
       check_cover(twice_area(m, threads), domain, sliver, log);
+      check_regions(m, log, threads);
     }
   } catch (const std::exception& e) {
     log.add(std::string("the check stopped: ") + e.what());

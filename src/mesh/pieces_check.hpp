@@ -5,9 +5,10 @@
 // numbering the files are written with: the placement of each piece, every
 // separator matched edge for edge by its two subdomains and linked both
 // ways, the mesh segments along the decomposition and the input (markers,
-// chains, how far the rounded boundary vertices stray), and the cover of the
-// whole domain by the exact area of the pieces' free edges. Together these
-// are what verify_mesh checks on the merged mesh.
+// chains, how far the rounded boundary vertices stray), the cover of the
+// whole domain by the exact area of the pieces' free edges, and the regions
+// flooded over the whole mesh across the separators. Together these are what
+// verify_mesh checks on the merged mesh.
 #include <vector>
 
 #include "madd/error.hpp"

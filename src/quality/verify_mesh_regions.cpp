@@ -1,53 +1,20 @@
 // verify_mesh, what lies inside the subdomains: the isolated input vertices
 // as mesh vertices of their subdomain, and the regions (Triangle's -A and
-// -a) recomputed by a flood of the mesh itself, from each region point in
-// input order, across every edge but boundary and interior segments
-// (separators are crossed: they are no constraint of the input), the later
-// region winning where two floods meet, as Triangle does.
+// -a) recomputed by a flood of the mesh itself (quality/mesh_regions.hpp;
+// separators are crossed: they are no constraint of the input).
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <unordered_set>
 #include <utility>
 
 #include "kernel/number_format.hpp"
 #include "kernel/threads.hpp"
 #include "madd/predicates.hpp"
 #include "quality/parallel_log.hpp"
+#include "quality/mesh_regions.hpp"
 #include "quality/verify_mesh_detail.hpp"
 
 namespace madd::detail {
-
-namespace {
-
-std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
-
-// The lowest triangle whose closure holds p (the triangles are known to be
-// counter-clockwise by now), or no_index: the triangles scanned in parts on
-// `threads` threads, each part's lowest, the lowest of those.
-std::uint32_t triangle_at(const Mesh& m, Point p, unsigned threads) {
-  const std::size_t nt = m.triangles.size();
-  const std::size_t parts =
-      std::clamp<std::size_t>(4 * std::size_t{thread_count(threads, nt)}, 1, std::max<std::size_t>(nt, 1));
-  std::vector<std::uint32_t> found(parts, no_index);
-  for_each_on_threads(parts, threads, [&](std::size_t part) {
-    for (auto t = static_cast<std::uint32_t>(nt * part / parts); t < nt * (part + 1) / parts; ++t) {
-      const Point a = m.points[m.triangles[t][0]], b = m.points[m.triangles[t][1]], c = m.points[m.triangles[t][2]];
-      if (p.x < std::min({a.x, b.x, c.x}) || p.x > std::max({a.x, b.x, c.x}) || p.y < std::min({a.y, b.y, c.y}) ||
-          p.y > std::max({a.y, b.y, c.y}))
-        continue;
-      if (orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0) {
-        found[part] = t;
-        return;
-      }
-    }
-  });
-  for (const std::uint32_t t : found)
-    if (t != no_index) return t;
-  return no_index;
-}
-
-}  // namespace
 
 void check_interior_points(const Mesh& m, ProblemLog& log, unsigned threads) {
   const Decomposition& d = m.decomposition;
@@ -81,112 +48,11 @@ void check_interior_points(const Mesh& m, ProblemLog& log, unsigned threads) {
                });
 }
 
-// The flood of each region reaches the triangles connected to its first
-// one across edges that are no constraint: a component of that adjacency
-// (the mesh's links are mutual, or the edge pass has said otherwise). The
-// components are found per subdomain on `threads` threads (by union-find
-// inside its triangle range, numbered in its order there), joined across the links
-// that leave a subdomain (separators, mostly) by union-find, and each
-// region colours its component, in input order, the later winning.
-std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) {
-  const std::vector<Region>& regions = m.decomposition.regions;
-  std::vector<std::uint32_t> label(m.triangles.size(), 0);
-  if (regions.empty()) return label;
-  // The edges a flood does not cross; an edge is looked up only when both
-  // its ends lie on one (most edges have neither).
-  std::unordered_set<std::uint64_t> constraint;
-  std::vector<std::uint8_t> on_constraint(m.points.size(), 0);
-  for (const MeshSegment& s : m.segments)
-    if (!m.decomposition.is_separator(s.piece)) {
-      constraint.insert(key(s.a, s.b));
-      on_constraint[s.a] = on_constraint[s.b] = 1;
-    }
-  const auto crosses = [&](std::uint32_t t, int i) {
-    const std::uint32_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
-    return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(key(a, b)) == 0;
-  };
-  // label[t] first holds t's component, numbered within its subdomain.
-  const auto& first = m.subdomain_first_triangle;
-  const std::size_t n = first.size() - 1;
-  std::vector<std::uint32_t> components(n, 0);
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> leaving(n);  // links out of each subdomain
-  // Within a subdomain by union-find in triangle order (the arrays read in
-  // order, not in a flood's jumps): every crossable link joins its two
-  // triangles, the lower the root, so a component's root is its lowest
-  // triangle and the components are numbered in the order of their lowest
-  // triangles, as a flood from each unvisited triangle in turn numbers them.
-  for_each_on_threads(n, threads, [&](std::size_t k) {
-    const std::uint32_t begin = first[k], count = first[k + 1] - first[k];
-    std::vector<std::uint32_t> parent(count);
-    for (std::uint32_t i = 0; i < count; ++i) parent[i] = i;
-    const auto root = [&](std::uint32_t c) {
-      while (parent[c] != c) c = parent[c] = parent[parent[c]];
-      return c;
-    };
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::uint32_t t = begin + i;
-      for (int e = 0; e < 3; ++e) {
-        const std::uint32_t u = m.neighbours[t][e];
-        if (u == no_index || !crosses(t, e)) continue;
-        if (u < begin || u >= begin + count) {
-          leaving[k].emplace_back(t, u);
-        } else if (u < t) {  // each link inside once, from its higher end
-          const std::uint32_t a = root(i), b = root(u - begin);
-          if (a != b) parent[std::max(a, b)] = std::min(a, b);
-        }
-      }
-    }
-    for (std::uint32_t i = 0; i < count; ++i) {  // a root comes before the rest of its component
-      const std::uint32_t r = root(i);
-      label[begin + i] = r == i ? components[k]++ : label[begin + r];
-    }
-  });
-  // The components numbered across subdomains, joined along the links that
-  // leave them by union-find (the lower number the root).
-  std::vector<std::uint32_t> base(n + 1, 0);
-  for (std::size_t k = 0; k < n; ++k) base[k + 1] = base[k] + components[k];
-  const auto component = [&](std::uint32_t t) { return base[m.triangle_subdomain[t]] + label[t]; };
-  std::vector<std::uint32_t> parent(base[n]);
-  for (std::uint32_t c = 0; c < parent.size(); ++c) parent[c] = c;
-  const auto root = [&](std::uint32_t c) {
-    while (parent[c] != c) c = parent[c] = parent[parent[c]];
-    return c;
-  };
-  for (const auto& links : leaving)
-    for (const auto& [t, u] : links) {
-      const std::uint32_t a = root(component(t)), b = root(component(u));
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-  std::vector<std::uint32_t> region_of(base[n], 0);  // per root: 1 + its region, 0 for none
-  for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    const std::uint32_t t0 = triangle_at(m, regions[r].at, threads);
-    if (t0 != no_index) region_of[root(component(t0))] = r + 1;  // in a hole or outside: no region (as Triangle)
-  }
-  for (std::uint32_t c = 0; c < region_of.size(); ++c) region_of[c] = region_of[root(c)];
-  for_each_on_threads(n, threads, [&](std::size_t k) {
-    for (std::uint32_t t = first[k]; t < first[k + 1]; ++t) label[t] = region_of[base[k] + label[t]];
-  });
-  return label;
-}
+std::vector<std::uint32_t> mesh_regions(const Mesh& m, unsigned threads) { return mesh_regions_of(m, threads); }
 
 void check_region_attributes(const Mesh& m, const std::vector<std::uint32_t>& label, ProblemLog& log,
                              unsigned threads) {
-  const std::vector<Region>& regions = m.decomposition.regions;
-  if (regions.empty()) return;  // check_mesh_shape: no attributes then
-  const std::size_t nt = m.triangles.size();
-  log_in_parts(nt, 4 * std::size_t{thread_count(threads, nt)}, threads, log,
-               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
-                 for (auto t = static_cast<std::uint32_t>(begin); t < end; ++t) {
-                   const double want = label[t] == 0 ? 0.0 : regions[label[t] - 1].attribute;
-                   const double have = m.triangle_attribute[t];
-                   if (have == want || (std::isnan(have) && std::isnan(want))) continue;
-                   mine.add(mesh_triangle_text(m, t) + " has region attribute " + number_text(have) + ", but " +
-                            (label[t] == 0
-                                 ? std::string("no region's flood reaches it (attribute 0)")
-                                 : "the flood from region " + std::to_string(label[t] - 1) + " " +
-                                       point_text(regions[label[t] - 1].at) + " gives it " + number_text(want)));
-                 }
-               });
+  check_region_attributes_of(m, label, log, threads, [&m](std::uint32_t t) { return mesh_triangle_text(m, t); });
 }
 
 }  // namespace madd::detail
