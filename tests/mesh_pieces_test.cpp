@@ -143,8 +143,8 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
   const madd::detail::MeshPiecesData& good = run.mesh.data();
   const madd::detail::AreaBound field(o.size, &domain);
   const std::vector<std::vector<madd::Region>> regions = madd::detail::region_view(good.decomposition).regions;
-  REQUIRE(madd::detail::verify_pieces(good, domain, field, regions, false, 2).ok());
-  REQUIRE(madd::detail::verify_pieces(good, domain, field, regions, true, 2).ok());
+  REQUIRE(madd::detail::verify_pieces(good, domain, field, false, 2).ok());
+  REQUIRE(madd::detail::verify_pieces(good, domain, field, true, 2).ok());
   // A subdomain with a region (its triangles carry attributes) and Steiner points.
   std::uint32_t k = 0;
   while (k < good.pieces.size() && (good.pieces[k].triangle_attribute.empty() ||
@@ -215,7 +215,7 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
     CAPTURE(what);
     madd::detail::MeshPiecesData bad = good;
     defect.make(bad);
-    const madd::Verification from_pieces = madd::detail::verify_pieces(bad, domain, field, regions, false, 2);
+    const madd::Verification from_pieces = madd::detail::verify_pieces(bad, domain, field, false, 2);
     CHECK_FALSE(from_pieces.ok());
     // The merged mesh of the same pieces fails its check too (the placement
     // defect aside: the merge would place the piece where it says).
@@ -238,7 +238,7 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
     REQUIRE(
         madd::detail::check_subdomain(bad.decomposition, k, wrong[k], bad.pieces[k], bad.min_triangle_angle_deg, field)
             .ok());
-    const madd::Verification v = madd::detail::verify_pieces(bad, domain, field, wrong, false, 2);
+    const madd::Verification v = madd::detail::verify_pieces(bad, domain, field, false, 2);
     CHECK_FALSE(v.ok());
     CHECK(std::any_of(v.problems.begin(), v.problems.end(),
                       [](const std::string& p) { return p.find("region attribute") != std::string::npos; }));
@@ -247,6 +247,6 @@ TEST_CASE("verify_pieces: every kind of defect is caught from the pieces, as the
   madd::MeshSizeOptions finer = o.size;
   finer.max_triangle_area /= 2;
   const madd::detail::AreaBound finer_field(finer, &domain);
-  CHECK_FALSE(madd::detail::verify_pieces(good, domain, finer_field, regions, false, 2).ok());
+  CHECK_FALSE(madd::detail::verify_pieces(good, domain, finer_field, false, 2).ok());
   CHECK_FALSE(madd::verify_mesh(run.mesh, domain, finer, 2).ok());
 }

@@ -11,6 +11,7 @@
 #include "kernel/fresh_memory.hpp"
 #include "kernel/threads.hpp"
 #include "madd/error.hpp"
+#include "madd/predicates.hpp"
 
 namespace madd::detail {
 
@@ -368,6 +369,28 @@ double PiecesView::attribute_at(const MeshPiecesData& m, std::size_t t) {
   const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
   const SubdomainMesh& p = m.pieces[k];
   return p.triangle_attribute.size() == p.triangles.size() ? p.triangle_attribute[t - m.first_triangle[k]] : 0.0;
+}
+
+std::uint32_t triangle_at(const PiecesView& view, Point p, unsigned threads) {
+  const MeshPiecesData& m = view.data();
+  std::vector<std::uint32_t> found(m.pieces.size(), no_index);
+  for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {
+    const SubdomainMesh& piece = m.pieces[k];
+    for (std::uint32_t t = 0; t < piece.triangles.size(); ++t) {
+      const auto& c = piece.triangles[t];
+      const Point a = piece.points[c[0]], b = piece.points[c[1]], q = piece.points[c[2]];
+      if (p.x < std::min({a.x, b.x, q.x}) || p.x > std::max({a.x, b.x, q.x}) || p.y < std::min({a.y, b.y, q.y}) ||
+          p.y > std::max({a.y, b.y, q.y}))
+        continue;
+      if (orient2d(a, b, p) >= 0 && orient2d(b, q, p) >= 0 && orient2d(q, a, p) >= 0) {
+        found[k] = m.first_triangle[k] + t;
+        return;
+      }
+    }
+  });
+  for (const std::uint32_t t : found)
+    if (t != no_index) return t;
+  return no_index;
 }
 
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,

@@ -198,7 +198,7 @@ ExactSum twice_area(const MeshPiecesData& m, unsigned threads) {
 std::string merged_triangle_text(const PiecesView& view, std::uint32_t t) {
   std::string text =
       "triangle " + std::to_string(t) + " (subdomain " + std::to_string(view.triangle_subdomain[t]) + ")";
-  for (const std::uint32_t v : view.triangles[t]) text += " " + point_text(view.points[v]);
+  for (const std::uint32_t v : view.triangles[t]) text.append(" ").append(point_text(view.points[v]));
   return text;
 }
 
@@ -234,8 +234,8 @@ void check_regions(const MeshPiecesData& m, ProblemLog& log, unsigned threads) {
 
 }  // namespace
 
-Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const AreaBound& field,
-                           const std::vector<std::vector<Region>>& regions, bool pieces_checked, unsigned threads) {
+Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const AreaBound& field, bool pieces_checked,
+                           unsigned threads) {
   Verification result;
   ProblemLog log(result);
   try {
@@ -243,8 +243,7 @@ Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const Ar
       if (!pieces_checked) {
         std::vector<Verification> found(m.pieces.size());
         for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {
-          found[k] = check_subdomain(m.decomposition, static_cast<std::uint32_t>(k),
-                                     k < regions.size() ? regions[k] : std::vector<Region>{}, m.pieces[k],
+          found[k] = check_subdomain(m.decomposition, static_cast<std::uint32_t>(k), {}, m.pieces[k],
                                      m.min_triangle_angle_deg, field);
         });
         for (Verification& v : found) log.absorb(std::move(v.problems), v.problems.size());

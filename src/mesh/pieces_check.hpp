@@ -18,12 +18,11 @@
 
 namespace madd::detail {
 
-// The problems of `m` as one mesh of `domain`. `regions`: each subdomain's
-// (subdomain_regions). With pieces_checked, every piece has passed
-// check_subdomain already (on its worker) and only what crosses subdomains
-// is checked. The pieces and the parts of the crossing checks on `threads`
+// The problems of `m` as one mesh of `domain`. With pieces_checked, every
+// piece has passed check_subdomain already (on its worker, without regions)
+// and only what crosses subdomains is checked. The pieces and the parts of the crossing checks on `threads`
 // threads, the same report for any count. Never throws.
-Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const AreaBound& field,
-                           const std::vector<std::vector<Region>>& regions, bool pieces_checked, unsigned threads = 1);
+Verification verify_pieces(const MeshPiecesData& m, const Pslg& domain, const AreaBound& field, bool pieces_checked,
+                           unsigned threads = 1);
 
 }  // namespace madd::detail

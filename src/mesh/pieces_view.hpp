@@ -69,4 +69,9 @@ private:
 // mapping its corners to global ids first.
 double angle_of(const PiecesView& view, std::size_t t);
 
+// The lowest triangle (in the merged numbering) whose closure holds p, or
+// no_index, from the pieces' own coordinates, the pieces on `threads`
+// threads: what the region flood (quality/mesh_regions.hpp) starts from.
+std::uint32_t triangle_at(const PiecesView& view, Point p, unsigned threads);
+
 }  // namespace madd::detail

@@ -18,7 +18,9 @@ namespace madd::detail {
 
 // The problems of subdomain k's mesh `piece` (local numbering, as
 // refine_subdomain made it), each prefixed "subdomain k: "; `regions` are
-// the subdomain's (subdomain_regions).
+// the subdomain's (subdomain_regions), or none: its region attributes and
+// regional area bounds are then not checked (a mesh kept in pieces has them
+// checked over the whole mesh, mesh/pieces_check.hpp).
 Verification check_subdomain(const Decomposition& d, std::uint32_t k, const std::vector<Region>& regions,
                              const SubdomainMesh& piece, double min_triangle_angle_deg, const AreaBound& field);
 

@@ -76,8 +76,7 @@ std::vector<std::uint32_t> mesh_regions_of(const AnyMesh& m, unsigned threads) {
       constraint.insert(region_edge_key(s.a, s.b));
       on_constraint[s.a] = on_constraint[s.b] = 1;
     }
-  const auto crosses = [&](std::uint32_t t, int i) {
-    const std::array<std::uint32_t, 3> corners = m.triangles[t];
+  const auto crosses = [&](const std::array<std::uint32_t, 3>& corners, int i) {
     const std::uint32_t a = corners[(i + 1) % 3], b = corners[(i + 2) % 3];
     return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(region_edge_key(a, b)) == 0;
   };
@@ -101,9 +100,11 @@ std::vector<std::uint32_t> mesh_regions_of(const AnyMesh& m, unsigned threads) {
     };
     for (std::uint32_t i = 0; i < count; ++i) {
       const std::uint32_t t = begin + i;
+      // Each read once (a view of pieces computes them on access).
+      const std::array<std::uint32_t, 3> corners = m.triangles[t], links = m.neighbours[t];
       for (int e = 0; e < 3; ++e) {
-        const std::uint32_t u = m.neighbours[t][e];
-        if (u == no_index || !crosses(t, e)) continue;
+        const std::uint32_t u = links[e];
+        if (u == no_index || !crosses(corners, e)) continue;
         if (u < begin || u >= begin + count) {
           leaving[k].emplace_back(t, u);
         } else if (u < t) {  // each link inside once, from its higher end
