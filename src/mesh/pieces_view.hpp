@@ -69,6 +69,22 @@ private:
 // mapping its corners to global ids first.
 double angle_of(const PiecesView& view, std::size_t t);
 
+// for_each_triangle_in (quality/mesh_regions.hpp) of a view: subdomain k's
+// triangles read from its piece in order, their corners and links mapped to
+// the merged numbering, without finding the subdomain of each.
+template <typename Fn>
+void for_each_triangle_in(const PiecesView& view, std::uint32_t k, const Fn& fn) {
+  const MeshPiecesData& m = view.data();
+  const SubdomainMesh& p = m.pieces[k];
+  for (std::uint32_t t = 0; t < p.triangles.size(); ++t) {
+    const auto& c = p.triangles[t];
+    fn(m.first_triangle[k] + t,
+       std::array<std::uint32_t, 3>{m.global_point(k, c[0]), m.global_point(k, c[1]), m.global_point(k, c[2])},
+       std::array<std::uint32_t, 3>{m.global_neighbour(k, t, 0), m.global_neighbour(k, t, 1),
+                                    m.global_neighbour(k, t, 2)});
+  }
+}
+
 // The lowest triangle (in the merged numbering) whose closure holds p, or
 // no_index, from the pieces' own coordinates, the pieces on `threads`
 // threads: what the region flood (quality/mesh_regions.hpp) starts from.

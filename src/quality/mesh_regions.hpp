@@ -31,6 +31,15 @@ inline std::uint64_t region_edge_key(std::uint32_t a, std::uint32_t b) {
 // The lowest triangle whose closure holds p (the triangles are known to be
 // counter-clockwise by now), or no_index: the triangles scanned in parts on
 // `threads` threads, each part's lowest, the lowest of those.
+// Calls fn(t, corners, links) for each triangle t of subdomain k in order,
+// with its corners and the triangles across its edges (a view of a mesh in
+// pieces has its own, mesh/pieces_view.hpp, reading the piece directly).
+template <typename AnyMesh, typename Fn>
+void for_each_triangle_in(const AnyMesh& m, std::uint32_t k, const Fn& fn) {
+  for (std::uint32_t t = m.subdomain_first_triangle[k]; t < m.subdomain_first_triangle[k + 1]; ++t)
+    fn(t, m.triangles[t], m.neighbours[t]);
+}
+
 template <typename AnyMesh>
 std::uint32_t triangle_at(const AnyMesh& m, Point p, unsigned threads) {
   const std::size_t nt = m.triangles.size();
@@ -98,21 +107,21 @@ std::vector<std::uint32_t> mesh_regions_of(const AnyMesh& m, unsigned threads) {
       while (parent[c] != c) c = parent[c] = parent[parent[c]];
       return c;
     };
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::uint32_t t = begin + i;
-      // Each read once (a view of pieces computes them on access).
-      const std::array<std::uint32_t, 3> corners = m.triangles[t], links = m.neighbours[t];
-      for (int e = 0; e < 3; ++e) {
-        const std::uint32_t u = links[e];
-        if (u == no_index || !crosses(corners, e)) continue;
-        if (u < begin || u >= begin + count) {
-          leaving[k].emplace_back(t, u);
-        } else if (u < t) {  // each link inside once, from its higher end
-          const std::uint32_t a = root(i), b = root(u - begin);
-          if (a != b) parent[std::max(a, b)] = std::min(a, b);
-        }
-      }
-    }
+    for_each_triangle_in(
+        m, static_cast<std::uint32_t>(k),
+        [&](std::uint32_t t, const std::array<std::uint32_t, 3>& corners, const std::array<std::uint32_t, 3>& links) {
+          const std::uint32_t i = t - begin;
+          for (int e = 0; e < 3; ++e) {
+            const std::uint32_t u = links[e];
+            if (u == no_index || !crosses(corners, e)) continue;
+            if (u < begin || u >= begin + count) {
+              leaving[k].emplace_back(t, u);
+            } else if (u < t) {  // each link inside once, from its higher end
+              const std::uint32_t a = root(i), b = root(u - begin);
+              if (a != b) parent[std::max(a, b)] = std::min(a, b);
+            }
+          }
+        });
     for (std::uint32_t i = 0; i < count; ++i) {  // a root comes before the rest of its component
       const std::uint32_t r = root(i);
       label[begin + i] = r == i ? components[k]++ : label[begin + r];
