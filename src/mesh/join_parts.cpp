@@ -9,6 +9,7 @@
 
 #include "madd/error.hpp"
 #include "madd/mesh_share.hpp"
+#include "kernel/edge_key.hpp"
 
 namespace madd {
 
@@ -16,10 +17,6 @@ namespace {
 
 [[noreturn]] void not_one_run(const std::string& what) {
   throw InvalidInputError(InputProblem::other, "join_parts: the parts are not those of one run: " + what);
-}
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
 }
 
 std::uint32_t global_id(std::uint64_t id, std::uint64_t total, const char* what) {
@@ -62,7 +59,7 @@ void link_across_shares(Mesh& m) {
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
     for (std::uint32_t i = 0; i < 3; ++i) {
       if (m.neighbours[t][i] != no_index) continue;
-      const std::uint64_t key = edge_key(m.triangles[t][(i + 1) % 3], m.triangles[t][(i + 2) % 3]);
+      const std::uint64_t key = detail::edge_key(m.triangles[t][(i + 1) % 3], m.triangles[t][(i + 2) % 3]);
       const auto [at, added] = open.emplace(key, 3 * t + i);
       if (added) continue;
       const std::uint32_t other = at->second;

@@ -2,7 +2,6 @@
 // the merge of all of them into one mesh.
 #include "mesh/merge.hpp"
 #include "mesh/mesh_pieces.hpp"
-#include "mesh/pieces_view.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -11,7 +10,7 @@
 #include "kernel/fresh_memory.hpp"
 #include "kernel/threads.hpp"
 #include "madd/error.hpp"
-#include "madd/predicates.hpp"
+#include "kernel/edge_key.hpp"
 
 namespace madd::detail {
 
@@ -84,10 +83,6 @@ void add_boundary_segments(std::vector<MeshSegment>& out, const MeshPiecesData& 
     }
     out.push_back({from, m.global_point(k, seg.b), seg.marker, local.piece[s]});
   }
-}
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
 }
 
 // One subdomain's side of each of its separator segments: the separator
@@ -343,54 +338,6 @@ Mesh join(MeshPiecesData&& m, unsigned threads) {
   out.min_triangle_angle_deg = m.min_triangle_angle_deg;
   out.decomposition = std::move(m.decomposition);
   return out;
-}
-
-Point PiecesView::point_at(const MeshPiecesData& m, std::size_t v) {
-  const auto g = static_cast<std::uint32_t>(v);
-  if (g < m.decomposition.points.size()) return m.decomposition.points[g];
-  const std::uint32_t k = m.subdomain_of_point(g);
-  return m.pieces[k].points[g - m.first_point[k] + m.local[k].to_global.size()];
-}
-
-std::array<std::uint32_t, 3> PiecesView::triangle_at(const MeshPiecesData& m, std::size_t t) {
-  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
-  const auto& c = m.pieces[k].triangles[t - m.first_triangle[k]];
-  return {m.global_point(k, c[0]), m.global_point(k, c[1]), m.global_point(k, c[2])};
-}
-
-std::array<std::uint32_t, 3> PiecesView::neighbours_at(const MeshPiecesData& m, std::size_t t) {
-  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
-  const auto local = static_cast<std::uint32_t>(t - m.first_triangle[k]);
-  return {m.global_neighbour(k, local, 0), m.global_neighbour(k, local, 1), m.global_neighbour(k, local, 2)};
-}
-
-// As join() copies it: a piece's attributes when it has one per triangle, else 0.
-double PiecesView::attribute_at(const MeshPiecesData& m, std::size_t t) {
-  const std::uint32_t k = m.subdomain_of_triangle(static_cast<std::uint32_t>(t));
-  const SubdomainMesh& p = m.pieces[k];
-  return p.triangle_attribute.size() == p.triangles.size() ? p.triangle_attribute[t - m.first_triangle[k]] : 0.0;
-}
-
-std::uint32_t triangle_at(const PiecesView& view, Point p, unsigned threads) {
-  const MeshPiecesData& m = view.data();
-  std::vector<std::uint32_t> found(m.pieces.size(), no_index);
-  for_each_on_threads(m.pieces.size(), threads, [&](std::size_t k) {
-    const SubdomainMesh& piece = m.pieces[k];
-    for (std::uint32_t t = 0; t < piece.triangles.size(); ++t) {
-      const auto& c = piece.triangles[t];
-      const Point a = piece.points[c[0]], b = piece.points[c[1]], q = piece.points[c[2]];
-      if (p.x < std::min({a.x, b.x, q.x}) || p.x > std::max({a.x, b.x, q.x}) || p.y < std::min({a.y, b.y, q.y}) ||
-          p.y > std::max({a.y, b.y, q.y}))
-        continue;
-      if (orient2d(a, b, p) >= 0 && orient2d(b, q, p) >= 0 && orient2d(q, a, p) >= 0) {
-        found[k] = m.first_triangle[k] + t;
-        return;
-      }
-    }
-  });
-  for (const std::uint32_t t : found)
-    if (t != no_index) return t;
-  return no_index;
 }
 
 Mesh merge(const Decomposition& d, std::vector<SubdomainMesh>& pieces, double min_triangle_angle_deg,

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
-#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -182,17 +181,16 @@ void refine_in_rounds(Decomposition& d, const MeshOptions& options, const AreaBo
 
 namespace detail {
 
-// A run up to its refined subdomains: the discretised decomposition, each
-// subdomain's mesh and regions.
+// A run up to its refined subdomains: the discretised decomposition and
+// each subdomain's mesh.
 struct Refined {
   Decomposition d;
   std::vector<SubdomainMesh> pieces;
-  RegionView view;
 };
 
 // The decoupling, the estimate and refinement of `decomposition` of
-// work.domain under work.size (built once per run); `check`: run on each
-// subdomain's mesh by the thread that made it, once final.
+// work.domain under work.size (built once per run); with check_on_workers,
+// each subdomain's mesh is checked by the thread that made it, once final.
 Refined refine_decomposition(const Decomposition& decomposition, const DomainWork& work, const MeshOptions& options,
                              MeshReport& report, detail::Stopwatch& clock, bool check_on_workers) {
   const AreaBound& field = work.size;
@@ -202,10 +200,10 @@ Refined refine_decomposition(const Decomposition& decomposition, const DomainWor
   Refined out;
   // The subdomains' regions, found once (a triangulation of the whole
   // domain): the decoupling's split points change no face.
-  out.view = region_view(decomposition, threads);
-  out.d = detail::discretise(decomposition, field, false, &guard, threads, &out.view);
+  const RegionView view = region_view(decomposition, threads);
+  out.d = detail::discretise(decomposition, field, false, &guard, threads, &view);
   report.phases.push_back({"discretise", clock.lap()});
-  report.expected_triangles = detail::expected_triangles(out.d, work, threads, &decomposition, &out.view);
+  report.expected_triangles = detail::expected_triangles(out.d, work, threads, &decomposition, &view);
   report.phases.push_back({"estimate", clock.lap()});
   const std::vector<bool> all(out.d.subdomains.size(), true);
   const auto alone = [](const std::vector<std::uint32_t>& mine) { return mine; };
@@ -215,7 +213,7 @@ Refined refine_decomposition(const Decomposition& decomposition, const DomainWor
     verify_subdomain(out.d, k, {}, piece, options.size.min_triangle_angle_deg, field);
   };
   detail::refine_in_rounds(out.d, options, field, report.expected_triangles, guard, all, alone, report, out.pieces,
-                           out.view.regions, check_on_workers ? check : SubdomainCheck{});
+                           view.regions, check_on_workers ? check : SubdomainCheck{});
   report.phases.push_back({"refine", clock.lap()});
   return out;
 }
@@ -316,49 +314,6 @@ Mesh mesh(const Pslg& domain, const MeshOptions& options) { return mesh_with_rep
 
 MeshPiecesRun mesh_pieces_with_report(const Pslg& domain, const MeshOptions& options) {
   return mesh_domain(domain, options, detail::mesh_pieces_bounded);
-}
-
-// MeshPieces: a value holding the pieces' data.
-MeshPieces::MeshPieces() : data_(std::make_unique<detail::MeshPiecesData>()) {}
-MeshPieces::MeshPieces(detail::MeshPiecesData data)
-    : data_(std::make_unique<detail::MeshPiecesData>(std::move(data))) {}
-MeshPieces::MeshPieces(const MeshPieces& other) : data_(std::make_unique<detail::MeshPiecesData>(*other.data_)) {}
-MeshPieces::MeshPieces(MeshPieces&& other) noexcept : data_(std::move(other.data_)) {
-  other.data_ = std::make_unique<detail::MeshPiecesData>();
-}
-MeshPieces& MeshPieces::operator=(const MeshPieces& other) {
-  if (this != &other) *data_ = *other.data_;
-  return *this;
-}
-MeshPieces& MeshPieces::operator=(MeshPieces&& other) noexcept {
-  std::swap(data_, other.data_);
-  return *this;
-}
-MeshPieces::~MeshPieces() = default;
-bool operator==(const MeshPieces& a, const MeshPieces& b) { return *a.data_ == *b.data_; }
-
-std::uint32_t MeshPieces::subdomain_count() const noexcept { return data_->subdomain_count(); }
-std::uint64_t MeshPieces::point_count() const noexcept { return data_->point_count(); }
-std::uint64_t MeshPieces::triangle_count() const noexcept { return data_->triangle_count(); }
-std::uint64_t MeshPieces::subdomain_triangle_count(std::uint32_t k) const {
-  return data_->first_triangle.at(k + 1) - data_->first_triangle.at(k);
-}
-const Decomposition& MeshPieces::decomposition() const noexcept { return data_->decomposition; }
-MeshShortfall MeshPieces::shortfall() const noexcept { return data_->shortfall; }
-double MeshPieces::min_triangle_angle_deg() const noexcept { return data_->min_triangle_angle_deg; }
-
-Mesh join(MeshPieces pieces, unsigned threads) { return detail::join(std::move(*pieces.data_), threads); }
-
-Verification verify_mesh(const MeshPieces& mesh, const Pslg& domain, const MeshSizeOptions& size, unsigned threads) {
-  Verification result;
-  std::optional<detail::AreaBound> bound;
-  try {
-    bound.emplace(size, &domain, threads);
-  } catch (const std::exception& e) {
-    result.add(std::string("the size bound could not be built: ") + e.what());
-    return result;
-  }
-  return detail::verify_pieces(mesh.data(), domain, *bound, false, threads);
 }
 
 }  // namespace madd

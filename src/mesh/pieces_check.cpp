@@ -17,14 +17,11 @@
 #include "quality/mesh_regions.hpp"
 #include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
+#include "kernel/edge_key.hpp"
 
 namespace madd::detail {
 
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
 
 std::string piece_triangle_text(std::uint32_t k, std::uint32_t t) {
   return "triangle " + std::to_string(t) + " of subdomain " + std::to_string(k);

@@ -1,7 +1,8 @@
 #pragma once
 // A mesh in pieces read as if it were the merged Mesh: the same field names,
-// each element computed from its piece on access (the subdomain found by
-// binary search over the offsets), so that code written for a Mesh's fields
+// each element computed from its piece on access (its subdomain the one the
+// reading thread found last, else found by binary search over the offsets:
+// MeshPiecesData::subdomain_of_triangle), so that code written for a Mesh's fields
 // (the file writers, the figures) reads the pieces unchanged and writes the
 // same bytes. Read-only; the pieces must outlive it.
 #include <array>

@@ -22,6 +22,7 @@
 // when the triangle is skinny (Shewchuk's "Terminator"), which is what
 // makes refinement terminate there.
 #include "mesh/refine.hpp"
+#include "kernel/edge_key.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -96,10 +97,6 @@ private:
   void queue_fresh();
   void check_encroached_by_apex(std::uint32_t h);
   void find_sharp_corners();
-  std::uint64_t key(std::uint32_t a, std::uint32_t b) const {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  }
-
   RefinementMesh& m_;
   const RefineSettings& settings_;
   const std::vector<double>& label_area_;
@@ -403,10 +400,10 @@ bool Refiner::split_subsegment(std::uint32_t a, std::uint32_t b) {
   std::uint32_t h = m_.find_half_edge(a, b);
   if (h == no_index || m_.segment_of(h) == no_index) h = m_.find_half_edge(b, a);
   if (h == no_index || m_.segment_of(h) == no_index) return false;  // split already
-  if (stuck_.count(key(a, b))) return false;
+  if (stuck_.count(edge_key(a, b))) return false;
   const std::uint32_t v = m_.split(h, split_parameter(h));
   if (v == no_index) {
-    stuck_.insert(key(a, b));
+    stuck_.insert(edge_key(a, b));
     return false;
   }
   ++steiner_;

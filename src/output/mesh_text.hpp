@@ -14,6 +14,7 @@
 #include "madd/atomic_write.hpp"
 #include "madd/mesh.hpp"
 #include "madd/mesh_share.hpp"
+#include "kernel/edge_key.hpp"
 #include "kernel/number_format.hpp"
 #include "mesh/pieces_view.hpp"
 
@@ -115,12 +116,6 @@ inline bool has_region_attributes(const PiecesView& view) { return view.data().h
 template <typename AnyMesh>  // a Mesh or a part's LocalMesh
 double region_attribute(const AnyMesh& mesh, std::size_t t) {
   return t < mesh.triangle_attribute.size() ? mesh.triangle_attribute[t] : 0.0;
-}
-
-// The key of the undirected edge {a, b}.
-inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t{a} << 32) | b;
 }
 
 // The marker of every MeshSegment, by edge: what a boundary edge of the mesh

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernel/edge_key.hpp"
 #include "kernel/number_format.hpp"
 #include "kernel/threads.hpp"
 #include "madd/mesh.hpp"
@@ -23,10 +24,6 @@
 #include "quality/verify_decomposition_detail.hpp"
 
 namespace madd::detail {
-
-inline std::uint64_t region_edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
 
 // The lowest triangle whose closure holds p (the triangles are known to be
 // counter-clockwise by now), or no_index: the triangles scanned in parts on
@@ -82,12 +79,12 @@ std::vector<std::uint32_t> mesh_regions_of(const AnyMesh& m, unsigned threads) {
   std::vector<std::uint8_t> on_constraint(m.points.size(), 0);
   for (const MeshSegment& s : m.segments)
     if (!m.decomposition.is_separator(s.piece)) {
-      constraint.insert(region_edge_key(s.a, s.b));
+      constraint.insert(edge_key(s.a, s.b));
       on_constraint[s.a] = on_constraint[s.b] = 1;
     }
   const auto crosses = [&](const std::array<std::uint32_t, 3>& corners, int i) {
     const std::uint32_t a = corners[(i + 1) % 3], b = corners[(i + 2) % 3];
-    return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(region_edge_key(a, b)) == 0;
+    return on_constraint[a] == 0 || on_constraint[b] == 0 || constraint.count(edge_key(a, b)) == 0;
   };
   // label[t] first holds t's component, numbered within its subdomain.
   const auto& first = m.subdomain_first_triangle;

@@ -43,14 +43,11 @@
 #include "madd/predicates.hpp"
 #include "quality/parallel_log.hpp"
 #include "quality/verify_mesh_detail.hpp"
+#include "kernel/edge_key.hpp"
 
 namespace madd::detail {
 
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
 
 // The mesh segments by edge, with a flag per vertex on one, so that the
 // many edges with an end on none are known to be no segment without a

@@ -11,6 +11,7 @@
 #include "madd/predicates.hpp"
 #include "pslg/validate_detail.hpp"
 #include "triangulation/exact_area.hpp"
+#include "kernel/edge_key.hpp"
 
 namespace madd::detail {
 namespace {
@@ -45,10 +46,6 @@ std::vector<std::uint32_t> hull_boundary_cycle(const std::vector<Point>& pts) {
   return cycle;
 }
 
-std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
-  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-}
-
 }  // namespace
 
 KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
@@ -73,7 +70,7 @@ KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
   if (options.convex_hull && !hull.empty()) {
     outside = Outside::retained;
     const std::vector<std::uint32_t> cycle = hull_boundary_cycle(p.points);
-    for (std::size_t i = 0; i < cycle.size(); ++i) on_hull.insert(pair_key(cycle[i], cycle[(i + 1) % cycle.size()]));
+    for (std::size_t i = 0; i < cycle.size(); ++i) on_hull.insert(edge_key(cycle[i], cycle[(i + 1) % cycle.size()]));
     for (std::size_t h = 0; h < p.holes.size(); ++h)
       if (fm.hole_face[h] == no_index && in_closed_hull(hull, p.holes[h])) outside = Outside::unknown;
   }
@@ -95,7 +92,7 @@ KeptRegion kept_region(const Pslg& input, const TriangulateOptions& options) {
   for (std::uint32_t s = 0; s < p.segments.size(); ++s) {
     const std::uint32_t f = fm.face_of_half_edge(2 * s), g = fm.face_of_half_edge(2 * s + 1);
     const bool hull_side =
-        (f == no_index) != (g == no_index) && on_hull.count(pair_key(p.segments[s].a, p.segments[s].b));
+        (f == no_index) != (g == no_index) && on_hull.count(edge_key(p.segments[s].a, p.segments[s].b));
     out.must_be_edge[s] = (f != no_index && kept[f]) || (g != no_index && kept[g]) ||
                           (outside == Outside::retained && (f == no_index || g == no_index) && !hull_side);
   }
