@@ -41,15 +41,9 @@ constexpr const char* mesh_exit_codes =
     "\nexit codes: 0 ok, 2 usage error, 3 bad input, 4 no decomposition, 5 output not written,\n"
     "6 limit, 70 internal error\n";
 
-template <typename AnyMesh>
 int write_mesh_outputs(const MeshArgs& args, const MeshOptions& options, const CoastDomain& input,
-                       const std::optional<DepthField>& depth, const AnyMesh& m, const MeshReport& report,
+                       const std::optional<DepthField>& depth, const MeshPieces& m, const MeshReport& report,
                        std::chrono::steady_clock::time_point start, Progress& progress);
-
-std::uint64_t subdomain_triangles(const Mesh& m, std::uint32_t k) {
-  return m.subdomain_first_triangle[k + 1] - m.subdomain_first_triangle[k];
-}
-std::uint64_t subdomain_triangles(const MeshPieces& m, std::uint32_t k) { return m.subdomain_triangle_count(k); }
 
 int mesh_body(void* context) {
   const auto& args = *static_cast<const MeshArgs*>(context);
@@ -77,32 +71,23 @@ int mesh_body(void* context) {
       throw OptionError(e.option(), e.requirement(), cli_message(e, mesh_options(), line));
     }
   };
-  // The files of Triangle's formats and the split pieces are written from
-  // the subdomains' meshes as they were made (docs/mesh.md, "Meshes in
-  // pieces"); the model files from the merged mesh.
-  const bool merged = wants_model_files(line, input.projection);
-  if (merged) {
-    const MeshRun run = meshed([](const Pslg& d, const MeshOptions& o) { return mesh_with_report(d, o); });
-    return write_mesh_outputs(args, options, input, depth, run.mesh, run.report, start, progress);
-  }
+  // Every file is written from the subdomains' meshes as they were made
+  // (docs/mesh.md, "Meshes in pieces"): the mesh is never merged.
   const MeshPiecesRun run = meshed([](const Pslg& d, const MeshOptions& o) { return mesh_pieces_with_report(d, o); });
   return write_mesh_outputs(args, options, input, depth, run.mesh, run.report, start, progress);
 }
 
-// The outputs of a mesh, merged (Mesh) or in pieces (MeshPieces), all or
-// nothing, then the summary line.
-template <typename AnyMesh>
+// The outputs of a mesh in pieces, all or nothing, then the summary line.
 int write_mesh_outputs(const MeshArgs& args, const MeshOptions& options, const CoastDomain& input,
-                       const std::optional<DepthField>& depth, const AnyMesh& m, const MeshReport& report,
+                       const std::optional<DepthField>& depth, const MeshPieces& m, const MeshReport& report,
                        std::chrono::steady_clock::time_point start, Progress& progress) {
   const CommandLine& line = args.line;
   progress.say("writing");
   OutputSet outputs;
   ModelFiles model_files;
   bool model = false;
-  if constexpr (std::is_same_v<AnyMesh, Mesh>)
-    model = add_model_files(outputs, model_files, m, line, args.prefix, input.projection, depth,
-                            options.decomposition.threads);
+  model = add_model_files(outputs, model_files, m, line, args.prefix, input.projection, depth,
+                          options.decomposition.threads);
   if (!model) add_mesh(outputs, m, args.prefix, line.formats, options.decomposition.threads);
   if (!line.split_mesh_dir.empty()) {
     const std::string stem = std::filesystem::path(args.prefix).filename().string();
@@ -115,7 +100,7 @@ int write_mesh_outputs(const MeshArgs& args, const MeshOptions& options, const C
     std::vector<RunFigure> figures_of_run = run_figures(report);
     std::vector<double> triangles_per_subdomain;
     for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
-      triangles_per_subdomain.push_back(static_cast<double>(subdomain_triangles(m, k)));
+      triangles_per_subdomain.push_back(static_cast<double>(m.subdomain_triangle_count(k)));
     figures_of_run.push_back({"subdomain_triangles", triangles_per_subdomain});
     figures_of_run.push_back({"seconds", seconds_since(start)});
     json = format_mesh_report_json(figures, figures_of_run);

@@ -30,14 +30,38 @@ bool wants_model_files(const CommandLine& line, const Projection& projection) {
   return model || (line.lonlat && projection.geographic);
 }
 
-bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
-                     const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
-                     unsigned threads, const std::string& title) {
+namespace {
+
+const std::vector<Point>& points_of(const Mesh& mesh, ModelFiles&, unsigned) { return mesh.points; }
+// A mesh in pieces has no array of its points: made once, when a column needs them.
+const std::vector<Point>& points_of(const MeshPieces& mesh, ModelFiles& files, unsigned threads) {
+  files.points = mesh_points(mesh, threads);
+  return files.points;
+}
+
+void keep_lonlat_mesh(const Mesh& mesh, const std::vector<Point>& lonlat, ModelFiles& files, unsigned) {
+  files.lonlat_mesh = mesh;
+  files.lonlat_mesh.points = lonlat;
+}
+void keep_lonlat_mesh(const MeshPieces& mesh, const std::vector<Point>& lonlat, ModelFiles& files, unsigned threads) {
+  files.lonlat_pieces = with_points(mesh, lonlat, threads);
+}
+const Mesh& lonlat_mesh(const Mesh&, const ModelFiles& files) { return files.lonlat_mesh; }
+const MeshPieces& lonlat_mesh(const MeshPieces&, const ModelFiles& files) { return files.lonlat_pieces; }
+
+template <typename AnyMesh>
+bool add_model_files_of(OutputSet& outputs, ModelFiles& files, const AnyMesh& mesh, const CommandLine& line,
+                        const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
+                        unsigned threads, const std::string& title) {
   if (!wants_model_files(line, projection)) return false;
   const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
-  const std::vector<Point> lonlat = projection.geographic ? in_lonlat(mesh.points, projection) : std::vector<Point>{};
+  const bool columns = projection.geographic || (depth && model);
+  const std::vector<Point> no_points;
+  const std::vector<Point>& points = columns ? points_of(mesh, files, threads) : no_points;
+  const std::vector<Point> lonlat = projection.geographic ? in_lonlat(points, projection) : std::vector<Point>{};
   files.metres.title = !title.empty() ? title : std::filesystem::path(prefix).filename().string() + " (madd mesh)";
-  if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : mesh.points, threads);
+  if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : points, threads);
+  files.points = {};  // (the columns hold what they need)
   files.lonlat = files.metres;
   files.lonlat.coordinates = lonlat;
   const ModelGrid& written = projection.geographic ? files.lonlat : files.metres;
@@ -48,10 +72,23 @@ bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, co
   }
   if (!line.sms_file.empty()) add_2dm(outputs, line.sms_file, mesh, line.lonlat ? written : files.metres, threads);
   if (!line.lonlat || !projection.geographic) return false;  // metres are the file's own units then
-  files.lonlat_mesh = mesh;
-  files.lonlat_mesh.points = lonlat;
-  add_mesh(outputs, files.lonlat_mesh, prefix, line.formats, threads);
+  keep_lonlat_mesh(mesh, lonlat, files, threads);
+  add_mesh(outputs, lonlat_mesh(mesh, files), prefix, line.formats, threads);
   return true;
+}
+
+}  // namespace
+
+bool add_model_files(OutputSet& outputs, ModelFiles& files, const Mesh& mesh, const CommandLine& line,
+                     const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
+                     unsigned threads, const std::string& title) {
+  return add_model_files_of(outputs, files, mesh, line, prefix, projection, depth, threads, title);
+}
+
+bool add_model_files(OutputSet& outputs, ModelFiles& files, const MeshPieces& mesh, const CommandLine& line,
+                     const std::string& prefix, const Projection& projection, const std::optional<DepthField>& depth,
+                     unsigned threads, const std::string& title) {
+  return add_model_files_of(outputs, files, mesh, line, prefix, projection, depth, threads, title);
 }
 
 }  // namespace madd::cli

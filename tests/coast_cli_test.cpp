@@ -5,11 +5,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_sandbox.hpp"
 #include "madd/coast.hpp"
@@ -93,24 +95,83 @@ TEST_CASE("madd mesh: from the bay's GeoJSON and depth grid to fort.14, hgrid.gr
   CHECK(!grid.land_boundaries.empty());
 }
 
-TEST_CASE("madd mesh: the mesh files are the same written from the pieces (no model file) and from the merged mesh") {
-  // Without a model file madd mesh writes from the subdomains' meshes and
-  // checks them where they were made; with --fort14 it merges and checks the
-  // merged mesh (docs/mesh.md, "Meshes in pieces"). The same bytes either way.
+TEST_CASE("madd mesh: the model files and --lonlat's mesh files, all written from the pieces, agree point for point") {
+  // madd mesh never merges the mesh (docs/mesh.md, "Meshes in pieces"):
+  // fort.14, hgrid.ll, .2dm and the --lonlat .node/.ele are each written
+  // from the subdomains' meshes (tests/mesh_pieces_test.cpp compares each
+  // with the merged mesh's file). Here they must describe one mesh.
   const CliSandbox box("madd-coast-cli");
   const std::string common = "mesh " + coast_dir + "bay.geojson" + bay_box +
-                             " --hmin 200 --hmax 4000 --distance-rate 0.2 --cells-across 2 --gradation 0.25 -n 8 -j 2"
-                             " --neigh --edge --msh --vtu";
-  const CliRun pieces = box.run(common + " -o pieces");
-  const CliRun merged = box.run(common + " -o merged --fort14 merged.14");
-  REQUIRE_MESSAGE(pieces.status == 0, pieces.output);
-  REQUIRE_MESSAGE(merged.status == 0, merged.output);
-  for (const char* extension : {".node", ".ele", ".neigh", ".edge", ".msh", ".vtu"}) {
-    CAPTURE(extension);
-    const std::string a = slurp(box.path(std::string("pieces") + extension));
-    CHECK(!a.empty());
-    CHECK(a == slurp(box.path(std::string("merged") + extension)));
+                             " --hmin 200 --hmax 4000 --distance-rate 0.2 --cells-across 2 --gradation 0.25 -n 8 -j 2";
+  const CliRun metres = box.run(common + " -o m");
+  const CliRun lonlat = box.run(common + " -o ll --lonlat --fort14 ll.14 --gr3 ll.gr3 --2dm ll.2dm");
+  REQUIRE_MESSAGE(metres.status == 0, metres.output);
+  REQUIRE_MESSAGE(lonlat.status == 0, lonlat.output);
+  CHECK(slurp(box.path("m.ele")) == slurp(box.path("ll.ele")));  // the same triangles, whatever the units
+  // The .node's points (lon/lat) are fort.14's and hgrid.ll's, exactly.
+  std::istringstream node(slurp(box.path("ll.node")));
+  std::size_t count = 0, dimension = 0, attributes = 0, markers = 0;
+  node >> count >> dimension >> attributes >> markers;
+  std::vector<madd::Point> points(count);
+  for (madd::Point& p : points) {
+    std::size_t id = 0;
+    int marker = 0;
+    node >> id >> p.x >> p.y >> marker;
   }
+  REQUIRE(node);
+  const madd::Fort14 grid = madd::read_fort14_file(box.path("ll.14").string());
+  CHECK(grid.points == points);
+  // hgrid.gr3 (metres) and hgrid.ll (lon/lat): fort.14's node and element
+  // lines, then SCHISM's boundary part.
+  const auto gr3_grid = [](const std::string& text, std::vector<madd::Point>& xy,
+                           std::vector<std::array<std::uint32_t, 3>>& elements) {
+    std::istringstream in(text);
+    std::string title;
+    std::getline(in, title);
+    std::size_t ne = 0, np = 0;
+    in >> ne >> np;
+    in.ignore(1 << 20, '\n');
+    xy.resize(np);
+    for (madd::Point& p : xy) {
+      double id = 0, depth = 0;
+      in >> id >> p.x >> p.y >> depth;
+    }
+    elements.resize(ne);
+    for (auto& e : elements) {
+      std::size_t id = 0, kind = 0, a = 0, b = 0, c = 0;
+      in >> id >> kind >> a >> b >> c;
+      e = {static_cast<std::uint32_t>(a - 1), static_cast<std::uint32_t>(b - 1), static_cast<std::uint32_t>(c - 1)};
+    }
+    return static_cast<bool>(in);
+  };
+  std::vector<madd::Point> ll_points, gr3_points;
+  std::vector<std::array<std::uint32_t, 3>> ll_elements, gr3_elements;
+  REQUIRE(gr3_grid(slurp(box.path("ll.ll")), ll_points, ll_elements));
+  REQUIRE(gr3_grid(slurp(box.path("ll.gr3")), gr3_points, gr3_elements));
+  CHECK(ll_points == points);
+  CHECK(ll_elements == grid.elements);
+  CHECK(gr3_elements == grid.elements);
+  CHECK(gr3_points.size() == points.size());
+  CHECK(gr3_points != points);  // metres
+  std::istringstream ele(slurp(box.path("ll.ele")));
+  std::size_t triangles = 0;
+  ele >> triangles >> dimension >> attributes;
+  REQUIRE(grid.elements.size() == triangles);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    std::size_t id = 0, a = 0, b = 0, c = 0;
+    double subdomain = 0;
+    ele >> id >> a >> b >> c >> subdomain;
+    REQUIRE(grid.elements[t] == std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(a - 1),
+                                                             static_cast<std::uint32_t>(b - 1),
+                                                             static_cast<std::uint32_t>(c - 1)});
+  }
+  // The .2dm: one ND card per point, in lon/lat with --lonlat.
+  const std::string sms = slurp(box.path("ll.2dm"));
+  std::size_t nd = 0;
+  for (std::size_t at = sms.find("\nND "); at != std::string::npos; at = sms.find("\nND ", at + 1)) ++nd;
+  CHECK(nd == points.size());
+  CHECK(!grid.open_boundaries.empty());
+  CHECK(!grid.land_boundaries.empty());
 }
 
 TEST_CASE("a malformed GeoJSON is one located line and exit 3, nothing written; a box on a .poly is a usage error") {

@@ -14,6 +14,7 @@
 #include "madd/mesh_metrics.hpp"
 #include "madd/mesh_output.hpp"
 #include "madd/mesh_pieces.hpp"
+#include "madd/model_output.hpp"
 #include "madd/poly_io.hpp"
 #include "mesh/mesh_pieces.hpp"
 #include "mesh/pieces_check.hpp"
@@ -22,6 +23,7 @@
 #include "output/mesh_text.hpp"
 #include "quality/area_bound.hpp"
 #include "mesh_fixtures.hpp"
+#include "scratch_files.hpp"
 
 namespace {
 
@@ -92,6 +94,57 @@ TEST_CASE("mesh_pieces_with_report: joined, mesh()'s mesh; its files and figures
       for (const madd::PhaseTime& p : run.report.phases) names.push_back(p.name);
       CHECK(names == std::vector<std::string>{"decompose", "discretise", "estimate", "refine", "assemble", "verify"});
     }
+  }
+}
+
+TEST_CASE("model files from the pieces: fort.14, hgrid.gr3, .2dm and their boundary lists are the merged mesh's") {
+  // The estuary with two boundary segments made open (marker 2): its loops
+  // have open and land runs, and islands.
+  madd::Pslg domain = madd::read_domain(MADD_DATA_DIR "/estuary.poly");
+  REQUIRE(domain.segments.size() > 2);
+  domain.has_segment_markers = true;
+  for (madd::Segment& s : domain.segments) s.marker = 1;
+  domain.segments[0].marker = domain.segments[1].marker = 2;
+  const madd::test::TempDir dir("pieces-model");
+  for (const unsigned threads : {1u, 3u}) {
+    CAPTURE(threads);
+    const madd::MeshPieces pieces = madd::mesh_pieces_with_report(domain, options_of(domain, cases[1], threads)).mesh;
+    const madd::Mesh whole = madd::join(pieces, threads);
+    const std::vector<madd::ModelBoundary> lists = madd::model_boundaries(pieces);
+    CHECK(lists == madd::model_boundaries(whole));
+    const auto has = [&](madd::BoundaryKind kind) {
+      return std::any_of(lists.begin(), lists.end(), [&](const madd::ModelBoundary& l) { return l.kind == kind; });
+    };
+    CHECK(has(madd::BoundaryKind::open));
+    CHECK(has(madd::BoundaryKind::mainland));
+    CHECK(madd::model_boundaries(pieces, 1) == madd::model_boundaries(whole, 1));  // all open
+    // Per-point columns in the merged numbering: the points themselves, and
+    // other coordinates and depths made from them.
+    const std::vector<madd::Point> points = madd::mesh_points(pieces, threads);
+    REQUIRE(points == whole.points);
+    madd::ModelGrid grid;
+    grid.title = "estuary in pieces";
+    for (const madd::Point p : points) {
+      grid.coordinates.push_back({-70.0 + p.x / 100.0, 43.0 + p.y / 100.0});
+      grid.depth.push_back(1.0 + 0.25 * p.x);
+    }
+    const std::string stem = (dir.path / ("e" + std::to_string(threads))).string();
+    madd::OutputSet outputs;
+    madd::add_fort14(outputs, stem + ".14", pieces, grid, threads);
+    madd::add_gr3(outputs, stem + ".gr3", pieces, {}, threads);
+    madd::add_2dm(outputs, stem + ".2dm", pieces, grid, threads);
+    outputs.write();
+    CHECK(madd::test::read_text(stem + ".14") == madd::format_fort14(whole, grid));
+    CHECK(madd::test::read_text(stem + ".gr3") == madd::format_gr3(whole));
+    CHECK(madd::test::read_text(stem + ".2dm") == madd::format_2dm(whole, grid));
+    // The mesh in other coordinates (--lonlat): its files are the merged
+    // mesh's with the points replaced.
+    madd::Mesh moved = whole;
+    moved.points = grid.coordinates;
+    const madd::MeshPieces moved_pieces = madd::with_points(pieces, grid.coordinates, threads);
+    check_same_files(moved, moved_pieces, threads);
+    CHECK(madd::join(moved_pieces, threads).points == moved.points);
+    CHECK_THROWS_AS(madd::with_points(pieces, std::vector<madd::Point>(points.size() - 1), threads), madd::OptionError);
   }
 }
 

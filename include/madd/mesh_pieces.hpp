@@ -9,6 +9,7 @@
 // madd/mesh_metrics.hpp).
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "madd/decomposition.hpp"
 #include "madd/mesh.hpp"
@@ -50,6 +51,7 @@ public:
 
 private:
   friend Mesh join(MeshPieces pieces, unsigned threads);
+  friend MeshPieces with_points(MeshPieces mesh, const std::vector<Point>& points, unsigned threads);
   std::unique_ptr<detail::MeshPiecesData> data_;
 };
 
@@ -73,6 +75,19 @@ MeshPiecesRun mesh_pieces_with_report(const Pslg& domain, const MeshOptions& opt
 // The merged mesh, each piece copied into its place on `threads` threads
 // (0: one per core) and released as it goes.
 Mesh join(MeshPieces pieces, unsigned threads = 1);
+
+// Every point of the mesh, in the merged numbering: join(mesh).points, read
+// from the pieces on `threads` threads (what the per-point columns of a
+// model file, its depths and longitudes/latitudes, are computed from).
+std::vector<Point> mesh_points(const MeshPieces& mesh, unsigned threads = 1);
+
+// The same mesh with point v at points[v] (merged numbering, one per point:
+// mesh_points' size), in the decomposition and in every piece: the mesh to
+// write in other coordinates (longitude/latitude). The pieces' files are
+// then those of join(mesh) with its points replaced. Not a mesh of the
+// domain any more (do not check it against it). Throws OptionError
+// ("points") on a wrong count.
+MeshPieces with_points(MeshPieces mesh, const std::vector<Point>& points, unsigned threads = 1);
 
 // verify_mesh() of the mesh the pieces make, without joining them: each
 // piece alone, on `threads` threads, then what crosses subdomains.

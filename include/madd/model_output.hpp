@@ -1,8 +1,8 @@
 #pragma once
-// The merged mesh (include/madd/mesh.hpp) as the grid files of coastal ocean
-// models: ADCIRC's fort.14, SCHISM's hgrid.gr3 / hgrid.ll and SMS's .2dm,
-// with the domain's open (ocean) and land boundaries; and fort.14 read back
-// and checked. As in mesh_output.hpp, every format_* function returns the
+// A mesh (include/madd/mesh.hpp, or kept in pieces: madd/mesh_pieces.hpp)
+// as the grid files of coastal ocean models: ADCIRC's fort.14, SCHISM's
+// hgrid.gr3 / hgrid.ll and SMS's .2dm, with the domain's open (ocean) and
+// land boundaries; and fort.14 read back and checked. As in mesh_output.hpp, every format_* function returns the
 // whole text and the add_* functions put a file into an OutputSet.
 //
 // The sources of each layout (cited again where it is written):
@@ -26,6 +26,7 @@
 #include "madd/error.hpp"
 #include "madd/geometry.hpp"
 #include "madd/mesh.hpp"
+#include "madd/mesh_pieces.hpp"
 
 namespace madd {
 
@@ -77,6 +78,9 @@ struct ModelBoundary {
 // Deterministic. Throws InvalidInputError when the triangles' neighbours are
 // not consistent (a malformed Mesh).
 std::vector<ModelBoundary> model_boundaries(const Mesh& mesh, int open_marker = 2);
+// The same lists of a mesh kept in pieces (madd/mesh_pieces.hpp): those of
+// join(mesh), traced through the pieces.
+std::vector<ModelBoundary> model_boundaries(const MeshPieces& mesh, int open_marker = 2);
 
 // fort.14: AGRID; "NE NP"; NP lines "JN X Y DP"; NE lines "JE 3 N1 N2 N3"
 // (counter-clockwise in mesh.points); NOPE, NETA, then per open list
@@ -115,6 +119,15 @@ void add_fort14(OutputSet& outputs, const std::string& path, const Mesh& mesh, c
 void add_gr3(OutputSet& outputs, const std::string& path, const Mesh& mesh, const ModelGrid& grid,
              unsigned threads = 1);
 void add_2dm(OutputSet& outputs, const std::string& path, const Mesh& mesh, const ModelGrid& grid,
+             unsigned threads = 1);
+// The same files of a mesh kept in pieces, byte for byte those of
+// join(mesh), read from the pieces while they are written (a grid's
+// coordinates and depths are per point in the merged numbering: mesh_points).
+void add_fort14(OutputSet& outputs, const std::string& path, const MeshPieces& mesh, const ModelGrid& grid,
+                unsigned threads = 1);
+void add_gr3(OutputSet& outputs, const std::string& path, const MeshPieces& mesh, const ModelGrid& grid,
+             unsigned threads = 1);
+void add_2dm(OutputSet& outputs, const std::string& path, const MeshPieces& mesh, const ModelGrid& grid,
              unsigned threads = 1);
 
 // One boundary segment of a fort.14, as the file gives it.

@@ -2,14 +2,18 @@
 // data (src/mesh/mesh_pieces.hpp), its join and its check.
 #include "madd/mesh_pieces.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "kernel/threads.hpp"
+#include "madd/error.hpp"
 #include "mesh/mesh_pieces.hpp"
 #include "mesh/pieces_check.hpp"
+#include "mesh/pieces_view.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd {
@@ -43,6 +47,38 @@ MeshShortfall MeshPieces::shortfall() const noexcept { return data_->shortfall; 
 double MeshPieces::min_triangle_angle_deg() const noexcept { return data_->min_triangle_angle_deg; }
 
 Mesh join(MeshPieces pieces, unsigned threads) { return detail::join(std::move(*pieces.data_), threads); }
+
+std::vector<Point> mesh_points(const MeshPieces& mesh, unsigned threads) {
+  const detail::MeshPiecesData& m = mesh.data();
+  std::vector<Point> out(m.point_count());
+  std::copy(m.decomposition.points.begin(), m.decomposition.points.end(), out.begin());
+  // Each subdomain's Steiner points are one run in the merged numbering.
+  detail::for_each_on_threads(m.subdomain_count(), threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    const std::vector<Point>& local = m.pieces[k].points;
+    const std::size_t own = m.local[k].to_global.size();
+    if (local.size() > own)
+      std::copy(local.begin() + static_cast<std::ptrdiff_t>(own), local.end(), out.begin() + m.first_point[k]);
+  });
+  return out;
+}
+
+MeshPieces with_points(MeshPieces mesh, const std::vector<Point>& points, unsigned threads) {
+  detail::MeshPiecesData& m = *mesh.data_;
+  if (points.size() != m.point_count())
+    throw OptionError("points", "must hold one point per mesh point (" + std::to_string(m.point_count()) + "), not " +
+                                    std::to_string(points.size()));
+  std::copy(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(m.decomposition.points.size()),
+            m.decomposition.points.begin());
+  detail::for_each_on_threads(m.subdomain_count(), threads, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
+    std::vector<Point>& local = m.pieces[k].points;
+    for (std::uint32_t v = 0; v < local.size(); ++v) local[v] = points[m.global_point(k, v)];
+    Pslg& own = m.local[k].pslg;
+    for (std::uint32_t v = 0; v < own.points.size(); ++v) own.points[v] = points[m.local[k].to_global[v]];
+  });
+  return mesh;
+}
 
 Verification verify_mesh(const MeshPieces& mesh, const Pslg& domain, const MeshSizeOptions& size, unsigned threads) {
   Verification result;

@@ -39,15 +39,17 @@ std::string nodestring_text(const std::vector<ModelBoundary>& lists) {
   return out;
 }
 
-detail::SectionedText sms_text(const Mesh& mesh, const ModelGrid& grid) {
-  const detail::ModelColumns columns = detail::model_columns(mesh, grid);
+template <typename Handle>
+detail::SectionedText sms_text(Handle handle, const ModelGrid& grid) {
+  const auto& mesh = *handle;
+  const detail::ModelColumns columns = detail::model_columns(mesh.points.size(), grid);
   if (grid.title.find('"') != std::string::npos)
     throw OptionError("title", "must not hold '\"' in a .2dm (its MESHNAME card quotes it)");
   detail::SectionedText text;
   text.text() += "MESH2D\nNUM_MATERIALS_PER_ELEM 1\n";
   if (!grid.title.empty()) text.text() += "MESHNAME \"" + grid.title + "\"\n";
-  text.lines(mesh.points.size(), [columns](std::string& out, std::size_t v) {
-    const Point p = (*columns.xy)[v];
+  text.lines(mesh.points.size(), [handle, columns](std::string& out, std::size_t v) {
+    const Point p = columns.xy_at(*handle, v);
     out += "ND ";
     detail::append_int(out, static_cast<std::int64_t>(v + 1));
     for (const double value : {p.x, p.y, 0.0 - columns.depth_at(v)}) {  // 0 - d: no "-0" for a depth of 0
@@ -56,9 +58,9 @@ detail::SectionedText sms_text(const Mesh& mesh, const ModelGrid& grid) {
     }
     out += '\n';
   });
-  text.lines(mesh.triangles.size(), [&mesh](std::string& out, std::size_t t) {
-    const auto& c = mesh.triangles[t];
-    const std::uint32_t k = t < mesh.triangle_subdomain.size() ? mesh.triangle_subdomain[t] : 0;
+  text.lines(mesh.triangles.size(), [handle](std::string& out, std::size_t t) {
+    const std::array<std::uint32_t, 3> c = handle->triangles[t];
+    const std::uint32_t k = t < handle->triangle_subdomain.size() ? handle->triangle_subdomain[t] : 0;
     out += "E3T ";
     line(out, t + 1, std::int64_t{c[0]} + 1, std::int64_t{c[1]} + 1, std::int64_t{c[2]} + 1, std::int64_t{k} + 1);
   });
@@ -69,11 +71,16 @@ detail::SectionedText sms_text(const Mesh& mesh, const ModelGrid& grid) {
 }  // namespace
 
 std::string format_2dm(const Mesh& mesh, const ModelGrid& grid) {
-  return detail::joined(sms_text(mesh, grid).pieces(1));
+  return detail::joined(sms_text(detail::model_mesh(mesh), grid).pieces(1));
 }
 
 void add_2dm(OutputSet& outputs, const std::string& path, const Mesh& mesh, const ModelGrid& grid, unsigned threads) {
-  outputs.add_file(path, sms_text(mesh, grid).pieces(threads));
+  outputs.add_file(path, sms_text(detail::model_mesh(mesh), grid).pieces(threads));
+}
+
+void add_2dm(OutputSet& outputs, const std::string& path, const MeshPieces& mesh, const ModelGrid& grid,
+             unsigned threads) {
+  outputs.add_file(path, sms_text(detail::model_mesh(mesh), grid).pieces(threads));
 }
 
 }  // namespace madd

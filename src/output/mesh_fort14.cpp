@@ -67,22 +67,28 @@ std::string fort14_boundary_text(const std::vector<ModelBoundary>& lists) {
   return out;
 }
 
-detail::SectionedText fort14_text(const Mesh& mesh, const ModelGrid& grid) {
-  const detail::ModelColumns columns = detail::model_columns(mesh, grid);
-  detail::SectionedText text = detail::grid_text(mesh, grid, columns);
-  text.text() += fort14_boundary_text(model_boundaries(mesh, grid.open_marker));
+template <typename Handle>
+detail::SectionedText fort14_text(Handle handle, const ModelGrid& grid) {
+  const detail::ModelColumns columns = detail::model_columns(handle->points.size(), grid);
+  detail::SectionedText text = detail::grid_text(handle, grid, columns);
+  text.text() += fort14_boundary_text(model_boundaries(*handle, grid.open_marker));
   return text;
 }
 
 }  // namespace
 
 std::string format_fort14(const Mesh& mesh, const ModelGrid& grid) {
-  return detail::joined(fort14_text(mesh, grid).pieces(1));
+  return detail::joined(fort14_text(detail::model_mesh(mesh), grid).pieces(1));
 }
 
 void add_fort14(OutputSet& outputs, const std::string& path, const Mesh& mesh, const ModelGrid& grid,
                 unsigned threads) {
-  outputs.add_file(path, fort14_text(mesh, grid).pieces(threads));
+  outputs.add_file(path, fort14_text(detail::model_mesh(mesh), grid).pieces(threads));
+}
+
+void add_fort14(OutputSet& outputs, const std::string& path, const MeshPieces& mesh, const ModelGrid& grid,
+                unsigned threads) {
+  outputs.add_file(path, fort14_text(detail::model_mesh(mesh), grid).pieces(threads));
 }
 
 }  // namespace madd

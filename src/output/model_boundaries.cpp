@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "madd/error.hpp"
+#include "madd/mesh_pieces.hpp"
 #include "madd/model_output.hpp"
+#include "mesh/pieces_view.hpp"
 #include "output/mesh_text.hpp"
 #include "triangulation/boundary_loops.hpp"
 
@@ -60,9 +63,12 @@ struct Loop {
 
 // Every boundary edge in exactly one loop (triangulation/boundary_loops.hpp:
 // traced through each vertex's fan, so loops never jump where boundaries
-// touch), loops in the order of their first edge's side.
-std::vector<Loop> boundary_loops(const Mesh& mesh, int open_marker) {
-  check(mesh);
+// touch), loops in the order of their first edge's side. AnyMesh: a Mesh,
+// or the view of a mesh in pieces (which the library made and checked: its
+// triangles' references are not checked again).
+template <typename AnyMesh>
+std::vector<Loop> boundary_loops(const AnyMesh& mesh, int open_marker) {
+  if constexpr (std::is_same_v<AnyMesh, Mesh>) check(mesh);
   const std::unordered_map<std::uint64_t, int> markers = detail::segment_markers(mesh.segments);
   std::vector<detail::BoundaryLoop> traced;
   try {
@@ -125,9 +131,8 @@ void add_loop(Loop& loop, bool outer, Lists& lists) {
   }
 }
 
-}  // namespace
-
-std::vector<ModelBoundary> model_boundaries(const Mesh& mesh, int open_marker) {
+template <typename AnyMesh>
+std::vector<ModelBoundary> model_boundaries_of(const AnyMesh& mesh, int open_marker) {
   std::vector<Loop> loops = boundary_loops(mesh, open_marker);
   if (loops.empty()) return {};
   // The outer loop: the largest signed area (the first of equals).
@@ -147,5 +152,23 @@ std::vector<ModelBoundary> model_boundaries(const Mesh& mesh, int open_marker) {
     out.insert(out.end(), std::make_move_iterator(part->begin()), std::make_move_iterator(part->end()));
   return out;
 }
+
+}  // namespace
+
+std::vector<ModelBoundary> model_boundaries(const Mesh& mesh, int open_marker) {
+  return model_boundaries_of(mesh, open_marker);
+}
+
+std::vector<ModelBoundary> model_boundaries(const MeshPieces& mesh, int open_marker) {
+  return model_boundaries_of(detail::PiecesView(mesh.data()), open_marker);
+}
+
+namespace detail {
+
+std::vector<ModelBoundary> model_boundaries(const PiecesView& mesh, int open_marker) {
+  return model_boundaries_of(mesh, open_marker);
+}
+
+}  // namespace detail
 
 }  // namespace madd
