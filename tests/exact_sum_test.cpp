@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "kernel/bracket.hpp"
 #include "kernel/exact_sum.hpp"
 #include "kernel/rings.hpp"
 #include "madd/predicates.hpp"
@@ -124,6 +125,46 @@ TEST_CASE("exact_sum: twice a triangle's area has orient2d's sign on nearly coll
     if (dx != 0 || dy != 0) CHECK(madd::detail::dot_of_differences_exact(c, a, b, a).sign() > 0);
   }
   CHECK(zeros > 1000);  // exactly collinear cases did occur
+}
+
+TEST_CASE("bracket: the exact value lies in the filter's interval; decisive answers agree with the exact ones") {
+  // Random and nearly degenerate (collinear, nudged by ulps) configurations
+  // far from the origin: every exact value within estimate +- error, and the
+  // filter decisive on most random ones.
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int decided = 0, undecided_degenerate = 0;
+  const auto within = [](const madd::detail::Bracket& q, const ExactSum& exact) {
+    // |exact - estimate| <= error, decided exactly.
+    ExactSum difference = exact;
+    difference.add(-q.estimate);
+    return difference.magnitude_at_most(q.error);
+  };
+  for (int round = 0; round < 20000; ++round) {
+    const double offset = std::ldexp(1.0, round % 41);
+    Point a{offset + small(rng), offset + small(rng)}, b{a.x + 4.0 * small(rng), a.y + 4.0 * small(rng)};
+    Point c = round % 2 == 0 ? Point{a.x + (b.x - a.x) / 4 * (1 + round % 3), a.y + (b.y - a.y) / 4 * (1 + round % 3)}
+                             : Point{offset * (1 + unit(rng)), offset * (1 + unit(rng))};
+    for (int nudge = 0; nudge < round % 3; ++nudge) c.y = std::nextafter(c.y, 1e300);
+    const madd::detail::Bracket area = madd::detail::triangle_twice_area_bracket(a, b, c);
+    const ExactSum exact_area = madd::detail::triangle_twice_area_exact(a, b, c);
+    REQUIRE(within(area, exact_area));
+    CHECK(exact_area.magnitude_at_most(area.magnitude_bound()));
+    const double some = std::abs(exact_area.approximate()) * unit(rng) * 2.0;
+    const double bound = std::abs(some);
+    if (area.certainly_at_most(bound)) CHECK(exact_area.magnitude_at_most(bound));
+    if (area.certainly_above(bound)) CHECK(!exact_area.magnitude_at_most(bound));
+    const madd::detail::Bracket along = madd::detail::dot_of_differences_bracket(c, a, b, a);
+    const ExactSum exact_along = madd::detail::dot_of_differences_exact(c, a, b, a);
+    REQUIRE(within(along, exact_along));
+    if (along.certainly_positive()) CHECK(exact_along.sign() > 0);
+    CHECK(exact_along.magnitude_at_most(along.magnitude_bound()));
+    if (round % 2 == 1) decided += along.certainly_positive() || exact_along.sign() <= 0 ? 1 : 0;
+    if (round % 2 == 0 && exact_area.is_zero()) undecided_degenerate += area.certainly_above(0.0) ? 0 : 1;
+  }
+  CHECK(decided > 9900);               // random points: the filter decides (nearly) all
+  CHECK(undecided_degenerate > 1000);  // exactly collinear: never wrongly decided away from zero
 }
 
 TEST_CASE("rings: ring_signed_area and rings_area stay within their error bounds, on needles far from the origin") {

@@ -597,6 +597,47 @@ TEST_CASE("verify_mesh: the size bound") {
   CHECK(verified(f.mesh, f.domain, by_samples).ok());
 }
 
+// Under a graded field the size check passes most triangles from a
+// neighbour's query (the field's slope bounds it); it must still flag
+// exactly the triangles a query at every centroid flags.
+TEST_CASE(
+    "verify_mesh: under a graded field the size check flags exactly the triangles above the bound at their centroid") {
+  const Pslg domain = domain_of("archipelago.poly");
+  madd::MeshOptions options;
+  options.decomposition.subdomains = 6;
+  options.size.min_edge_length = 0.06;
+  options.size.max_edge_length = 0.5;
+  options.size.distance_rate = 0.3;
+  options.size.size_gradation = 0.3;
+  const madd::Mesh graded = madd::mesh(domain, options);
+  // A stricter field of the same kind: some triangles are now too large.
+  MeshSizeOptions strict = options.size;
+  strict.distance_rate = 0.2;
+  const madd::detail::AreaBound bound(strict, &domain);
+  REQUIRE(bound.edge_slope() > 0.0);
+  std::size_t above = 0;
+  for (const auto& t : graded.triangles) {
+    const madd::Point a = graded.points[t[0]], b = graded.points[t[1]], c = graded.points[t[2]];
+    const madd::Point ab = b - a, ac = c - a, bc = c - b;
+    const double twice = std::abs(madd::cross(ab, ac));
+    const double longest2 = std::max({madd::dot(ab, ab), madd::dot(ac, ac), madd::dot(bc, bc)});
+    const double at = bound.area_at(madd::triangle_centroid(a, b, c));
+    above += twice > 2.0 * at * (1.0 + 1e-12) + 32.0 * 0x1p-53 * longest2 ? 1 : 0;
+  }
+  REQUIRE(above > 50);
+  REQUIRE(above < graded.triangles.size() / 2);
+  for (const unsigned threads : {1u, 3u}) {
+    CAPTURE(threads);
+    const madd::Verification v = madd::detail::verify_mesh(graded, domain, bound, threads);
+    std::size_t flagged = 0;
+    for (const std::string& p : v.problems) {
+      if (p.find("above the size bound") != std::string::npos) ++flagged;
+      if (p.rfind("... and ", 0) == 0) flagged += std::stoul(p.substr(8));
+    }
+    CHECK(flagged == above);
+  }
+}
+
 // The per-triangle checks run on threads (detail::verify_mesh's `threads`):
 // the report is the same, problem for problem, for any count.
 TEST_CASE("verify_mesh: the size and angle checks report the same on 1, 2 and 3 threads") {

@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "kernel/bracket.hpp"
 #include "kernel/number_format.hpp"
 #include "kernel/threads.hpp"
 #include "madd/decomposition.hpp"
@@ -33,8 +34,9 @@ struct ChainScratch {
 // Walks the chain of mesh segments `ids` from vertex `start` to `end`: at
 // each vertex exactly one unused segment goes on, each step advances along
 // the direction dir_a -> dir_b (exact sign of the dot product), and every
-// segment is used. Calls step(cur, next, along) for each step, along the
-// exact dot(next - cur, dir_b - dir_a). Reports and returns false on the
+// segment is used. Calls step(cur, next, along) for each step, along a
+// bound on |dot(next - cur, dir_b - dir_a)| (its sign decided by a filter,
+// kernel/bracket.hpp, and exactly where the filter cannot tell). Reports and returns false on the
 // first break; name() says what the chain is, for that report only.
 template <class Name, class Step>
 bool walk_chain(const Mesh& m, std::span<const std::uint32_t> ids, std::uint32_t start, std::uint32_t end, Point dir_a,
@@ -72,11 +74,16 @@ bool walk_chain(const Mesh& m, std::span<const std::uint32_t> ids, std::uint32_t
     used[next_k] = 1;
     const MeshSegment& g = m.segments[ids[next_k]];
     const std::uint32_t next = g.a == cur ? g.b : g.a;
-    const ExactSum along = dot_of_differences_exact(m.points[next], m.points[cur], dir_b, dir_a);
-    if (along.sign() <= 0) {
-      log.add("mesh segment " + std::to_string(ids[next_k]) + " runs backwards along " + name() + " (from " +
-              point_text(m.points[cur]) + " to " + point_text(m.points[next]) + ")");
-      return false;
+    const Bracket quick = dot_of_differences_bracket(m.points[next], m.points[cur], dir_b, dir_a);
+    double along = quick.magnitude_bound();
+    if (!quick.certainly_positive()) {
+      const ExactSum exact = dot_of_differences_exact(m.points[next], m.points[cur], dir_b, dir_a);
+      if (exact.sign() <= 0) {
+        log.add("mesh segment " + std::to_string(ids[next_k]) + " runs backwards along " + name() + " (from " +
+                point_text(m.points[cur]) + " to " + point_text(m.points[next]) + ")");
+        return false;
+      }
+      along = exact.magnitude_bound();
     }
     step(cur, next, along);
     cur = next;
@@ -160,24 +167,26 @@ void check_input_segment(const Mesh& m, const Pslg& domain, std::uint32_t input,
   const double allowed = off_line_bound(a, b, ids.size());
   const double length2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
   double off_cur = 0.0;  // |cross| at the current vertex; 0 at a
-  walk_chain(m, ids, whole.a, whole.b, a, b, name, scratch, log,
-             [&](std::uint32_t, std::uint32_t next, const ExactSum& along) {
-               double off_next = 0.0;
-               if (next != whole.b) {
-                 const ExactSum cross = triangle_twice_area_exact(a, b, m.points[next]);
-                 off_next = cross.magnitude_bound();
-                 if (!cross.magnitude_at_most(allowed))
-                   log.add("boundary vertex " + std::to_string(next) + " " + point_text(m.points[next]) + " leaves " +
-                           name() + " (off by " + number_text(std::abs(cross.approximate()) / std::sqrt(length2)) +
-                           ", more than the " + number_text(allowed / std::sqrt(length2)) +
-                           " its interpolation can round to)");
-               }
-               if (off_cur + off_next > 0.0) {
-                 sliver.sum += (off_cur + off_next) * along.magnitude_bound() / length2;
-                 ++sliver.terms;
-               }
-               off_cur = off_next;
-             });
+  walk_chain(m, ids, whole.a, whole.b, a, b, name, scratch, log, [&](std::uint32_t, std::uint32_t next, double along) {
+    double off_next = 0.0;
+    if (next != whole.b) {
+      const Bracket quick = triangle_twice_area_bracket(a, b, m.points[next]);
+      off_next = quick.magnitude_bound();
+      if (!quick.certainly_at_most(allowed)) {
+        const ExactSum cross = triangle_twice_area_exact(a, b, m.points[next]);
+        off_next = cross.magnitude_bound();
+        if (!cross.magnitude_at_most(allowed))
+          log.add("boundary vertex " + std::to_string(next) + " " + point_text(m.points[next]) + " leaves " + name() +
+                  " (off by " + number_text(std::abs(cross.approximate()) / std::sqrt(length2)) + ", more than the " +
+                  number_text(allowed / std::sqrt(length2)) + " its interpolation can round to)");
+      }
+    }
+    if (off_cur + off_next > 0.0) {
+      sliver.sum += (off_cur + off_next) * along / length2;
+      ++sliver.terms;
+    }
+    off_cur = off_next;
+  });
 }
 
 }  // namespace
@@ -197,22 +206,21 @@ double check_mesh_segments(const Mesh& m, const Pslg& domain, ProblemLog& log, u
   std::vector<std::uint32_t> by_piece = grouped(key, first, d.segments.size());
   const std::vector<std::uint32_t> owner = interior_segment_owners(d);
   const std::size_t parts = 4 * std::size_t{thread_count(threads, d.segments.size())};
-  log_in_parts(d.segments.size(), parts, threads, log,
-               [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
-                 ChainScratch scratch;
-                 for (auto j = static_cast<std::uint32_t>(begin); j < end; ++j) {
-                   const Segment& g = d.segments[j];
-                   const auto name = [&d, &owner, j] {
-                     const char* kind = d.is_separator(j)      ? "separator "
-                                        : owner[j] != no_index ? "interior piece "
-                                                               : "boundary piece ";
-                     return std::string(kind) + std::to_string(j);
-                   };
-                   walk_chain(m, std::span<const std::uint32_t>(by_piece).subspan(first[j], first[j + 1] - first[j]),
-                              g.a, g.b, d.points[g.a], d.points[g.b], name, scratch, mine,
-                              [](std::uint32_t, std::uint32_t, const ExactSum&) {});
-                 }
-               });
+  log_in_parts(
+      d.segments.size(), parts, threads, log, [&](std::size_t, std::size_t begin, std::size_t end, ProblemLog& mine) {
+        ChainScratch scratch;
+        for (auto j = static_cast<std::uint32_t>(begin); j < end; ++j) {
+          const Segment& g = d.segments[j];
+          const auto name = [&d, &owner, j] {
+            const char* kind = d.is_separator(j)      ? "separator "
+                               : owner[j] != no_index ? "interior piece "
+                                                      : "boundary piece ";
+            return std::string(kind) + std::to_string(j);
+          };
+          walk_chain(m, std::span<const std::uint32_t>(by_piece).subspan(first[j], first[j + 1] - first[j]), g.a, g.b,
+                     d.points[g.a], d.points[g.b], name, scratch, mine, [](std::uint32_t, std::uint32_t, double) {});
+        }
+      });
   // Each input segment: one chain of the boundary segments on its pieces.
   for (std::uint32_t s = 0; s < m.segments.size(); ++s)
     key[s] = on_input_segment(m.segments[s]) ? d.segment_origin[m.segments[s].piece] : no_index;
