@@ -290,7 +290,7 @@ Figures gather_figures(const World& world, const MeshPart& part, const MeshOptio
   f.predicted_triangles = report.expected_triangles;
   f.subdomain_triangles = subdomain_triangles(part);
   // Meshing: refinement with each subdomain's check (made on its thread) and the numbering.
-  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "merge"), format_s,
+  const double times[4] = {decompose_s, phase_seconds(report, "refine") + phase_seconds(report, "assemble"), format_s,
                            peak_megabytes()};
   std::vector<double> all(4 * static_cast<std::size_t>(world.size));
   MPI_Gather(times, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);

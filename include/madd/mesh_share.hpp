@@ -88,7 +88,8 @@ struct MeshPart {
 
 // A share's part and the report of the run that made it (the phases "size
 // field" when there is one, "discretise", "estimate", "refine", each
-// subdomain's check included, and "merge"; the share's threads and subdomains).
+// subdomain's check included, and "assemble": the part made from the
+// subdomains' meshes; the share's threads and subdomains).
 struct MeshPartRun {
   MeshPart part;
   MeshReport report;

@@ -6,6 +6,10 @@
 
 #include "kernel/threads.hpp"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #if defined(__linux__)
 #include <sys/mman.h>
 #include <unistd.h>
@@ -37,6 +41,12 @@ void fault_in_on_threads(void* data, std::size_t bytes, unsigned threads) {
   (void)data;
   (void)bytes;
   (void)threads;
+#endif
+}
+
+void release_free_memory() {
+#if defined(__GLIBC__)
+  ::malloc_trim(0);
 #endif
 }
 

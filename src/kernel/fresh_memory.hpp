@@ -22,6 +22,13 @@ namespace madd::detail {
 // system cannot, or for fewer than a few megabytes.
 void fault_in_on_threads(void* data, std::size_t bytes, unsigned threads);
 
+// Gives the heap's free pages back to the system (glibc's malloc_trim;
+// elsewhere nothing). For a phase that frees many small arrays and then
+// allocates a few large ones: the heap cannot put those into the scattered
+// free space, so their fresh pages would add to resident memory that is no
+// longer used (madd-mpi's part of a mesh, src/mesh/mesh_share.cpp).
+void release_free_memory();
+
 // v.resize(n), its new pages faulted in on `threads` threads first.
 template <typename T, typename Allocator>
 void resize_on_threads(std::vector<T, Allocator>& v, std::size_t n, unsigned threads) {

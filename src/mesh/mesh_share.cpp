@@ -11,6 +11,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "kernel/fresh_memory.hpp"
 #include "kernel/resource_limits.hpp"
 #include "kernel/stopwatch.hpp"
 #include "kernel/threads.hpp"
@@ -18,6 +19,7 @@
 #include "mesh/discretise.hpp"
 #include "quality/verify_mesh_bounded.hpp"
 #include "mesh/merge.hpp"
+#include "mesh/mesh_pieces.hpp"
 #include "mesh/rounds.hpp"
 #include "mesh/subdomain_check.hpp"
 #include "quality/area_bound.hpp"
@@ -54,49 +56,151 @@ std::vector<std::uint64_t> exclusive_sums(const std::vector<std::uint64_t>& coun
   return out;
 }
 
-// merge()'s mesh of the share's subdomains, which numbers the vertices as
-// the whole mesh would, taken apart: the decomposition to the part, the
-// rest to its local mesh (keep_used_points numbers it locally).
-void take_merged(Mesh&& merged, MeshPart& part) {
-  part.decomposition = std::move(merged.decomposition);
-  LocalMesh& m = part.mesh;
-  m.points = std::move(merged.points);
-  m.point_markers = std::move(merged.point_markers);
-  m.triangles = std::move(merged.triangles);
-  m.neighbours = std::move(merged.neighbours);
-  m.triangle_subdomain = std::move(merged.triangle_subdomain);
-  m.triangle_attribute = std::move(merged.triangle_attribute);
-  m.subdomain_first_triangle = std::move(merged.subdomain_first_triangle);
-  m.segments = std::move(merged.segments);
-  m.shortfall = merged.shortfall;
-  m.min_triangle_angle_deg = merged.min_triangle_angle_deg;
+// The part's local numbering of the share's pieces (assemble()'s numbering
+// of the share's subdomains: all of the decomposition's points, then the
+// share's Steiner points): the decomposition points the share's triangles
+// and mesh segments use, in increasing global id, then each subdomain's used
+// Steiner points in order (all of them, as refinement leaves no vertex
+// outside a triangle; counted all the same).
+struct PartNumbering {
+  std::vector<std::uint32_t> decomposition_local;  // per decomposition point: its local id, or no_index
+  std::vector<std::uint32_t> used_decomposition;   // the used decomposition points, increasing
+  // Per subdomain, per Steiner point: its local id, or no_index (unused).
+  std::vector<std::vector<std::uint32_t>> steiner_local;
+  std::uint32_t count = 0;
+
+  std::uint32_t local_of(const detail::MeshPiecesData& m, std::uint32_t k, std::uint32_t v) const {
+    const std::size_t own = m.local[k].to_global.size();
+    return v < own ? decomposition_local[m.local[k].to_global[v]] : steiner_local[k][v - own];
+  }
+  // A point in assemble()'s numbering (as detail::MeshPiecesData::segments hold them).
+  std::uint32_t local_of_global(const detail::MeshPiecesData& m, std::uint32_t g) const {
+    if (g < decomposition_local.size()) return decomposition_local[g];
+    const std::uint32_t k = m.subdomain_of_point(g);
+    return steiner_local[k][g - m.first_point[k]];
+  }
+};
+
+PartNumbering number_part(const detail::MeshPiecesData& m, const std::vector<std::uint32_t>& subdomains,
+                          unsigned threads) {
+  PartNumbering out;
+  const std::size_t p = m.decomposition.points.size();
+  // Per subdomain, which of its points its triangles use (on the threads),
+  // then the decomposition's points gathered in subdomain order.
+  std::vector<std::vector<std::uint8_t>> used(m.pieces.size());
+  detail::for_each_on_threads(subdomains.size(), threads, [&](std::size_t i) {
+    const std::uint32_t k = subdomains[i];
+    used[k].assign(m.pieces[k].points.size(), 0);
+    for (const auto& tri : m.pieces[k].triangles)
+      for (const std::uint32_t v : tri) used[k][v] = 1;
+  });
+  std::vector<std::uint8_t> used_decomposition(p, 0);
+  for (const std::uint32_t k : subdomains)
+    for (std::size_t v = 0; v < m.local[k].to_global.size(); ++v)
+      if (used[k][v] != 0) used_decomposition[m.local[k].to_global[v]] = 1;
+  out.steiner_local.resize(m.pieces.size());
+  for (const MeshSegment& g : m.segments)
+    for (const std::uint32_t v : {g.a, g.b}) {
+      if (v < p) {
+        used_decomposition[v] = 1;
+      } else {
+        const std::uint32_t k = m.subdomain_of_point(v);
+        used[k][v - m.first_point[k] + m.local[k].to_global.size()] = 1;
+      }
+    }
+  out.decomposition_local.assign(p, no_index);
+  for (std::uint32_t g = 0; g < p; ++g)
+    if (used_decomposition[g] != 0) {
+      out.decomposition_local[g] = out.count++;
+      out.used_decomposition.push_back(g);
+    }
+  for (const std::uint32_t k : subdomains) {
+    const std::size_t own = m.local[k].to_global.size();
+    std::vector<std::uint32_t>& local = out.steiner_local[k];
+    local.assign(m.pieces[k].points.size() - own, no_index);
+    for (std::size_t v = own; v < m.pieces[k].points.size(); ++v)
+      if (used[k][v] != 0) local[v - own] = out.count++;
+  }
+  return out;
 }
 
-// The part's mesh keeps only the vertices its triangles and segments use.
-void keep_used_points(MeshPart& part, std::vector<std::uint64_t>& ids) {
-  LocalMesh& m = part.mesh;
-  std::vector<std::uint32_t> renumber(m.points.size(), no_index);
-  for (const auto& tri : m.triangles)
-    for (const std::uint32_t v : tri) renumber[v] = 0;
-  for (const MeshSegment& s : m.segments) renumber[s.a] = renumber[s.b] = 0;
-  std::uint32_t next = 0;
-  for (std::uint32_t v = 0; v < m.points.size(); ++v) {
-    if (renumber[v] == no_index) continue;
-    renumber[v] = next;
-    m.points[next] = m.points[v];
-    m.point_markers[next] = m.point_markers[v];
-    ids[next] = ids[v];
-    ++next;
+// The share's part of the mesh made from its pieces, each copied on the
+// threads into its ranges of the part's arrays and released: no merged copy
+// of the share's mesh is made first. `first_steiner`, `first_triangle`: per
+// subdomain, its first Steiner point (less the decomposition's points) and
+// its first triangle in mesh()'s numbering (over every share's subdomains).
+void fill_part(detail::MeshPiecesData&& m, const PartNumbering& numbering,
+               const std::vector<std::uint64_t>& first_steiner, const std::vector<std::uint64_t>& first_triangle,
+               const std::vector<std::uint32_t>& point_owner, unsigned threads, MeshPart& part) {
+  LocalMesh& out = part.mesh;
+  const std::size_t p = m.decomposition.points.size(), points = numbering.count;
+  const std::uint32_t triangles = m.triangle_count();
+  detail::resize_on_threads(out.points, points, threads);
+  detail::resize_on_threads(out.point_markers, points, threads);
+  for (const std::uint32_t g : numbering.used_decomposition) {
+    const std::uint32_t v = numbering.decomposition_local[g];
+    out.points[v] = m.decomposition.points[g];
+    out.point_markers[v] = m.point_markers[g];
   }
-  m.points.resize(next);
-  m.point_markers.resize(next);
-  ids.resize(next);
-  for (auto& tri : m.triangles)
-    for (std::uint32_t& v : tri) v = renumber[v];
-  for (MeshSegment& s : m.segments) {
-    s.a = renumber[s.a];
-    s.b = renumber[s.b];
+  detail::resize_on_threads(out.triangles, triangles, threads);
+  detail::resize_on_threads(out.neighbours, triangles, threads);
+  detail::resize_on_threads(out.triangle_subdomain, triangles, threads);
+  if (m.has_regions()) detail::assign_on_threads(out.triangle_attribute, triangles, 0.0, threads);  // 0: in no region
+  detail::for_each_on_threads(part.subdomains.size(), threads, [&](std::size_t i) {
+    const std::uint32_t k = part.subdomains[i];
+    const detail::SubdomainMesh& piece = m.pieces[k];
+    const std::size_t own = m.local[k].to_global.size();
+    for (std::size_t v = own; v < piece.points.size(); ++v) {
+      const std::uint32_t local = numbering.steiner_local[k][v - own];
+      if (local == no_index) continue;
+      out.points[local] = piece.points[v];
+      out.point_markers[local] = m.steiner_marker(k, static_cast<std::uint32_t>(v));
+    }
+    const std::uint32_t base = m.first_triangle[k];
+    for (std::uint32_t t = 0; t < piece.triangles.size(); ++t) {
+      const auto& tri = piece.triangles[t];
+      out.triangles[base + t] = {numbering.local_of(m, k, tri[0]), numbering.local_of(m, k, tri[1]),
+                                 numbering.local_of(m, k, tri[2])};
+      for (std::uint32_t e = 0; e < 3; ++e)
+        out.neighbours[base + t][e] =
+            piece.neighbours[t][e] == no_index ? m.global_neighbour(k, t, e) : base + piece.neighbours[t][e];
+      out.triangle_subdomain[base + t] = k;
+    }
+    if (m.has_regions() && piece.triangle_attribute.size() == piece.triangles.size())
+      std::copy(piece.triangle_attribute.begin(), piece.triangle_attribute.end(),
+                out.triangle_attribute.begin() + base);
+    m.pieces[k] = detail::SubdomainMesh{};  // released as it goes
+  });
+  // The pieces' memory back to the system before the ids take fresh pages:
+  // the heap could not reuse it for them (scattered), and the peak would
+  // be the pieces', the part's and the ids' (docs/mpi.md).
+  detail::release_free_memory();
+  // The global ids once the pieces are gone (the peak is then the pieces'
+  // and the part's arrays, as a merge's).
+  detail::resize_on_threads(part.point_ids, points, threads);
+  detail::assign_on_threads(part.point_owner, points, part.share, threads);
+  for (const std::uint32_t g : numbering.used_decomposition) {
+    part.point_ids[numbering.decomposition_local[g]] = g;
+    part.point_owner[numbering.decomposition_local[g]] = point_owner[g];
   }
+  detail::resize_on_threads(part.triangle_ids, triangles, threads);
+  detail::for_each_on_threads(part.subdomains.size(), threads, [&](std::size_t i) {
+    const std::uint32_t k = part.subdomains[i];
+    const std::vector<std::uint32_t>& steiner = numbering.steiner_local[k];
+    for (std::size_t j = 0; j < steiner.size(); ++j)
+      if (steiner[j] != no_index) part.point_ids[steiner[j]] = p + first_steiner[k] + j;
+    for (std::uint32_t t = m.first_triangle[k]; t < m.first_triangle[k + 1]; ++t)
+      part.triangle_ids[t] = first_triangle[k] + (t - m.first_triangle[k]);
+  });
+  out.segments = std::move(m.segments);
+  for (MeshSegment& g : out.segments) {
+    g.a = numbering.local_of_global(m, g.a);
+    g.b = numbering.local_of_global(m, g.b);
+  }
+  out.subdomain_first_triangle = std::move(m.first_triangle);
+  out.shortfall = m.shortfall;
+  out.min_triangle_angle_deg = m.min_triangle_angle_deg;
+  part.decomposition = std::move(m.decomposition);
 }
 
 // Per vertex of the decomposition: the lowest share whose subdomains have it
@@ -183,28 +287,14 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
   const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
   part.total_points = d.points.size() + steiner_total;
 
-  take_merged(detail::merge(d, pieces, options.size.min_triangle_angle_deg, &mine, options.decomposition.threads),
-              part);
-  const std::size_t p = d.points.size();
-  std::vector<std::uint64_t> ids(part.mesh.points.size());
-  std::iota(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(p), std::uint64_t{0});
-  std::size_t at = p;
-  for (const std::uint32_t k : part.subdomains)
-    for (std::uint64_t j = 0; j < counts[k]; ++j) ids[at++] = p + first_steiner[k] + j;
+  // The share's pieces numbered (assemble), then copied into the part's
+  // arrays in its own numbering, each piece released once copied.
   const std::vector<std::uint32_t> point_owner = decomposition_point_owner(d, part.owner);
-  std::vector<std::uint32_t> owners(part.mesh.points.size(), share);
-  for (std::size_t v = 0; v < p; ++v) owners[v] = point_owner[v];
-  // keep_used_points moves ids along; the owners follow the same ids.
-  keep_used_points(part, ids);
-  part.point_ids = std::move(ids);
-  part.point_owner.resize(part.point_ids.size());
-  for (std::size_t v = 0; v < part.point_ids.size(); ++v)
-    part.point_owner[v] = part.point_ids[v] < p ? owners[part.point_ids[v]] : share;
-  part.triangle_ids.reserve(part.mesh.triangles.size());
-  for (const std::uint32_t k : part.subdomains)
-    for (std::uint32_t t = part.mesh.subdomain_first_triangle[k]; t < part.mesh.subdomain_first_triangle[k + 1]; ++t)
-      part.triangle_ids.push_back(first_triangle[k] + (t - part.mesh.subdomain_first_triangle[k]));
-  report.phases.push_back({"merge", clock.lap()});
+  detail::MeshPiecesData m = detail::assemble(std::move(d), std::move(pieces), options.size.min_triangle_angle_deg,
+                                              &mine, options.decomposition.threads);
+  const PartNumbering numbering = number_part(m, part.subdomains, options.decomposition.threads);
+  fill_part(std::move(m), numbering, first_steiner, first_triangle, point_owner, options.decomposition.threads, part);
+  report.phases.push_back({"assemble", clock.lap()});
   return run;
 }
 
