@@ -97,6 +97,34 @@ TEST_CASE("mesh_pieces_with_report: joined, mesh()'s mesh; its files and figures
   }
 }
 
+TEST_CASE("mesh_pieces_with_report: rings that touch at a vertex (an island on the coast) are checked right") {
+  // Each subdomain is checked as a domain of its own; its local points list
+  // a vertex where rings touch once, so its ring positions are no point ids
+  // (a coastline's touching islands made every graded mesh of one bay fail
+  // its check; the merged mesh's passed).
+  madd::Pslg domain;
+  domain.points = {{0, 0}, {5, 0}, {10, 0}, {10, 10}, {0, 10}, {6.5, 2.5}, {3.5, 2.5}, {8, 8}, {9, 8}, {8.5, 10}};
+  // The square; an island touching its south side at (5, 0); another
+  // touching its north side at (8.5, 10).
+  domain.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 9, 1}, {9, 4, 1}, {4, 0, 1},
+                     {1, 5, 1}, {5, 6, 1}, {6, 1, 1}, {9, 7, 1}, {7, 8, 1}, {8, 9, 1}};
+  domain.holes = {{5, 1.5}, {8.5, 8.8}};
+  for (const std::uint32_t n : {1u, 2u, 5u}) {
+    CAPTURE(n);
+    madd::MeshOptions o = madd::test::options_for(n, 30, 0.05);
+    o.decomposition.threads = 2;
+    const madd::MeshPiecesRun run = madd::mesh_pieces_with_report(domain, o);  // throws on a failed check
+    CHECK(madd::verify_mesh(run.mesh, domain, o.size, 2).ok());
+    CHECK(madd::join(run.mesh, 2) == madd::mesh(domain, o));
+    // Every subdomain alone passes its check.
+    const madd::detail::MeshPiecesData& m = run.mesh.data();
+    const madd::detail::AreaBound bound(o.size, &domain);
+    const std::vector<std::vector<madd::Region>> regions(m.subdomain_count());
+    for (std::uint32_t k = 0; k < m.subdomain_count(); ++k)
+      CHECK(madd::detail::check_subdomain(m.decomposition, k, regions[k], m.pieces[k], 30, bound).ok());
+  }
+}
+
 TEST_CASE("model files from the pieces: fort.14, hgrid.gr3, .2dm and their boundary lists are the merged mesh's") {
   // The estuary with two boundary segments made open (marker 2): its loops
   // have open and land runs, and islands.

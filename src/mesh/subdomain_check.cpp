@@ -39,17 +39,19 @@ SubdomainAlone subdomain_alone(const Decomposition& d, std::uint32_t k, const st
   dk.regions = out.domain.regions;
   dk.separator_angle_deg = d.separator_angle_deg;
   Subdomain s = d.subdomains[k];
-  std::uint32_t next = 0;
-  for (std::size_t r = 0; r < s.rings.size(); ++r)
-    for (std::size_t i = 0; i < s.rings[r].size(); ++i, ++next) {
-      s.rings[r][i] = next;
-      s.ring_segments[r][i] = next;
-    }
-  // Interior pieces follow the ring segments, in order; isolated vertices
-  // are the local points of their global ids.
-  for (std::uint32_t& j : s.interior_segments) j = next++;
+  // Every vertex is the local point of its global id: local_domain lists a
+  // vertex once where rings touch (a vertex twice on a ring, or on two), so
+  // ring positions are no point ids. Its segments are one per ring
+  // position, in ring order, then the interior pieces in order.
   std::unordered_map<std::uint32_t, std::uint32_t> local_of;
   for (std::uint32_t v = 0; v < local.to_global.size(); ++v) local_of.emplace(local.to_global[v], v);
+  std::uint32_t next = 0;
+  for (std::size_t r = 0; r < s.rings.size(); ++r)
+    for (std::size_t i = 0; i < s.rings[r].size(); ++i) {
+      s.rings[r][i] = local_of.at(s.rings[r][i]);
+      s.ring_segments[r][i] = next++;
+    }
+  for (std::uint32_t& j : s.interior_segments) j = next++;
   for (std::uint32_t& v : s.interior_points) v = local_of.at(v);
   std::sort(s.interior_points.begin(), s.interior_points.end());
   dk.subdomains.push_back(std::move(s));
