@@ -32,11 +32,12 @@ bool wants_model_files(const CommandLine& line, const Projection& projection) {
 
 namespace {
 
-const std::vector<Point>& points_of(const Mesh& mesh, ModelFiles&, unsigned) { return mesh.points; }
-// A mesh in pieces has no array of its points: made once, when a column needs them.
-const std::vector<Point>& points_of(const MeshPieces& mesh, ModelFiles& files, unsigned threads) {
-  files.points = mesh_points(mesh, threads);
-  return files.points;
+// The mesh's points in the merged numbering: a Mesh's own array; a mesh in
+// pieces has none, so they are made into `made`.
+const std::vector<Point>& points_of(const Mesh& mesh, std::vector<Point>&, unsigned) { return mesh.points; }
+const std::vector<Point>& points_of(const MeshPieces& mesh, std::vector<Point>& made, unsigned threads) {
+  made = mesh_points(mesh, threads);
+  return made;
 }
 
 void keep_lonlat_mesh(const Mesh& mesh, const std::vector<Point>& lonlat, ModelFiles& files, unsigned) {
@@ -56,12 +57,11 @@ bool add_model_files_of(OutputSet& outputs, ModelFiles& files, const AnyMesh& me
   if (!wants_model_files(line, projection)) return false;
   const bool model = !line.fort14_file.empty() || !line.gr3_file.empty() || !line.sms_file.empty();
   const bool columns = projection.geographic || (depth && model);
-  const std::vector<Point> no_points;
-  const std::vector<Point>& points = columns ? points_of(mesh, files, threads) : no_points;
+  std::vector<Point> made;  // (only while the columns are made)
+  const std::vector<Point>& points = columns ? points_of(mesh, made, threads) : made;
   const std::vector<Point> lonlat = projection.geographic ? in_lonlat(points, projection) : std::vector<Point>{};
   files.metres.title = !title.empty() ? title : std::filesystem::path(prefix).filename().string() + " (madd mesh)";
   if (depth && model) files.metres.depth = depths_at(*depth, projection.geographic ? lonlat : points, threads);
-  files.points = {};  // (the columns hold what they need)
   files.lonlat = files.metres;
   files.lonlat.coordinates = lonlat;
   const ModelGrid& written = projection.geographic ? files.lonlat : files.metres;

@@ -19,11 +19,10 @@ namespace madd::cli {
 // What the model files of one run are made from; must outlive the
 // OutputSet they are added to (the files are made while written).
 struct ModelFiles {
-  ModelGrid metres;           // coordinates in the projection's metres
-  ModelGrid lonlat;           // the same in longitude/latitude (a lon/lat input only)
-  Mesh lonlat_mesh;           // --lonlat: the mesh with its points in lon/lat (of a merged mesh)
-  MeshPieces lonlat_pieces;   // the same of a mesh in pieces
-  std::vector<Point> points;  // scratch: a mesh in pieces' points while the columns are made
+  ModelGrid metres;          // coordinates in the projection's metres
+  ModelGrid lonlat;          // the same in longitude/latitude (a lon/lat input only)
+  Mesh lonlat_mesh;          // --lonlat: the mesh with its points in lon/lat (of a merged mesh)
+  MeshPieces lonlat_pieces;  // the same of a mesh in pieces
 };
 
 // The depth file of the command line, read (nullopt without --depth).
