@@ -7,8 +7,10 @@
 set -eu
 mpiexec=$1 np=$2 madd=$3 madd_mpi=$4 coast=$5 work=$6
 rm -rf "$work" && mkdir -p "$work/one" "$work/parts"
-set -- "$coast/bay.geojson" --clip -70.0,43.5,-69.5,43.9 --hmin 400 --hmax 5000 --distance-rate 0.2 \
-  --cells-across 2 --gradation 0.25 --depth "$coast/depth.asc" --wavelength-cells 40 -n 8 -j 1 --quiet
+# This field and N = 16 put two of the bay's touching rings into one
+# subdomain: each rank's check of its subdomains once failed there (exit 70).
+set -- "$coast/bay.geojson" --clip -70.0,43.5,-69.5,43.9 --hmin 50 --hmax 3000 --distance-rate 0.15 \
+  --cells-across 3 --gradation 0.2 --depth "$coast/depth.asc" --wavelength-cells 50 -n 16 -j 1 --quiet
 "$madd" mesh "$@" -o "$work/one/m" --fort14 "$work/one/m.14" --gr3 "$work/one/m.gr3" --2dm "$work/one/m.2dm"
 root_flag=""
 [ "$(id -u)" = 0 ] && root_flag="--allow-run-as-root"
