@@ -13,7 +13,6 @@
 #include "madd/error.hpp"
 #include "mesh/mesh_pieces.hpp"
 #include "mesh/pieces_check.hpp"
-#include "mesh/pieces_view.hpp"
 #include "quality/area_bound.hpp"
 
 namespace madd {

@@ -272,26 +272,26 @@ MeshPartRun mesh_share(const Decomposition& decomposition, const Pslg& domain, c
                            regions, options.verify ? check : detail::SubdomainCheck{});
   report.phases.push_back({"refine", clock.lap()});
 
+  // The share's pieces numbered (assemble: each subdomain's own
+  // decomposition points, its local domain, found once), then copied into
+  // the part's arrays in its own numbering, each piece released once copied.
+  const std::vector<std::uint32_t> point_owner = decomposition_point_owner(d, part.owner);
+  detail::MeshPiecesData m = detail::assemble(std::move(d), std::move(pieces), options.size.min_triangle_angle_deg,
+                                              &mine, options.decomposition.threads);
   // Steiner points and triangles of every subdomain, from every share: the
-  // offsets mesh()'s merge numbers them with.
+  // offsets mesh()'s numbering uses.
   std::vector<std::uint64_t> counts(2 * std::size_t{n}, 0);
   for (const std::uint32_t k : part.subdomains) {
     // The subdomain's own decomposition points (rings, interior pieces'
     // ends, isolated vertices) come first in its mesh; the rest are Steiner points.
-    counts[k] = pieces[k].points.size() - detail::local_domain(d, k).to_global.size();
-    counts[n + k] = pieces[k].triangles.size();
+    counts[k] = m.pieces[k].points.size() - m.local[k].to_global.size();
+    counts[n + k] = m.pieces[k].triangles.size();
   }
   counts = exchange.sum_of(counts);
   std::uint64_t steiner_total = 0;
   const std::vector<std::uint64_t> first_steiner = exclusive_sums(counts, 0, n, steiner_total);
   const std::vector<std::uint64_t> first_triangle = exclusive_sums(counts, n, n, part.total_triangles);
-  part.total_points = d.points.size() + steiner_total;
-
-  // The share's pieces numbered (assemble), then copied into the part's
-  // arrays in its own numbering, each piece released once copied.
-  const std::vector<std::uint32_t> point_owner = decomposition_point_owner(d, part.owner);
-  detail::MeshPiecesData m = detail::assemble(std::move(d), std::move(pieces), options.size.min_triangle_angle_deg,
-                                              &mine, options.decomposition.threads);
+  part.total_points = m.decomposition.points.size() + steiner_total;
   const PartNumbering numbering = number_part(m, part.subdomains, options.decomposition.threads);
   fill_part(std::move(m), numbering, first_steiner, first_triangle, point_owner, options.decomposition.threads, part);
   report.phases.push_back({"assemble", clock.lap()});
