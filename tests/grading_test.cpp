@@ -288,3 +288,54 @@ TEST_CASE("face_work: the repair balances it, reading each face as a domain of i
   CHECK(boundary == doctest::Approx(length(unmarked, true)).epsilon(1e-9));
   CHECK(separators == doctest::Approx(2.0 * madd::metrics(unrepaired).separator_length).epsilon(1e-9));
 }
+
+// The repair's splits follow the samples, recalibrated per face to what
+// face_work says: where the two disagree (madd mesh's samples leave out the
+// pinches' clusters, and are merged per grid cell), a union split by the
+// samples alone was cut where its faces met, and no repair was kept.
+TEST_CASE("face_work: the repair's splits follow it where the samples disagree") {
+  const Pslg domain = rectangle(4, 1, 8);
+  // What face_work counts: 1 a unit of area, 1.6 in the eighth x < 0.5; the
+  // samples see 1 everywhere.
+  const auto density = [](Point p) { return p.x < 0.5 ? 1.6 : 1.0; };
+  std::vector<madd::ValuedPoint> hidden;  // face_work's own fine grid
+  for (int i = 0; i < 400; ++i)
+    for (int j = 0; j < 100; ++j) {
+      const Point p{(i + 0.5) / 100.0, (j + 0.5) / 100.0};
+      hidden.push_back({p, density(p) * 1e-4});
+    }
+  const auto work_of = [&](const Pslg& face) {
+    double total = 0.0;
+    for (const madd::ValuedPoint& h : hidden) {
+      bool inside = false;  // crossing number over the face's segments
+      for (const madd::Segment& s : face.segments) {
+        const Point u = face.points[s.a], w = face.points[s.b];
+        if ((u.y > h.at.y) != (w.y > h.at.y) && h.at.x < u.x + (h.at.y - u.y) * (w.x - u.x) / (w.y - u.y))
+          inside = !inside;
+      }
+      if (inside) total += h.value;
+    }
+    return total;
+  };
+  madd::DecomposeOptions o;
+  o.subdomains = 8;
+  o.threads = 1;
+  for (int i = 0; i < 80; ++i)
+    for (int j = 0; j < 20; ++j) o.weight_samples.push_back({{(i + 0.5) / 20.0, (j + 0.5) / 20.0}, 1.0});
+  o.gradation = 100.0;
+  o.repair_balance_above = 1.1;
+  o.face_work = work_of;
+  const Decomposition d = checked(domain, o, 8);
+  // Each subdomain's work by face_work's own count, against the mean (the
+  // whole is 4 + 0.3): the split by the samples alone gives the subdomain
+  // x < 0.5 1.49 x the mean, and a repair split by them 1.21 (its union
+  // with its neighbour cut where they met).
+  double largest = 0.0;
+  for (const auto& s : d.subdomains) {
+    double w = 0.0;
+    for (const madd::ValuedPoint& h : hidden)
+      if (inside_ring(d, s.rings[0], h.at)) w += h.value;
+    largest = std::max(largest, w);
+  }
+  CHECK(largest / (4.3 / 8.0) < 1.15);
+}
