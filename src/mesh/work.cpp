@@ -440,7 +440,7 @@ constexpr double pinch_sector = 0.4;  // radians: pinch_excess's samples per tri
 // across one of its triangles, its foot inside the segment; features within
 // two segments of v along the boundary left out, as the sides of a wedge
 // are), samples a hair inside the domain from v with the triangles above,
-// one in each triangle of `tri` at v, shared by their angles at v. The
+// shared over the triangles of `tri` at v by their angles there. The
 // cluster grades out from the pinch into every direction the water opens
 // to, and a pinch is where the domain is narrowest, where the medial axis
 // puts separators: a separator from v divides the fan, and the cluster's
@@ -492,8 +492,8 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
       }
     }
   }
-  // Per pinch vertex, its triangles per unit of angle at it (0: no pinch).
-  std::vector<double> per_radian(n, 0.0);
+  // Per pinch vertex, its cluster's triangles (0: no pinch).
+  std::vector<double> cluster(n, 0.0);
   for (std::uint32_t v = 0; v < n; ++v) {
     if (placed[v] == 0 || !(gap[v] > 0.0) || !std::isfinite(gap[v])) continue;
     const Point at = lerp(tri.points[v], centroid[v], 1e-3);
@@ -502,7 +502,7 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
     const double doublings = std::log2(edge_of_area(bound) / gap[v]) - pinch_free_doublings;
     if (!(doublings > 0.0)) continue;
     if (gaps.area_at(lerp(tri.points[v], centroid[v], 0.05), bound) < bound) continue;
-    per_radian[v] = pinch_doubling_triangles(size) * doublings;  // the vertex's total, for now
+    cluster[v] = pinch_doubling_triangles(size) * doublings;
   }
   std::vector<double> fan(n, 0.0);  // the angle of the domain at each pinch vertex
   const auto angle_at = [&](const std::array<std::uint32_t, 3>& c, int i) {
@@ -511,7 +511,7 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
   };
   for (const auto& c : tri.triangles)
     for (int i = 0; i < 3; ++i)
-      if (per_radian[c[i]] > 0.0) fan[c[i]] += angle_at(c, i);
+      if (cluster[c[i]] > 0.0) fan[c[i]] += angle_at(c, i);
   // Each triangle's share in sectors of at most pinch_sector of its angle
   // at v, a sample a hair out along each sector's bisector (a triangle
   // across a channel from a vertex on its bank spans nearly half the fan).
@@ -520,8 +520,8 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
     const Point g = triangle_centroid(tri.points[c[0]], tri.points[c[1]], tri.points[c[2]]);
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t v = c[i];
-      if (!(per_radian[v] > 0.0) || !(fan[v] > 0.0)) continue;
-      const double angle = angle_at(c, i), share = per_radian[v] * angle / fan[v];
+      if (!(cluster[v] > 0.0) || !(fan[v] > 0.0)) continue;
+      const double angle = angle_at(c, i), share = cluster[v] * angle / fan[v];
       if (!(share > 0.0)) continue;
       const Point p = tri.points[v], a = tri.points[c[(i + 1) % 3]], b = tri.points[c[(i + 2) % 3]];
       // Inside the triangle: below half its height over v's opposite side.
