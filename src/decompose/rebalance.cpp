@@ -114,8 +114,7 @@ FaceDensity calibrated_density(const Subdivision& sub, std::span<const std::uint
 FaceMeasure with_density(const FaceMeasure& measure, FaceDensity union_density) {
   FaceMeasure out = measure;
   out.density = [union_density = std::move(union_density)](const Subdivision& s, std::uint32_t f) {
-    FaceDensity d = union_density;
-    d.samples.clear();
+    FaceDensity d{union_density.graded, union_density.r, union_density.a, union_density.point_weights, {}};
     for (const ValuedPoint& p : union_density.samples)
       if (point_in_face(s, f, p.at)) d.samples.push_back(p);
     return d;
