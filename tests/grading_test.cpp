@@ -289,6 +289,19 @@ TEST_CASE("face_work: the repair balances it, reading each face as a domain of i
   CHECK(separators == doctest::Approx(2.0 * madd::metrics(unrepaired).separator_length).epsilon(1e-9));
 }
 
+namespace {
+// Whether q is inside `face` (a crossing number over its segments), as
+// face_work reads the faces it is given.
+bool inside_face(const Pslg& face, Point q) {
+  bool inside = false;
+  for (const madd::Segment& s : face.segments) {
+    const Point u = face.points[s.a], w = face.points[s.b];
+    if ((u.y > q.y) != (w.y > q.y) && q.x < u.x + (q.y - u.y) * (w.x - u.x) / (w.y - u.y)) inside = !inside;
+  }
+  return inside;
+}
+}  // namespace
+
 // The repair's splits follow the samples, recalibrated per face to what
 // face_work says: where the two disagree (madd mesh's samples leave out the
 // pinches' clusters, and are merged per grid cell), a union split by the
@@ -306,15 +319,8 @@ TEST_CASE("face_work: the repair's splits follow it where the samples disagree")
     }
   const auto work_of = [&](const Pslg& face) {
     double total = 0.0;
-    for (const madd::ValuedPoint& h : hidden) {
-      bool inside = false;  // crossing number over the face's segments
-      for (const madd::Segment& s : face.segments) {
-        const Point u = face.points[s.a], w = face.points[s.b];
-        if ((u.y > h.at.y) != (w.y > h.at.y) && h.at.x < u.x + (h.at.y - u.y) * (w.x - u.x) / (w.y - u.y))
-          inside = !inside;
-      }
-      if (inside) total += h.value;
-    }
+    for (const madd::ValuedPoint& h : hidden)
+      if (inside_face(face, h.at)) total += h.value;
     return total;
   };
   madd::DecomposeOptions o;
@@ -328,8 +334,8 @@ TEST_CASE("face_work: the repair's splits follow it where the samples disagree")
   const Decomposition d = checked(domain, o, 8);
   // Each subdomain's work by face_work's own count, against the mean (the
   // whole is 4 + 0.3): the split by the samples alone gives the subdomain
-  // x < 0.5 1.49 x the mean, and a repair split by them 1.21 (its union
-  // with its neighbour cut where they met).
+  // x < 0.5 1.49 x the mean, and a repair splitting its unions by them
+  // leaves it there (each union cut again where its faces met).
   double largest = 0.0;
   for (const auto& s : d.subdomains) {
     double w = 0.0;
@@ -338,4 +344,44 @@ TEST_CASE("face_work: the repair's splits follow it where the samples disagree")
     largest = std::max(largest, w);
   }
   CHECK(largest / (4.3 / 8.0) < 1.15);
+}
+
+// A face at the end of a corridor has one neighbour; where the faces next
+// to it are as heavy as itself, a union with that neighbour or with it and
+// the next takes no weight off it, and the repair also tries a chain of
+// three neighbours split in four.
+TEST_CASE("face_work: a face at the end of a corridor sheds weight down a chain of its neighbours") {
+  const Pslg domain = rectangle(8, 1, 8);
+  const auto density = [](Point p) { return p.x < 3.0 ? 1.5 : 1.0; };
+  std::vector<madd::ValuedPoint> hidden;
+  for (int i = 0; i < 800; ++i)
+    for (int j = 0; j < 100; ++j) {
+      const Point p{(i + 0.5) / 100.0, (j + 0.5) / 100.0};
+      hidden.push_back({p, density(p) * 1e-4});
+    }
+  madd::DecomposeOptions o;
+  o.subdomains = 8;
+  o.threads = 1;
+  for (int i = 0; i < 160; ++i)
+    for (int j = 0; j < 20; ++j) o.weight_samples.push_back({{(i + 0.5) / 20.0, (j + 0.5) / 20.0}, 1.0});
+  o.gradation = 100.0;
+  o.repair_balance_above = 1.1;
+  o.face_work = [&](const Pslg& face) {
+    double total = 0.0;
+    for (const madd::ValuedPoint& h : hidden)
+      if (inside_face(face, h.at)) total += h.value;
+    return total;
+  };
+  const Decomposition d = checked(domain, o, 8);
+  double largest = 0.0;
+  for (const auto& s : d.subdomains) {
+    double w = 0.0;
+    for (const madd::ValuedPoint& h : hidden)
+      if (inside_ring(d, s.rings[0], h.at)) w += h.value;
+    largest = std::max(largest, w);
+  }
+  // By area the three faces x < 3 weigh 1.26 x the mean; without the chain
+  // the end one stays there (its neighbour and the next are as heavy: no
+  // union of two or three takes weight off it); with it, 1.18.
+  CHECK(largest / (9.5 / 8.0) < 1.2);
 }
