@@ -258,6 +258,32 @@ TEST_CASE("the archipelago: within 1.25 at every N and Phi0 the sweep uses") {
   }
 }
 
+// A face with thousands of samples is searched with them merged: at most
+// the given count, every one a sample of the input (so inside the face), the
+// weight conserved cell by cell; a face with no more is searched as it is.
+TEST_CASE("chord search: many samples are merged on a grid, their weight kept") {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<madd::ValuedPoint> samples;
+  for (int i = 0; i < 5000; ++i) samples.push_back({{3.0 * unit(random), unit(random)}, 0.5 + unit(random)});
+  CHECK(madd::detail::merged_for_chords(samples, 5000).empty());
+  const std::vector<madd::ValuedPoint> merged = madd::detail::merged_for_chords(samples, 512);
+  REQUIRE(!merged.empty());
+  CHECK(merged.size() <= 512);
+  double total = 0.0, merged_total = 0.0, west = 0.0, merged_west = 0.0;  // west: x < 1, a cell boundary
+  for (const madd::ValuedPoint& p : samples) total += p.value, west += p.at.x < 1.0 ? p.value : 0.0;
+  for (const madd::ValuedPoint& p : merged) {
+    CHECK(std::find_if(samples.begin(), samples.end(), [&](const madd::ValuedPoint& q) { return q.at == p.at; }) !=
+          samples.end());
+    merged_total += p.value;
+    merged_west += p.at.x < 1.0 ? p.value : 0.0;
+  }
+  CHECK(merged_total == doctest::Approx(total).epsilon(1e-12));
+  // A 22 x 22 grid over [0, 3]: cells 3/22 wide, so x = 1 cuts cells, and
+  // the weight west of it moves by at most the cells it cuts (1/22 of it).
+  CHECK(std::abs(merged_west - west) < total / 22.0);
+}
+
 }  // TEST_SUITE("balance")
 
 TEST_CASE("rebalancing works on background weights too: the heaviest subdomain comes down, every rule kept") {
