@@ -450,16 +450,24 @@ std::vector<ValuedPoint> merged_for_chords(std::span<const ValuedPoint> samples,
   return out;
 }
 
-std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options) {
+std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& given) {
   Ring ring = ring_of(fd);
   if (ring.at.empty() || ring.at.size() > max_ring_points) return std::nullopt;  // the search is quadratic
-  const std::size_t columns = (options.sample_weight > 0.0 ? options.samples.size() : 0) + ring.holes.size();
+  const std::size_t columns = (given.sample_weight > 0.0 ? given.samples.size() : 0) + ring.holes.size();
+  ChordOptions options = given;
+  std::vector<ValuedPoint> merged;
   if (columns > 0) {
     // The table, and the pairs' passes over it (at most n^2 / 2 of `columns` each).
     const double n = static_cast<double>(ring.at.size());
     if (columns * (ring.at.size() + 1) > max_chord_sample_table ||
         static_cast<double>(columns) * n * n > max_chord_sample_work)
       return std::nullopt;
+    // Within the bounds, many samples are merged (what is searched stays
+    // what was searched before the merge: the bounds read them unmerged).
+    if (options.sample_weight > 0.0) {
+      merged = merged_for_chords(given.samples, max_chord_columns);
+      if (!merged.empty()) options.samples = merged;
+    }
     add_crossings(fd, options, ring);
   }
   const std::vector<Pair> pairs = balanced_pairs(fd, ring, options);

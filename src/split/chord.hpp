@@ -62,12 +62,14 @@ struct Chord {
 };
 std::optional<Chord> best_chord(const FaceDomain& fd, const ChordOptions& options);
 
-// A face with more samples than this is searched with them merged on a grid
-// (merged_for_chords): each sample is a column of the table, and a face of
-// thousands of them (a fuzzed domain's repair: 7,126) reached the work cap
-// above, 0.5 s a search, 10 s under the sanitizers. Real coastlines' faces
-// hold 60-200.
-inline constexpr std::size_t max_chord_columns = 512;
+// A face with more samples than this, within the bounds above, is searched
+// with them merged on a grid (merged_for_chords): each sample is a column of
+// the table, and a face of thousands of them on a short ring (a fuzzed
+// domain's repair: 7,126 samples) came up to the work bound, 0.5 s a
+// search, 10 s under the sanitizers (libFuzzer's limit). At 512 the balance
+// matrix of docs/mesh.md moved in 23 of 81 runs (real faces within the
+// bounds hold up to some thousands); at 2048 in one (Maine (c), N = 256).
+inline constexpr std::size_t max_chord_columns = 2048;
 
 // `samples` merged per cell of a k x k grid over their bounding box, k^2 <=
 // `most`: each cell's weight at its member nearest the cell's weighted

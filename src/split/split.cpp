@@ -370,11 +370,10 @@ std::optional<Chord> chord_split(const Subdivision& sub, std::uint32_t face, std
   co.min_quality = best < 0.0 ? options.min_split_quality : best + chord_gain;
   co.good_quality = options.good_balance;
   co.end_bonus = options.smoothing_iterations > 0;
-  const std::vector<ValuedPoint> merged = merged_for_chords(density.samples, max_chord_columns);
   if (density.graded) {
     co.area_weight = density.r;
     co.sample_weight = density.a;
-    co.samples = merged.empty() ? std::span<const ValuedPoint>(density.samples) : std::span<const ValuedPoint>(merged);
+    co.samples = density.samples;
   }
   Stopwatch clock;
   const FaceDomain fd = refine_face(sub, face, h);
