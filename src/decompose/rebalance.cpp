@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "decompose/grading.hpp"
+#include "kernel/box.hpp"
 #include "kernel/threads.hpp"
 #include "madd/error.hpp"
 
@@ -115,8 +116,10 @@ FaceMeasure with_density(const FaceMeasure& measure, FaceDensity union_density) 
   FaceMeasure out = measure;
   out.density = [union_density = std::move(union_density)](const Subdivision& s, std::uint32_t f) {
     FaceDensity d{union_density.graded, union_density.r, union_density.a, union_density.point_weights, {}};
+    Box around;  // the outer ring's box: a sample outside it is in no hole's face either
+    for (const std::uint32_t v : s.faces[f].rings[0]) around.add(s.points[v]);
     for (const ValuedPoint& p : union_density.samples)
-      if (point_in_face(s, f, p.at)) d.samples.push_back(p);
+      if (around.contains(p.at) && point_in_face(s, f, p.at)) d.samples.push_back(p);
     return d;
   };
   return out;
