@@ -28,6 +28,7 @@
 #include "madd/triangulation.hpp"
 #include "kernel/box.hpp"
 #include "kernel/rings.hpp"
+#include "kernel/sample_grid.hpp"
 #include "kernel/threads.hpp"
 #include "mesh/feature_distance.hpp"
 #include "mesh/merge.hpp"
@@ -164,49 +165,19 @@ void merge_on_sub_grid(const std::vector<ValuedPoint>& samples, const std::vecto
 // at N = 256.
 std::vector<ValuedPoint> cluster_samples(const std::vector<ValuedPoint>& samples, int cells, double heaviest) {
   if (samples.size() <= static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells)) return samples;
-  Point lo = samples[0].at, hi = lo;
-  for (const ValuedPoint& s : samples) {
-    lo = {std::min(lo.x, s.at.x), std::min(lo.y, s.at.y)};
-    hi = {std::max(hi.x, s.at.x), std::max(hi.y, s.at.y)};
-  }
-  const double w = std::max((hi.x - lo.x) / cells, 1e-300), h = std::max((hi.y - lo.y) / cells, 1e-300);
-  const auto cell_of = [&](Point p) {
-    const int i = std::clamp(static_cast<int>((p.x - lo.x) / w), 0, cells - 1);
-    const int j = std::clamp(static_cast<int>((p.y - lo.y) / h), 0, cells - 1);
-    return static_cast<std::size_t>(j * cells + i);
-  };
-  const auto n_cells = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
-  std::vector<double> sum(n_cells, 0.0), sx(n_cells, 0.0), sy(n_cells, 0.0);
-  for (const ValuedPoint& s : samples) {
-    const std::size_t c = cell_of(s.at);
-    sum[c] += s.value;
-    sx[c] += s.value * s.at.x;
-    sy[c] += s.value * s.at.y;
-  }
-  const auto heavy = [&](std::size_t c) { return heaviest > 0 && sum[c] > heaviest; };
-  std::vector<std::size_t> best(n_cells, samples.size());
-  std::vector<double> best_d(n_cells, 0.0);
-  std::vector<std::vector<std::size_t>> members(heaviest > 0 ? n_cells : 0);  // of the heavy cells
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const std::size_t c = cell_of(samples[i].at);
-    if (heavy(c)) {
-      members[c].push_back(i);
-      continue;
-    }
-    const Point centre = sum[c] > 0 ? Point{sx[c] / sum[c], sy[c] / sum[c]} : samples[i].at;
-    const double d = distance(samples[i].at, centre);
-    if (best[c] == samples.size() || d < best_d[c]) {
-      best[c] = i;
-      best_d[c] = d;
-    }
-  }
+  const SampleGrid grid(samples, cells);
+  const auto heavy = [&](std::size_t c) { return heaviest > 0 && grid.weight(c) > heaviest; };
+  const std::vector<std::size_t> best = grid.nearest_to_centres(samples, heavy);
+  std::vector<std::vector<std::size_t>> members(heaviest > 0 ? grid.cell_count() : 0);  // of the heavy cells
+  if (heaviest > 0)
+    for (std::size_t i = 0; i < samples.size(); ++i)
+      if (const std::size_t c = grid.cell_of(samples[i].at); heavy(c)) members[c].push_back(i);
   std::vector<ValuedPoint> out;
-  for (std::size_t c = 0; c < n_cells; ++c) {
+  for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     if (heavy(c)) {
-      const Point origin{lo.x + static_cast<double>(c % cells) * w, lo.y + static_cast<double>(c / cells) * h};
-      merge_on_sub_grid(samples, members[c], origin, w, h, heaviest, out);
+      merge_on_sub_grid(samples, members[c], grid.origin(c), grid.cell_width(), grid.cell_height(), heaviest, out);
     } else if (best[c] != samples.size()) {
-      out.push_back({samples[best[c]].at, sum[c]});
+      out.push_back({samples[best[c]].at, grid.weight(c)});
     }
   }
   return out;

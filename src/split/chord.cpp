@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "kernel/containment.hpp"
+#include "kernel/sample_grid.hpp"
 #include "kernel/segment_distance.hpp"
 #include "medial/medial_detail.hpp"
 #include "madd/predicates.hpp"
@@ -418,35 +419,11 @@ std::vector<Pair> balanced_pairs(const FaceDomain& fd, const Ring& ring, const C
 
 std::vector<ValuedPoint> merged_for_chords(std::span<const ValuedPoint> samples, std::size_t most) {
   if (samples.size() <= most) return {};
-  Point lo = samples[0].at, hi = lo;
-  for (const ValuedPoint& s : samples) {
-    lo = {std::min(lo.x, s.at.x), std::min(lo.y, s.at.y)};
-    hi = {std::max(hi.x, s.at.x), std::max(hi.y, s.at.y)};
-  }
-  const auto k = static_cast<std::size_t>(std::max(1.0, std::floor(std::sqrt(static_cast<double>(most)))));
-  const double w = std::max((hi.x - lo.x) / static_cast<double>(k), 1e-300);
-  const double h = std::max((hi.y - lo.y) / static_cast<double>(k), 1e-300);
-  const auto cell_of = [&](Point p) {
-    const auto i = static_cast<std::size_t>(std::clamp((p.x - lo.x) / w, 0.0, static_cast<double>(k - 1)));
-    const auto j = static_cast<std::size_t>(std::clamp((p.y - lo.y) / h, 0.0, static_cast<double>(k - 1)));
-    return j * k + i;
-  };
-  std::vector<double> sum(k * k, 0.0), sx(k * k, 0.0), sy(k * k, 0.0);
-  for (const ValuedPoint& s : samples) {
-    const std::size_t c = cell_of(s.at);
-    sum[c] += s.value, sx[c] += s.value * s.at.x, sy[c] += s.value * s.at.y;
-  }
-  std::vector<std::size_t> best(k * k, samples.size());
-  std::vector<double> best_d(k * k, 0.0);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const std::size_t c = cell_of(samples[i].at);
-    const Point centre = sum[c] > 0.0 ? Point{sx[c] / sum[c], sy[c] / sum[c]} : samples[i].at;
-    const double d = distance(samples[i].at, centre);
-    if (best[c] == samples.size() || d < best_d[c]) best[c] = i, best_d[c] = d;
-  }
+  const SampleGrid grid(samples, static_cast<int>(std::max(1.0, std::floor(std::sqrt(static_cast<double>(most))))));
+  const std::vector<std::size_t> best = grid.nearest_to_centres(samples, [](std::size_t) { return false; });
   std::vector<ValuedPoint> out;
-  for (std::size_t c = 0; c < k * k; ++c)
-    if (best[c] != samples.size()) out.push_back({samples[best[c]].at, sum[c]});
+  for (std::size_t c = 0; c < grid.cell_count(); ++c)
+    if (best[c] != samples.size()) out.push_back({samples[best[c]].at, grid.weight(c)});
   return out;
 }
 
