@@ -3,18 +3,24 @@
 // layer of smaller, graded triangles along the domain boundary, whose count
 // grows with the boundary's length in units of the size, plus what
 // refinement grades down to at the input's small features, narrow gaps and
-// pinches (the excess):
+// pinches (the excess). Under one bound A everywhere
 //
 //   T = area / (kappa A) + beta B / sqrt(A) + excess,
 //
-// B the length of domain boundary in the subdomain. Separators add no such
+// B the length of domain boundary in the subdomain (separators add no such
 // layer: they are split to the size bound and the triangles on both sides
-// are of that size. Fitted on 320 subdomains of five real coastlines (N = 64,
-// A = area / 300000): mean error 2%, largest 22%, against 2.6% and 38% for
-// the area alone. Under a varying bound (a size function, samples, the size
-// field) the first term is the integral of 1 / (kappa A) instead
-// (integrate_triangle): totals within 1-5% of the actual counts on six real
-// coastlines.
+// are of that size). Fitted on 320 subdomains of five real coastlines (N =
+// 64, A = area / 300000): mean error 2%, largest 22%, against 2.6% and 38%
+// for the area alone. Under a varying bound (a size function, samples, the
+// size field) the interior is the integral of 1 / (kappa A) instead
+// (integrate_triangle), and each piece the decoupling cuts the boundary and
+// the separators into adds the triangles standing on it less those the
+// integral counts in its strip (piece_layer):
+//
+//   T = x * integral of 1 / (kappa A) + sum over pieces (a - b l^2 / A) + excess,
+//
+// within 0.98-1.01 of the actual totals and 1.3% of each subdomain's count
+// (mean) on nine real coastlines.
 #include "mesh/work.hpp"
 
 #include <algorithm>
@@ -30,6 +36,8 @@
 #include "kernel/rings.hpp"
 #include "kernel/sample_grid.hpp"
 #include "kernel/threads.hpp"
+#include "mesh/discretise.hpp"
+#include "mesh/discretise_rules.hpp"
 #include "mesh/feature_distance.hpp"
 #include "mesh/merge.hpp"
 #include "mesh/narrow_gaps.hpp"
@@ -42,12 +50,33 @@ namespace {
 
 // docs/mesh.md, "Balance by work": the fitted constants.
 constexpr double kappa = 0.645;  // mean triangle area / A away from the boundary
-// Triangles per sqrt(A) of domain boundary: under one bound everywhere
+// Under one bound everywhere: triangles per sqrt(A) of domain boundary,
 // beside the input's small features (excess_of_features), which used to be
-// in it; under a varying bound as first fitted, beside the area alone.
+// in it. Separators add none: they are split to the size bound and the
+// triangles on both sides are of that size.
 constexpr double beta_uniform = 0.3;
-constexpr double beta_varying = 0.98;
-double beta(const AreaBound& size) { return size.uniform() ? beta_uniform : beta_varying; }
+// Under a varying bound a mesh's interior holds this many times the
+// integral of 1 / (kappa A) (refinement under a graded bound stops further
+// below it than under one bound), and every piece of boundary or separator
+// the decoupling makes (detail::discretise) adds piece_row - piece_strip
+// l^2 / A triangles, l its length and A the bound at its midpoint: the
+// row of triangles standing on it, less the triangles the integral already
+// counts in that row's strip (its area grows with l^2). The two cancel for
+// pieces sqrt(piece_row / piece_strip) = 1.09 sqrt(A) long; the
+// decoupling makes them at most 1.18 sqrt(A) / (1 + G) (a graded field's
+// G: pieces about 0.94 sqrt(A), 0.5 triangles a piece more), and shorter
+// at the input's small features. Fitted on the 6,048 subdomains of the
+// nine real coastlines under sampled and built-in fields at N = 16, 64 and
+// 256 (docs/mesh.md, "Balance by work": each coastline left out of the fit
+// in turn, its totals within 0.981-1.013 of the actual counts).
+constexpr double graded_interior = 1.054;
+constexpr double piece_row = 1.75;
+constexpr double piece_strip = 1.46;
+// Before the decoupling, a run of boundary is expected in pieces this share
+// of the decoupling's longest (its pieces on the nine coastlines: 0.95 of
+// size_factor sqrt(A) / (1 + G), from rounding up and the grading from
+// their ends).
+constexpr double expected_piece_share = 0.95;
 // Below this share of boundary work in the whole (the pipe: 0.9%, the
 // bundled archipelago 1.7%, five real coastlines 2.8-4.2%, all at beta =
 // 0.98), balance by area.
@@ -401,8 +430,12 @@ std::vector<ValuedPoint> excess_of_features(const Triangulation& tri, Pieces pie
 // features' own excess (excess_of_features) counts part of a cluster
 // already, so 17 there (a test's pinch of two island corners 0.0007 apart
 // at A = 0.16: 1,419 triangles expected against 1,377 made; 1,156 without
-// the pinches).
-double pinch_doubling_triangles(const AreaBound& size) { return size.uniform() ? 17.0 : 20.0; }
+// the pinches); under a varying bound 25 (the same test's graded run: 450
+// triangles within 1.5 of the pinch where the integral holds 31, 25 a
+// doubling at each of its two vertices; on the real coastlines' subdomains
+// with a pinch, their counts 1.6% below the estimate on average, 1% above
+// at 20).
+double pinch_doubling_triangles(const AreaBound& size) { return size.uniform() ? 17.0 : 25.0; }
 constexpr double pinch_free_doublings = 2;
 constexpr double pinch_sector = 0.4;  // radians: pinch_excess's samples per triangle
 
@@ -512,7 +545,8 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
 
 // The interior's triangles under a varying size bound: the integral of
 // 1 / (kappa A) over the subdomain's triangulation (its ring vertices only),
-// its triangles split to 1/subdomain_pieces_across of the subdomain's extent.
+// its triangles split to 1/subdomain_pieces_across of the subdomain's
+// extent, times graded_interior.
 double varying_interior(const Pslg& region, const AreaBound& size, const NarrowGaps& gaps) {
   const Triangulation tri = triangulate(region);
   const Box box = bounding_box(tri.points);
@@ -521,14 +555,58 @@ double varying_interior(const Pslg& region, const AreaBound& size, const NarrowG
   integrate_triangulation(tri, pieces, size, gaps, samples);
   double t = 0;
   for (const ValuedPoint& p : samples) t += p.value;
-  return t;
+  return graded_interior * t;
 }
 
-// The boundary layer along `a`-`b`: beta / sqrt(A) triangles per unit of
-// length, A the bound at its midpoint (without a bound, one triangle).
+// Under one bound: the boundary layer along `a`-`b`, beta_uniform / sqrt(A)
+// triangles per unit of length (without a bound, one triangle).
 double boundary_layer(Point a, Point b, const AreaBound& size) {
   const double local = size.area_at(midpoint(a, b));
-  return std::isfinite(local) ? beta(size) * distance(a, b) / std::sqrt(local) : 1.0;
+  return std::isfinite(local) ? beta_uniform * distance(a, b) / std::sqrt(local) : 1.0;
+}
+
+// Under a varying bound: what one piece of boundary or separator of
+// `length`, the bound `area` at its midpoint, adds to the interior's
+// integral (piece_row, piece_strip; negative for pieces longer than the
+// mesh's own edges there, whose strip the integral over-counts).
+double piece_layer(double length, double area) {
+  return std::isfinite(area) && area > 0 ? piece_row - piece_strip * length * length / area : piece_row;
+}
+
+// The same for a run of boundary before the decoupling cut it: in pieces
+// as long as the decoupling is expected to make them (expected_piece_share),
+// at least one.
+double run_layer(double length, double area, const AreaBound& size) {
+  if (!std::isfinite(area) || !(area > 0)) return piece_row;
+  const double piece = expected_piece_share * size_factor / (1.0 + size.edge_slope()) * std::sqrt(area);
+  const double pieces = std::max(1.0, length / piece);
+  return pieces * piece_layer(length / pieces, area);
+}
+
+// Under a varying bound: the pieces' layers of `face` (a face of a
+// decomposition, its separators marker 0) as the decoupling would cut it
+// alone (detail::discretise on the face: its own features, not those
+// beyond its separators). Near a pinch or a narrow strait, where the
+// decomposition puts its separators, the pieces are far shorter than the
+// size alone asks (0.5 of the distance to the nearest feature, graded from
+// their ends): on Lake Ladoga's sampled field at N = 256 a subdomain had
+// 217 coast and 121 separator pieces where the size alone gives 118 and 49.
+double face_pieces_layer(const Pslg& face, const AreaBound& size) {
+  Decomposition d;
+  d.points = face.points;
+  d.segments = face.segments;
+  d.segment_origin.assign(face.segments.size(), 0);
+  for (std::size_t j = 0; j < face.segments.size(); ++j)
+    if (face.segments[j].marker == 0) d.segment_origin[j] = no_index;
+  RegionView no_regions;
+  no_regions.segment_area.assign(face.segments.size(), std::numeric_limits<double>::infinity());
+  const Decomposition cut = discretise(d, size, false, nullptr, 1, &no_regions);
+  double t = 0;
+  for (const Segment& s : cut.segments) {
+    const Point a = cut.points[s.a], b = cut.points[s.b];
+    t += piece_layer(distance(a, b), size.area_at(midpoint(a, b)));
+  }
+  return t;
 }
 
 // The excess samples (DomainWork::excess), each given to the subdomain holding it.
@@ -605,16 +683,21 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
       if (uniform && std::isfinite(bound)) t -= face.first / (kappa * bound);
       t += face.first / (kappa * face.second);
     }
+    // Under one bound, the boundary's layer; under a varying one, every
+    // piece's, separators' too (on each side: each side's ring has it).
+    const auto layer = [&](Point a, Point b) {
+      return uniform ? boundary_layer(a, b, size) : piece_layer(distance(a, b), size.area_at(midpoint(a, b)));
+    };
     for (std::size_t r = 0; r < s.rings.size(); ++r) {
       for (std::size_t k = 0; k < s.rings[r].size(); ++k) {
-        if (d.is_separator(s.ring_segments[r][k])) continue;
-        t += boundary_layer(d.points[s.rings[r][k]], d.points[s.rings[r][(k + 1) % s.rings[r].size()]], size);
+        if (uniform && d.is_separator(s.ring_segments[r][k])) continue;
+        t += layer(d.points[s.rings[r][k]], d.points[s.rings[r][(k + 1) % s.rings[r].size()]]);
       }
     }
     // An interior piece grades the mesh on both its sides: twice the layer
     // of a boundary piece (not fitted; interior segments were not in the fit).
     for (const std::uint32_t j : s.interior_segments) {
-      t += 2.0 * boundary_layer(d.points[d.segments[j].a], d.points[d.segments[j].b], size);
+      t += 2.0 * layer(d.points[d.segments[j].a], d.points[d.segments[j].b]);
     }
     out[sub] = t;
   });
@@ -640,6 +723,8 @@ double expected_triangles_of_face(const Pslg& face, const DomainWork& work) {
     }
     if (inside) t += p.value;
   }
+  // Under a varying bound its separators' pieces too, as in expected_triangles.
+  if (!size.uniform()) return t + face_pieces_layer(face, size);
   for (const Segment& s : face.segments)
     if (s.marker != 0) t += boundary_layer(face.points[s.a], face.points[s.b], size);
   return t;
@@ -707,8 +792,11 @@ void weigh_by_work(DecomposeOptions& options, const DomainWork& work) {
         const Point m = lerp(a, b, (static_cast<double>(k) + 0.5) / static_cast<double>(pieces));
         const double bound = size.area_at(m, &hint);
         if (!std::isfinite(bound) || !(bound > 0)) continue;
-        const double triangles = beta(size) * (length / static_cast<double>(pieces)) / std::sqrt(bound);
-        chunk_samples[c].push_back({lerp(m, inside[j], 1e-3), uniform ? triangles * kappa * bound : triangles});
+        const double part = length / static_cast<double>(pieces);
+        const double triangles =
+            uniform ? beta_uniform * part / std::sqrt(bound) : std::max(0.0, run_layer(part, bound, size));
+        if (triangles > 0)
+          chunk_samples[c].push_back({lerp(m, inside[j], 1e-3), uniform ? triangles * kappa * bound : triangles});
       }
     }
   });
@@ -740,8 +828,10 @@ void weigh_by_work(DecomposeOptions& options, const DomainWork& work) {
     // The interior's work: the domain's own triangulation, whose triangles
     // are as fine as the boundary's vertices are dense (where graded fields
     // vary most), its large triangles split (domain_pieces).
+    const std::size_t layer_samples = samples.size();
     if (const Pieces pieces = domain_pieces(tri); pieces.longest > 0)
       integrate_triangulation(tri, pieces, size, work.gaps, samples, options.threads);
+    for (std::size_t k = layer_samples; k < samples.size(); ++k) samples[k].value *= graded_interior;
     double total = 0;
     for (const ValuedPoint& v : samples) total += v.value;
     if (!(total > 0)) return;
