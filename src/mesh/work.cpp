@@ -530,8 +530,8 @@ std::vector<ValuedPoint> pinch_excess(const Triangulation& tri, const Pslg& doma
       const Point p = tri.points[v], a = tri.points[c[(i + 1) % 3]], b = tri.points[c[(i + 2) % 3]];
       // Inside the triangle: below half its height over v's opposite side.
       const double height = std::abs(cross(a - p, b - p)) / distance(a, b);
-      const double hair = std::min(1e-3 * distance(p, g), 0.5 * height), along = distance(p, a);
-      const Point u{(a.x - p.x) / along, (a.y - p.y) / along};  // the sector's first side; the rest counterclockwise
+      const double hair = std::min(1e-3 * distance(p, g), 0.5 * height), side = distance(p, a);
+      const Point u{(a.x - p.x) / side, (a.y - p.y) / side};  // the sector's first side; the rest counterclockwise
       const int sectors = std::max(1, static_cast<int>(std::ceil(angle / pinch_sector)));
       for (int k = 0; k < sectors; ++k) {
         const double turn = angle * (k + 0.5) / sectors;
