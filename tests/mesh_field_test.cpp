@@ -310,6 +310,46 @@ TEST_CASE("the predicted triangles of the whole mesh and of each subdomain are n
 }
 
 TEST_SUITE("balance by the work the field makes") {
+TEST_CASE("a face's pieces are cut as the decoupling cuts them: short near a feature, each counted") {
+  // A 10 x 10 face whose east side is a separator (marker 0), at sides of
+  // about 0.15, with and without an islet 0.05 from that separator. The
+  // decoupling cuts the separator to half its distance from the islet
+  // there, graded out from it, and each short piece stands its row of
+  // triangles: the islet costs far more than its own short perimeter (by
+  // the pieces' lengths alone, 0.5 of perimeter at sides of 0.15: a few).
+  const auto face = [](bool islet) {
+    madd::Pslg f;
+    f.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    f.segments = {{0, 1, 1}, {1, 2, 0}, {2, 3, 1}, {3, 0, 1}};
+    if (islet) {
+      f.points.insert(f.points.end(), {{9.9, 4.9}, {9.9, 5.1}, {9.95, 5.1}, {9.95, 4.9}});
+      for (std::uint32_t i = 0; i < 4; ++i) f.segments.push_back({4 + i, 4 + (i + 1) % 4, 2});
+      f.holes = {{9.925, 5.0}};
+    }
+    return f;
+  };
+  madd::MeshSizeOptions size;
+  size.triangle_area_function = [](double, double) { return 0.01; };
+  const madd::detail::AreaBound bound(size);
+  const double plain = madd::detail::face_pieces_layer(face(false), bound);
+  const double with_islet = madd::detail::face_pieces_layer(face(true), bound);
+  CHECK(std::isfinite(plain));
+  CHECK(with_islet - plain > 12.0);
+  MESSAGE("face pieces' layer: plain ", plain, ", with the islet ", with_islet);
+
+  // And the estimate, which reads it, against the mesh of that face alone.
+  madd::MeshOptions o;
+  o.decomposition.subdomains = 1;
+  o.size = size;
+  o.size.min_triangle_angle_deg = 30;
+  const madd::Pslg domain = face(true);
+  const madd::MeshRun run = madd::mesh_with_report(domain, o);
+  const madd::detail::DomainWork work(domain, bound);
+  const double estimate = madd::detail::expected_triangles_of_face(domain, work);
+  CHECK(estimate > 0.95 * static_cast<double>(run.mesh.triangles.size()));
+  CHECK(estimate < 1.05 * static_cast<double>(run.mesh.triangles.size()));
+}
+
 TEST_CASE("narrow gap: a channel far narrower than the bound costs what refinement makes of it, a wedge does not") {
   // A 10 x 10 basin and a channel 0.01 wide and 8 long; the bound (a size
   // function, so the estimate integrates) asks for triangles of side ~0.3

@@ -583,32 +583,6 @@ double run_layer(double length, double area, const AreaBound& size) {
   return pieces * piece_layer(length / pieces, area);
 }
 
-// Under a varying bound: the pieces' layers of `face` (a face of a
-// decomposition, its separators marker 0) as the decoupling would cut it
-// alone (detail::discretise on the face: its own features, not those
-// beyond its separators). Near a pinch or a narrow strait, where the
-// decomposition puts its separators, the pieces are far shorter than the
-// size alone asks (0.5 of the distance to the nearest feature, graded from
-// their ends): on Lake Ladoga's sampled field at N = 256 a subdomain had
-// 217 coast and 121 separator pieces where the size alone gives 118 and 49.
-double face_pieces_layer(const Pslg& face, const AreaBound& size) {
-  Decomposition d;
-  d.points = face.points;
-  d.segments = face.segments;
-  d.segment_origin.assign(face.segments.size(), 0);
-  for (std::size_t j = 0; j < face.segments.size(); ++j)
-    if (face.segments[j].marker == 0) d.segment_origin[j] = no_index;
-  RegionView no_regions;
-  no_regions.segment_area.assign(face.segments.size(), std::numeric_limits<double>::infinity());
-  const Decomposition cut = discretise(d, size, false, nullptr, 1, &no_regions);
-  double t = 0;
-  for (const Segment& s : cut.segments) {
-    const Point a = cut.points[s.a], b = cut.points[s.b];
-    t += piece_layer(distance(a, b), size.area_at(midpoint(a, b)));
-  }
-  return t;
-}
-
 // The excess samples (DomainWork::excess), each given to the subdomain holding it.
 std::vector<double> excess_by_subdomain(const Decomposition& d, const std::vector<ValuedPoint>& samples,
                                         unsigned threads) {
@@ -702,6 +676,43 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
     out[sub] = t;
   });
   return out;
+}
+
+// See work.hpp. Near a pinch or a narrow strait, where the
+// decomposition puts its separators, the pieces are far shorter than the
+// size alone asks (0.5 of the distance to the nearest feature, graded from
+// their ends): on Lake Ladoga's sampled field at N = 256 a subdomain had
+// 217 coast and 121 separator pieces where the size alone gives 118 and 49.
+// Beyond max_face_pieces pieces by size alone (a bound far below the
+// face's scale), each segment counted by its length instead (run_layer):
+// the decoupling's own cut is bounded by the run's resource limits, this
+// one is read by every repair's try.
+constexpr double max_face_pieces = 1 << 18;
+double face_pieces_layer(const Pslg& face, const AreaBound& size) {
+  double by_size = 0, by_length = 0;
+  for (const Segment& s : face.segments) {
+    const Point a = face.points[s.a], b = face.points[s.b];
+    const double area = size.area_at(midpoint(a, b)), length = distance(a, b);
+    if (std::isfinite(area) && area > 0)
+      by_size += length / (expected_piece_share * size_factor / (1.0 + size.edge_slope()) * std::sqrt(area));
+    by_length += run_layer(length, area, size);
+  }
+  if (!(by_size <= max_face_pieces)) return by_length;
+  Decomposition d;
+  d.points = face.points;
+  d.segments = face.segments;
+  d.segment_origin.assign(face.segments.size(), 0);
+  for (std::size_t j = 0; j < face.segments.size(); ++j)
+    if (face.segments[j].marker == 0) d.segment_origin[j] = no_index;
+  RegionView no_regions;
+  no_regions.segment_area.assign(face.segments.size(), std::numeric_limits<double>::infinity());
+  const Decomposition cut = discretise(d, size, false, nullptr, 1, &no_regions);
+  double t = 0;
+  for (const Segment& s : cut.segments) {
+    const Point a = cut.points[s.a], b = cut.points[s.b];
+    t += piece_layer(distance(a, b), size.area_at(midpoint(a, b)));
+  }
+  return t;
 }
 
 double expected_triangles_of_face(const Pslg& face, const DomainWork& work) {

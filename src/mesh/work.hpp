@@ -53,6 +53,14 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
 // the face's rings (no interior segments, no region's finer bound).
 double expected_triangles_of_face(const Pslg& face, const DomainWork& work);
 
+// Under a varying bound: what the pieces of `face` (a face of a
+// decomposition, its separators marker 0) add to its interior's triangles
+// (docs/mesh.md, "Each piece the decoupling makes"), the face cut as the
+// decoupling would cut it alone (detail::discretise on the face: its own
+// features, not those beyond its separators). Part of
+// expected_triangles_of_face.
+double face_pieces_layer(const Pslg& face, const AreaBound& size);
+
 // Sets the decomposition's weights so that it balances expected triangles
 // rather than areas (when the options carry no weights of their own), and
 // the repair to balance each face's expected triangles (face_work).
