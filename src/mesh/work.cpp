@@ -573,13 +573,17 @@ double piece_layer(double length, double area) {
   return std::isfinite(area) && area > 0 ? piece_row - piece_strip * length * length / area : piece_row;
 }
 
+// The length of the pieces the decoupling is expected to cut where the
+// bound is `area` (expected_piece_share of its longest).
+double expected_piece(double area, const AreaBound& size) {
+  return expected_piece_share * size_factor / (1.0 + size.edge_slope()) * std::sqrt(area);
+}
+
 // The same for a run of boundary before the decoupling cut it: in pieces
-// as long as the decoupling is expected to make them (expected_piece_share),
-// at least one.
+// as long as the decoupling is expected to make them, at least one.
 double run_layer(double length, double area, const AreaBound& size) {
   if (!std::isfinite(area) || !(area > 0)) return piece_row;
-  const double piece = expected_piece_share * size_factor / (1.0 + size.edge_slope()) * std::sqrt(area);
-  const double pieces = std::max(1.0, length / piece);
+  const double pieces = std::max(1.0, length / expected_piece(area, size));
   return pieces * piece_layer(length / pieces, area);
 }
 
@@ -689,15 +693,20 @@ std::vector<double> expected_triangles(const Decomposition& d, const DomainWork&
 // one is read by every repair's try.
 constexpr double max_face_pieces = 1 << 18;
 double face_pieces_layer(const Pslg& face, const AreaBound& size) {
-  double by_size = 0, by_length = 0;
+  double by_size = 0;
   for (const Segment& s : face.segments) {
     const Point a = face.points[s.a], b = face.points[s.b];
-    const double area = size.area_at(midpoint(a, b)), length = distance(a, b);
-    if (std::isfinite(area) && area > 0)
-      by_size += length / (expected_piece_share * size_factor / (1.0 + size.edge_slope()) * std::sqrt(area));
-    by_length += run_layer(length, area, size);
+    const double area = size.area_at(midpoint(a, b));
+    if (std::isfinite(area) && area > 0) by_size += distance(a, b) / expected_piece(area, size);
   }
-  if (!(by_size <= max_face_pieces)) return by_length;
+  if (!(by_size <= max_face_pieces)) {
+    double by_length = 0;
+    for (const Segment& s : face.segments) {
+      const Point a = face.points[s.a], b = face.points[s.b];
+      by_length += run_layer(distance(a, b), size.area_at(midpoint(a, b)), size);
+    }
+    return by_length;
+  }
   Decomposition d;
   d.points = face.points;
   d.segments = face.segments;
