@@ -55,9 +55,9 @@ double expected_triangles_of_face(const Pslg& face, const DomainWork& work);
 
 // Under a varying bound: what the pieces of `face` (a face of a
 // decomposition, its separators marker 0) add to its interior's triangles
-// (docs/mesh.md, "Each piece the decoupling makes"), the face cut as the
-// decoupling would cut it alone (detail::discretise on the face: its own
-// features, not those beyond its separators). Part of
+// (docs/mesh.md, "Balance by work": each piece the decoupling makes), the
+// face cut as the decoupling would cut it alone (detail::discretise on the
+// face: its own features, not those beyond its separators). Part of
 // expected_triangles_of_face.
 double face_pieces_layer(const Pslg& face, const AreaBound& size);
 
