@@ -107,8 +107,7 @@ constexpr double interior_pieces_across = 128;
 // A subdomain's own estimate splits its triangles to 1/8 of its extent
 // (with the rule below and each decoupled piece counted, the real
 // coastlines' totals within 3% of the counts: docs/mesh.md); splitting by
-// length alone to 1/128 of each
-// subdomain cost seconds of area_at queries.
+// length alone to 1/128 of each subdomain cost seconds of area_at queries.
 constexpr double subdomain_pieces_across = 8;
 // ... and wherever the field is finer, to pieces at most this many triangle
 // sides (sqrt of the area bound) long: 4 for the decomposition's weights (one
