@@ -315,8 +315,8 @@ TEST_CASE("a face's pieces are cut as the decoupling cuts them: short near a fea
   // about 0.15, with and without an islet 0.05 from that separator. The
   // decoupling cuts the separator to half its distance from the islet
   // there, graded out from it, and each short piece stands its row of
-  // triangles: the islet costs far more than its own short perimeter (by
-  // the pieces' lengths alone, 0.5 of perimeter at sides of 0.15: a few).
+  // triangles: the islet costs far more than its own perimeter would if
+  // counted by length alone (0.5 of it at sides of 0.15: a few triangles).
   const auto face = [](bool islet) {
     madd::Pslg f;
     f.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
